@@ -1,0 +1,37 @@
+//! # pqhull — partial convex hulls in any fixed dimension
+//!
+//! `pqhull` builds convex hulls in dimension `D` (2 ≤ D ≤ 8, a const generic) with QuickHull, where
+//! the order of expansion and the moment to stop are decided by a pluggable [`Strategy`]. Running the
+//! engine to completion ([`FarthestPoint`]) gives the full hull; stopping as soon as the facet nearest
+//! a query point is certain ([`ClosestToOrigin`]) gives the signed distance from that point to the
+//! hull boundary — the Ferrari–Canny grasp metric — at a fraction of the cost.
+//!
+//! Every combinatorial decision ("is this point strictly beyond this facet?") is made with an exact
+//! orientation predicate ([`predicates`]), so degenerate input (duplicates, coplanar and cospherical
+//! points, integer lattices, nearly coincident clusters) never corrupts the hull.
+//!
+//! ```
+//! use pqhull::{Hull, ClosestToOrigin};
+//!
+//! // The unit square around the origin, plus an interior point.
+//! let points = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0], [0.2, 0.1]];
+//! let hull = Hull::try_new(&points)?;
+//! assert_eq!(hull.vertex_indices().len(), 4);
+//! assert!((hull.volume() - 4.0).abs() < 1e-12);
+//!
+//! // Distance from the origin to the boundary, computed from a partial hull.
+//! let (_partial, result) = Hull::try_with_strategy(&points, ClosestToOrigin::new())?;
+//! assert!((result.signed_distance - 1.0).abs() < 1e-12);
+//! # Ok::<(), pqhull::HullError>(())
+//! ```
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+
+pub mod hull;
+pub mod points_file;
+pub mod predicates;
+pub mod rbox;
+pub mod strategy;
+
+pub use hull::{Facet, FacetId, Hull, HullError, InvariantViolation};
+pub use strategy::{ClosestToOrigin, FarthestPoint, Stats, Strategy};
