@@ -1,141 +1,210 @@
-//! The QuickHull engine. STUB — API under construction.
+//! The QuickHull engine: facet arena, initial simplex, horizon, outside sets, expansion, checker.
+//!
+//! The engine knows topology and predicates, never a strategy's goal. A [`Strategy`] drives it
+//! through [`Hull::expand`] (add the farthest point beyond a facet), [`Hull::expand_with`] (add a
+//! chosen point) and [`Hull::claim_beyond`] (make sure a facet's outside set holds every remaining
+//! point beyond it), and stops when it likes.
+//!
+//! # Invariants kept between expansions
+//!
+//! * Live facets form a closed, consistently oriented simplicial (D−1)-manifold: neighbour `i` of
+//!   facet `F` is live and has `F` as a neighbour, and they share all vertices but `F`'s vertex `i`.
+//! * Every input point that is not a hull vertex is either in exactly one outside set — of a facet
+//!   it lies strictly beyond — or lies weakly inside every live facet.
+//! * Every "beyond" decision is an exact orientation sign ([`crate::predicates`]).
+//!
+//! Points are copied and scaled by a power of two so that every coordinate lies in [−1, 1]
+//! (exact: the orientation signs are unchanged), which keeps the fast floating-point filter of the
+//! predicates valid. Normals, offsets, distances and volumes are reported in the caller's units.
 
-use crate::strategy::{FarthestPoint, Stats, Strategy};
-use std::fmt;
+mod build;
+mod check;
+mod error;
+mod expand;
+mod facet;
 
-/// A typed handle to a facet in the hull's arena.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct FacetId(pub(crate) u32);
+pub use error::{HullError, InvariantViolation};
+pub use facet::{Facet, FacetId};
 
-impl FacetId {
-    /// The slot index.
-    pub fn index(self) -> usize {
-        self.0 as usize
-    }
-}
+use crate::predicates::Sign;
+use crate::strategy::{FarthestPoint, Stats, Step, Strategy};
+use facet::dot;
+use std::time::Instant;
 
-/// A simplicial facet.
-#[derive(Clone, Debug)]
-pub struct Facet<const D: usize> {
-    vertices: [u32; D],
-    neighbors: [FacetId; D],
-    normal: [f64; D],
-    offset: f64,
-}
-
-impl<const D: usize> Facet<D> {
-    /// Vertices (input indices).
-    pub fn vertices(&self) -> [usize; D] {
-        self.vertices.map(|v| v as usize)
-    }
-    /// Neighbours; neighbour i is opposite vertex i.
-    pub fn neighbors(&self) -> [FacetId; D] {
-        self.neighbors
-    }
-    /// Unit outward normal.
-    pub fn normal(&self) -> [f64; D] {
-        self.normal
-    }
-    /// Offset: `normal · x <= offset` inside.
-    pub fn offset(&self) -> f64 {
-        self.offset
-    }
-}
-
-/// Why a hull could not be built.
-#[derive(Clone, Debug, PartialEq)]
-pub enum HullError {
-    /// D outside 2..=8.
-    DimensionOutOfRange {
-        /// The dimension asked for.
-        dimension: usize,
-    },
-    /// Fewer than D + 1 points.
-    TooFewPoints {
-        /// Points needed.
-        needed: usize,
-        /// Points given.
-        got: usize,
-    },
-    /// A NaN or infinite coordinate.
-    NonFinite {
-        /// Index of the point.
-        index: usize,
-        /// Which coordinate.
-        coordinate: usize,
-    },
-    /// The points span fewer than D dimensions.
-    AffinelyDependent {
-        /// Their affine rank.
-        rank: usize,
-        /// The dimension D.
-        dimension: usize,
-    },
-}
-
-impl fmt::Display for HullError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{self:?}")
-    }
-}
-impl std::error::Error for HullError {}
-
-/// A broken hull invariant, found by [`Hull::check`].
-#[derive(Clone, Debug, PartialEq)]
-pub struct InvariantViolation {
-    /// What is wrong.
-    pub message: String,
-}
-
-/// A (possibly partial) convex hull.
+/// A convex hull in dimension `D` (2 ≤ D ≤ 8), full or partial depending on the strategy that grew
+/// it.
+///
+/// ```
+/// use pqhull::Hull;
+/// let cube: Vec<[f64; 3]> = (0..8)
+///     .map(|i| [(i & 1) as f64, ((i >> 1) & 1) as f64, ((i >> 2) & 1) as f64])
+///     .chain([[0.5, 0.5, 0.5]])
+///     .collect();
+/// let hull = Hull::try_new(&cube)?;
+/// assert_eq!(hull.vertex_indices(), (0..8).collect::<Vec<_>>());
+/// assert_eq!(hull.facet_count(), 12); // two triangles per square face
+/// assert!((hull.volume() - 1.0).abs() < 1e-12);
+/// hull.check()?;
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 #[derive(Clone, Debug)]
 pub struct Hull<const D: usize> {
+    /// Input points scaled by `scale` (a power of two), so that |coordinate| ≤ 1.
     points: Vec<[f64; D]>,
+    scale: f64,
     facets: Vec<Facet<D>>,
+    /// Tombstoned slots, reusable by later expansions.
+    free: Vec<FacetId>,
+    live: usize,
+    next_serial: u32,
+    epoch: u32,
+    /// A point inside the initial simplex (internal coordinates), reference for volumes.
+    interior: [f64; D],
+    stats: Stats,
+    started: Instant,
+    scratch: expand::Scratch<D>,
 }
 
 impl<const D: usize> Hull<D> {
-    /// Full hull.
+    /// The full convex hull of `points` (QuickHull with [`FarthestPoint`]).
+    ///
+    /// # Errors
+    /// [`HullError`] for a dimension outside 2..=8, fewer than D + 1 points, a NaN or infinite
+    /// coordinate (with its index), or points spanning fewer than D dimensions (with the rank).
     pub fn try_new(points: &[[f64; D]]) -> Result<Self, HullError> {
-        Self::try_with_strategy(points, FarthestPoint::new()).map(|(h, ())| h)
+        Self::try_with_strategy(points, FarthestPoint::new()).map(|(hull, _)| hull)
     }
-    /// Hull grown by a strategy.
+
+    /// Builds the initial simplex, then lets `strategy` expand the hull until it stops.
+    ///
+    /// Returns the (possibly partial) hull and the strategy's output.
+    ///
+    /// # Errors
+    /// As [`Hull::try_new`].
     pub fn try_with_strategy<S: Strategy<D>>(
         points: &[[f64; D]],
-        strategy: S,
+        mut strategy: S,
     ) -> Result<(Self, S::Output), HullError> {
-        let _ = (points, strategy);
-        todo!()
+        let mut hull = Self::try_initial(points)?;
+        strategy.start(&hull);
+        while strategy.step(&mut hull) == Step::Continue {}
+        hull.stats.elapsed = hull.started.elapsed();
+        let output = strategy.finish(&hull);
+        Ok((hull, output))
     }
-    /// The input points.
-    pub fn points(&self) -> &[[f64; D]] {
-        &self.points
+
+    /// The dimension D.
+    pub fn dimension(&self) -> usize {
+        D
     }
-    /// Sorted input indices of hull vertices.
+
+    /// Number of input points.
+    pub fn point_count(&self) -> usize {
+        self.points.len()
+    }
+
+    /// Input point `index`, in the caller's coordinates.
+    ///
+    /// # Panics
+    /// If `index >= self.point_count()`.
+    pub fn point(&self, index: usize) -> [f64; D] {
+        self.points[index].map(|x| x / self.scale)
+    }
+
+    /// Sorted input indices of the hull's vertices.
     pub fn vertex_indices(&self) -> Vec<usize> {
-        todo!()
+        let mut seen = vec![false; self.points.len()];
+        for (_, facet) in self.facets() {
+            for &v in &facet.vertices {
+                seen[v as usize] = true;
+            }
+        }
+        seen.iter()
+            .enumerate()
+            .filter_map(|(i, &s)| s.then_some(i))
+            .collect()
     }
-    /// Live facets.
+
+    /// The live facets with their ids.
     pub fn facets(&self) -> impl Iterator<Item = (FacetId, &Facet<D>)> + '_ {
         self.facets
             .iter()
             .enumerate()
+            .filter(|(_, f)| f.alive)
             .map(|(i, f)| (FacetId(i as u32), f))
     }
+
     /// Number of live facets.
     pub fn facet_count(&self) -> usize {
-        self.facets.len()
+        self.live
     }
-    /// Volume.
+
+    /// The facet in slot `id` (live or tombstoned; see [`Facet::is_alive`]).
+    ///
+    /// # Panics
+    /// If `id` was never issued by this hull.
+    pub fn facet(&self, id: FacetId) -> &Facet<D> {
+        &self.facets[id.index()]
+    }
+
+    /// Whether `id` still names the facet created with `serial`.
+    pub fn is_current(&self, id: FacetId, serial: u32) -> bool {
+        self.facets
+            .get(id.index())
+            .is_some_and(|f| f.alive && f.serial == serial)
+    }
+
+    /// Whether any input point remains in some outside set (false once the hull is complete).
+    pub fn has_outside_points(&self) -> bool {
+        self.facets().any(|(_, f)| !f.outside.is_empty())
+    }
+
+    /// Volume of the current hull, in the caller's units (partial hulls have smaller volume).
+    ///
+    /// Computed as the sum of signed cone volumes from an interior point, using each facet's
+    /// cofactor vector, so it costs one dot product per facet.
     pub fn volume(&self) -> f64 {
-        todo!()
+        let mut sum = 0.0;
+        for (_, facet) in self.facets() {
+            // Orientation value of (facet, interior) is −D!·(cone volume).
+            let (value, _) = facet.plane.evaluate(&self.interior);
+            sum -= value;
+        }
+        let factorial: f64 = (1..=D).map(|k| k as f64).product();
+        sum / factorial / self.scale.powi(D as i32)
     }
-    /// Work counters.
+
+    /// Work counters so far (`elapsed` is set when the strategy stops).
     pub fn stats(&self) -> Stats {
-        todo!()
+        self.stats
     }
-    /// Validator.
-    pub fn check(&self) -> Result<(), InvariantViolation> {
-        todo!()
+
+    /// Exact side of `x` (caller's units) relative to facet `id`'s plane: [`Sign::Positive`] when
+    /// strictly beyond.
+    ///
+    /// Exact whenever scaling `x` into the hull's internal coordinates is exact (always, unless `x`
+    /// has coordinates more than ~10^300 times larger or smaller than the input's); otherwise the
+    /// sign of the floating-point [`signed_distance`](Self::signed_distance).
+    pub fn side_of(&self, id: FacetId, x: &[f64; D]) -> Sign {
+        let scaled = x.map(|c| c * self.scale);
+        let exact = x
+            .iter()
+            .zip(&scaled)
+            .all(|(&c, &s)| s.is_finite() && (c == 0.0 || s.abs() >= f64::MIN_POSITIVE));
+        if exact {
+            self.side(id, &scaled)
+        } else {
+            match self.signed_distance(id, x) {
+                d if d > 0.0 => Sign::Positive,
+                d if d < 0.0 => Sign::Negative,
+                _ => Sign::Zero,
+            }
+        }
+    }
+
+    /// Signed distance of `x` (caller's units) beyond facet `id`'s plane, positive outside.
+    pub fn signed_distance(&self, id: FacetId, x: &[f64; D]) -> f64 {
+        let facet = self.facet(id);
+        dot(&facet.normal, x) - facet.offset
     }
 }

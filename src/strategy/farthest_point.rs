@@ -1,11 +1,24 @@
-//! Full QuickHull.
-use super::{Step, Strategy};
-use crate::hull::Hull;
+//! `FarthestPoint`: plain QuickHull, run to completion.
 
-/// Plain QuickHull to completion: the full hull.
+use super::{Step, Strategy};
+use crate::hull::{FacetId, Hull};
+
+/// Plain QuickHull to completion: every facet with a non-empty outside set is expanded with its
+/// farthest point until no outside set remains. The result is the full hull, and the baseline every
+/// partial strategy is measured against.
+///
+/// ```
+/// use pqhull::{FarthestPoint, Hull};
+/// let points = [[0.0, 0.0], [4.0, 0.0], [0.0, 3.0], [1.0, 1.0]];
+/// let (hull, ()) = Hull::try_with_strategy(&points, FarthestPoint::new())?;
+/// assert_eq!(hull.vertex_indices(), vec![0, 1, 2]);
+/// assert!((hull.volume() - 6.0).abs() < 1e-12);
+/// # Ok::<(), pqhull::HullError>(())
+/// ```
 #[derive(Clone, Debug, Default)]
 pub struct FarthestPoint {
-    _private: (),
+    /// Facets that may still have outside points (stale ids are skipped).
+    pending: Vec<FacetId>,
 }
 
 impl FarthestPoint {
@@ -17,9 +30,32 @@ impl FarthestPoint {
 
 impl<const D: usize> Strategy<D> for FarthestPoint {
     type Output = ();
-    fn start(&mut self, _hull: &Hull<D>) {}
-    fn step(&mut self, _hull: &mut Hull<D>) -> Step {
-        todo!()
+
+    fn start(&mut self, hull: &Hull<D>) {
+        self.pending.clear();
+        self.pending.extend(
+            hull.facets()
+                .filter(|(_, f)| f.outside_len() > 0)
+                .map(|(id, _)| id),
+        );
     }
+
+    fn step(&mut self, hull: &mut Hull<D>) -> Step {
+        // A stale id (its slot since reused) is harmless here: any live facet with outside points
+        // is a valid facet to expand.
+        while let Some(id) = self.pending.pop() {
+            if hull.expand(id) {
+                self.pending.extend(
+                    hull.last_created()
+                        .iter()
+                        .copied()
+                        .filter(|&c| hull.facet(c).outside_len() > 0),
+                );
+                return Step::Continue;
+            }
+        }
+        Step::Stop
+    }
+
     fn finish(self, _hull: &Hull<D>) -> Self::Output {}
 }

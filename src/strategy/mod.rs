@@ -7,6 +7,7 @@ use std::time::Duration;
 
 mod closest_to_origin;
 mod farthest_point;
+mod nearest;
 
 pub use closest_to_origin::{ClosestToOrigin, DistanceResult};
 pub use farthest_point::FarthestPoint;

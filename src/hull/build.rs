@@ -1,0 +1,316 @@
+//! Input validation, scaling and the initial simplex.
+
+use super::expand::Scratch;
+use super::facet::{Facet, FacetId, dot};
+use super::{Hull, HullError};
+use crate::predicates::{FacetPlane, Sign, affinely_independent_subset};
+use crate::strategy::Stats;
+use std::time::Instant;
+
+impl<const D: usize> Hull<D> {
+    /// Validates the input, scales it, builds the initial simplex and the first outside sets.
+    pub(crate) fn try_initial(input: &[[f64; D]]) -> Result<Self, HullError> {
+        let started = Instant::now();
+        if !(2..=8).contains(&D) {
+            return Err(HullError::DimensionOutOfRange { dimension: D });
+        }
+        if let Some((index, coordinate)) = first_non_finite(input) {
+            return Err(HullError::NonFinite { index, coordinate });
+        }
+        if input.len() < D + 1 {
+            return Err(HullError::TooFewPoints { needed: D + 1, got: input.len() });
+        }
+        if input.len() > u32::MAX as usize {
+            // Vertices are stored as u32 to halve the facet arena's index traffic.
+            return Err(HullError::TooManyPoints { max: u32::MAX as usize, got: input.len() });
+        }
+        let scale = exact_power_of_two_scale(input);
+        let points: Vec<[f64; D]> = input.iter().map(|p| p.map(|x| x * scale)).collect();
+        let simplex = initial_simplex(&points)?;
+
+        let mut interior = [0.0; D];
+        for &s in &simplex {
+            for (c, x) in interior.iter_mut().zip(&points[s]) {
+                *c += x / (D + 1) as f64;
+            }
+        }
+        let mut hull = Hull {
+            points,
+            scale,
+            facets: Vec::new(),
+            free: Vec::new(),
+            live: 0,
+            next_serial: 0,
+            epoch: 0,
+            interior,
+            stats: Stats::default(),
+            started,
+            scratch: Scratch::default(),
+        };
+
+        // Facet k is opposite simplex vertex k; its neighbour across the ridge opposite simplex
+        // vertex j is facet j.
+        for k in 0..=D {
+            let mut vertices = [0u32; D];
+            let mut neighbors = [FacetId::NONE; D];
+            for (slot, j) in (0..=D).filter(|&j| j != k).enumerate() {
+                vertices[slot] = simplex[j] as u32;
+                neighbors[slot] = FacetId(j as u32);
+            }
+            let coords = hull.coords(&vertices);
+            if orientation_of(&coords, &hull.points[simplex[k]]) == Sign::Positive {
+                vertices.swap(0, 1);
+                neighbors.swap(0, 1);
+            }
+            hull.push_facet(vertices, neighbors);
+        }
+        hull.stats.points_processed = D + 1;
+
+        let all: Vec<FacetId> = (0..=D as u32).map(FacetId).collect();
+        let mut is_vertex = vec![false; hull.points.len()];
+        for &s in &simplex {
+            is_vertex[s] = true;
+        }
+        for p in 0..hull.points.len() {
+            if !is_vertex[p] {
+                hull.assign(p as u32, &all);
+            }
+        }
+        Ok(hull)
+    }
+
+    pub(crate) fn coords(&self, vertices: &[u32; D]) -> [[f64; D]; D] {
+        vertices.map(|v| self.points[v as usize])
+    }
+
+    /// Creates a facet (plane and normal computed here), reusing a tombstoned slot when possible.
+    pub(crate) fn push_facet(&mut self, vertices: [u32; D], neighbors: [FacetId; D]) -> FacetId {
+        let coords = self.coords(&vertices);
+        let plane = FacetPlane::new(&coords);
+        let norm = dot(plane.cofactors(), plane.cofactors()).sqrt();
+        let inv_norm = 1.0 / norm;
+        let normal = plane.cofactors().map(|c| c * inv_norm);
+        let offset = dot(&normal, &coords[0]) / self.scale;
+        let serial = self.next_serial;
+        self.next_serial = self.next_serial.wrapping_add(1);
+        self.stats.facets_created += 1;
+        self.live += 1;
+        let fresh = |outside: Vec<u32>| Facet {
+            vertices,
+            neighbors,
+            plane,
+            inv_norm,
+            normal,
+            offset,
+            outside,
+            farthest: None,
+            alive: true,
+            serial,
+            mark: 0,
+            visible: false,
+        };
+        match self.free.pop() {
+            Some(id) => {
+                let slot = &mut self.facets[id.index()];
+                let mut outside = std::mem::take(&mut slot.outside);
+                outside.clear();
+                *slot = fresh(outside);
+                id
+            }
+            None => {
+                self.facets.push(fresh(Vec::new()));
+                FacetId((self.facets.len() - 1) as u32)
+            }
+        }
+    }
+
+    /// Puts point `p` in the outside set of the candidate it lies farthest beyond (exactly decided),
+    /// or nowhere if it lies weakly inside every candidate. Returns whether it was assigned.
+    pub(crate) fn assign(&mut self, p: u32, candidates: &[FacetId]) -> bool {
+        let point = self.points[p as usize];
+        let mut best: Option<(FacetId, f64, f64)> = None;
+        let mut undecided = false;
+        for &id in candidates {
+            let facet = &self.facets[id.index()];
+            let (value, bound) = facet.plane.evaluate(&point);
+            if value > bound {
+                let distance = value * facet.inv_norm;
+                if best.is_none_or(|(_, d, _)| distance > d) {
+                    best = Some((id, distance, value));
+                }
+            } else if value >= -bound {
+                undecided = true;
+            }
+        }
+        if best.is_none() && undecided {
+            // Only the exact path can tell; the first facet it puts the point beyond will do.
+            for &id in candidates {
+                let facet = &self.facets[id.index()];
+                let (value, bound) = facet.plane.evaluate(&point);
+                if value.abs() <= bound
+                    && facet.plane.side(&point, || self.coords(&facet.vertices)) == Sign::Positive
+                {
+                    best = Some((id, value * facet.inv_norm, value.max(0.0)));
+                    break;
+                }
+            }
+        }
+        let Some((id, _, value)) = best else {
+            return false;
+        };
+        let facet = &mut self.facets[id.index()];
+        let slot = facet.outside.len() as u32;
+        facet.outside.push(p);
+        if facet.farthest.is_none_or(|(_, v)| value > v) {
+            facet.farthest = Some((slot, value));
+        }
+        true
+    }
+
+    /// Exact side of internal point `x` relative to facet `id`.
+    pub(crate) fn side(&self, id: FacetId, x: &[f64; D]) -> Sign {
+        let facet = &self.facets[id.index()];
+        facet.plane.side(x, || self.coords(&facet.vertices))
+    }
+}
+
+fn orientation_of<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> Sign {
+    crate::predicates::orientation(vertices, p)
+}
+
+fn first_non_finite<const D: usize>(points: &[[f64; D]]) -> Option<(usize, usize)> {
+    points.iter().enumerate().find_map(|(i, p)| {
+        p.iter().position(|x| !x.is_finite()).map(|c| (i, c))
+    })
+}
+
+/// The power of two that brings the largest coordinate into [0.5, 1), if scaling by it is exact
+/// for every coordinate; otherwise 1 (the predicates then skip their filter and stay exact).
+fn exact_power_of_two_scale<const D: usize>(points: &[[f64; D]]) -> f64 {
+    let max_abs = points
+        .iter()
+        .flat_map(|p| p.iter())
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+    if max_abs == 0.0 {
+        return 1.0;
+    }
+    // frexp: max_abs = m · 2^e with m in [0.5, 1); scale = 2^−e, built in two halves so that
+    // neither factor overflows or underflows.
+    let mut e = 0i32;
+    let mut m = max_abs;
+    while m >= 1.0 {
+        m *= 0.5;
+        e += 1;
+    }
+    while m < 0.5 {
+        m *= 2.0;
+        e -= 1;
+    }
+    let half = -e / 2;
+    let scale = 2f64.powi(half) * 2f64.powi(-e - half);
+    if !scale.is_finite() || scale == 0.0 {
+        return 1.0;
+    }
+    // Multiplying by a power of two is exact unless the result leaves the normal range.
+    let exact = points
+        .iter()
+        .flat_map(|p| p.iter())
+        .all(|&x| x == 0.0 || (x * scale).abs() >= f64::MIN_POSITIVE);
+    if exact { scale } else { 1.0 }
+}
+
+/// Chooses D + 1 affinely independent points spanning a large simplex: the two extreme points
+/// farthest apart along the axes, then repeatedly the point farthest from the affine hull of those
+/// chosen. Floating point only picks candidates; the result is verified with the exact predicate,
+/// and exact rank computation takes over when the greedy choice is flat.
+fn initial_simplex<const D: usize>(points: &[[f64; D]]) -> Result<Vec<usize>, HullError> {
+    if let Some(simplex) = greedy_simplex(points) {
+        let mut vertices = [[0.0; D]; D];
+        for (v, &s) in vertices.iter_mut().zip(&simplex) {
+            *v = points[s];
+        }
+        if crate::predicates::orientation(&vertices, &points[simplex[D]]) != Sign::Zero {
+            return Ok(simplex);
+        }
+    }
+    let independent = affinely_independent_subset(points);
+    if independent.len() < D + 1 {
+        return Err(HullError::AffinelyDependent {
+            rank: independent.len().saturating_sub(1),
+            dimension: D,
+        });
+    }
+    Ok(independent)
+}
+
+fn greedy_simplex<const D: usize>(points: &[[f64; D]]) -> Option<Vec<usize>> {
+    let mut extremes = Vec::with_capacity(2 * D);
+    for axis in 0..D {
+        let by_axis = |a: &&[f64; D], b: &&[f64; D]| a[axis].total_cmp(&b[axis]);
+        let (lo, _) = points.iter().enumerate().min_by(|a, b| by_axis(&a.1, &b.1))?;
+        let (hi, _) = points.iter().enumerate().max_by(|a, b| by_axis(&a.1, &b.1))?;
+        extremes.push(lo);
+        extremes.push(hi);
+    }
+    let mut best = (0.0, 0, 0);
+    for (i, &a) in extremes.iter().enumerate() {
+        for &b in &extremes[i + 1..] {
+            let d = distance_squared(&points[a], &points[b]);
+            if d > best.0 {
+                best = (d, a, b);
+            }
+        }
+    }
+    if best.0 == 0.0 {
+        return None;
+    }
+    let mut chosen = vec![best.1, best.2];
+    // Orthonormal basis of the directions spanned so far (modified Gram–Schmidt).
+    let mut basis: Vec<[f64; D]> = Vec::with_capacity(D);
+    push_direction(&mut basis, sub(&points[best.2], &points[best.1]));
+    let origin = points[best.1];
+    while chosen.len() < D + 1 {
+        let mut far = (0.0, usize::MAX);
+        for (i, p) in points.iter().enumerate() {
+            let r = residual(&basis, sub(p, &origin));
+            let d = dot(&r, &r);
+            if d > far.0 {
+                far = (d, i);
+            }
+        }
+        if far.1 == usize::MAX {
+            return None;
+        }
+        chosen.push(far.1);
+        push_direction(&mut basis, sub(&points[far.1], &origin));
+    }
+    Some(chosen)
+}
+
+fn sub<const D: usize>(a: &[f64; D], b: &[f64; D]) -> [f64; D] {
+    std::array::from_fn(|i| a[i] - b[i])
+}
+
+fn distance_squared<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
+    let d = sub(a, b);
+    dot(&d, &d)
+}
+
+fn residual<const D: usize>(basis: &[[f64; D]], mut v: [f64; D]) -> [f64; D] {
+    for b in basis {
+        let c = dot(b, &v);
+        for (x, y) in v.iter_mut().zip(b) {
+            *x -= c * y;
+        }
+    }
+    v
+}
+
+fn push_direction<const D: usize>(basis: &mut Vec<[f64; D]>, v: [f64; D]) {
+    // Two passes of Gram–Schmidt keep the basis orthogonal to working precision.
+    let r = residual(basis, residual(basis, v));
+    let n = dot(&r, &r).sqrt();
+    if n > 0.0 {
+        basis.push(r.map(|x| x / n));
+    }
+}

@@ -1,0 +1,99 @@
+//! The public validator: every invariant the engine promises, checked from scratch.
+
+use super::facet::{FacetId, dot};
+use super::{Hull, InvariantViolation};
+use crate::predicates::Sign;
+
+impl<const D: usize> Hull<D> {
+    /// Checks every invariant of the hull, exactly where it can be:
+    ///
+    /// * live facets have live neighbours, links are symmetric, and neighbours across the ridge
+    ///   opposite vertex `i` share exactly the other D − 1 vertices;
+    /// * each facet's unit normal and offset match its vertices (to a relative 1e−9 of the point
+    ///   set's extent — the only floating-point check; the exact plane *is* the vertices');
+    /// * every input point lies weakly inside every live facet (exact predicate), except the points
+    ///   in outside sets, which must lie strictly beyond their own facet (partial hulls);
+    /// * the arena's live count matches.
+    ///
+    /// Cost: one exact predicate per (point, facet) pair, so use it in tests, not in hot loops.
+    ///
+    /// # Errors
+    /// The first violation found, naming the facets or points involved.
+    pub fn check(&self) -> Result<(), InvariantViolation> {
+        let fail = |message: String| Err(InvariantViolation { message });
+        let live: Vec<FacetId> = self.facets().map(|(id, _)| id).collect();
+        if live.len() != self.live {
+            return fail(format!("{} live facets, counter says {}", live.len(), self.live));
+        }
+        let extent = self.extent();
+        for &id in &live {
+            let f = self.facet(id);
+            for i in 0..D {
+                let n = f.neighbors[i];
+                let Some(nf) = self.facets.get(n.index()).filter(|nf| nf.alive) else {
+                    return fail(format!("facet {} has dead neighbour {} at {i}", id.0, n.0));
+                };
+                let Some(back) = nf.neighbors.iter().position(|&b| b == id) else {
+                    return fail(format!("facet {} → {} is not symmetric", id.0, n.0));
+                };
+                let shared = f.vertices.iter().enumerate().filter(|&(k, _)| k != i);
+                for (_, v) in shared {
+                    if !nf.vertices.contains(v) {
+                        return fail(format!(
+                            "facets {} and {} are neighbours but do not share vertex {v}",
+                            id.0, n.0
+                        ));
+                    }
+                }
+                if nf.vertices.contains(&f.vertices[i]) || f.vertices.contains(&nf.vertices[back]) {
+                    return fail(format!("facets {} and {} share all vertices", id.0, n.0));
+                }
+            }
+            let length = dot(&f.normal, &f.normal).sqrt();
+            if (length - 1.0).abs() > 1e-9 {
+                return fail(format!("facet {} normal has length {length}", id.0));
+            }
+            for &v in &f.vertices {
+                let gap = dot(&f.normal, &self.point(v as usize)) - f.offset;
+                if gap.abs() > 1e-9 * extent {
+                    return fail(format!("vertex {v} is {gap} off facet {}'s plane", id.0));
+                }
+            }
+        }
+        let mut owner = vec![None; self.points.len()];
+        for &id in &live {
+            for &p in &self.facet(id).outside {
+                if owner[p as usize].replace(id).is_some() {
+                    return fail(format!("point {p} is in two outside sets"));
+                }
+                if self.side(id, &self.points[p as usize]) != Sign::Positive {
+                    return fail(format!("point {p} is in facet {}'s outside set but not beyond it", id.0));
+                }
+            }
+        }
+        for (p, point) in self.points.iter().enumerate() {
+            if owner[p].is_some() {
+                continue;
+            }
+            for &id in &live {
+                if self.side(id, point) == Sign::Positive {
+                    return fail(format!(
+                        "point {p} lies beyond facet {} but is in no outside set",
+                        id.0
+                    ));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Largest absolute coordinate of the input, in the caller's units.
+    fn extent(&self) -> f64 {
+        let max = self
+            .points
+            .iter()
+            .flat_map(|p| p.iter())
+            .fold(0.0f64, |m, x| m.max(x.abs()));
+        max / self.scale
+    }
+}

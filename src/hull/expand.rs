@@ -1,0 +1,228 @@
+//! One QuickHull expansion: visible facets, horizon, cone of new facets, repartition.
+
+use super::facet::FacetId;
+use super::Hull;
+use crate::predicates::Sign;
+
+/// Buffers reused across expansions so that steady-state expansion does not allocate.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Scratch<const D: usize> {
+    /// Facets visible from the new point (removed by the expansion).
+    pub(crate) removed: Vec<FacetId>,
+    /// Facets created by the expansion.
+    pub(crate) created: Vec<FacetId>,
+    /// (visible facet, index of the horizon ridge in it).
+    horizon: Vec<(FacetId, usize)>,
+    /// Ridges of the cone to pair up: (sorted vertex key, new facet, its neighbour slot).
+    ridges: Vec<([u32; D], FacetId, usize)>,
+    /// Points of removed outside sets awaiting reassignment.
+    orphans: Vec<u32>,
+    stack: Vec<FacetId>,
+}
+
+impl<const D: usize> Hull<D> {
+    /// Adds the point farthest beyond facet `id` to the hull.
+    ///
+    /// Returns `false` (and changes nothing) when the facet is not live or its outside set is
+    /// empty. Afterwards [`Hull::last_removed`] and [`Hull::last_created`] list what changed.
+    pub fn expand(&mut self, id: FacetId) -> bool {
+        let Some(facet) = self.facets.get(id.index()).filter(|f| f.alive) else {
+            return false;
+        };
+        match facet.farthest {
+            Some((slot, _)) => {
+                let point = facet.outside[slot as usize] as usize;
+                self.expand_with(id, point)
+            }
+            None => false,
+        }
+    }
+
+    /// Adds input point `point`, which must be in facet `id`'s outside set, to the hull.
+    ///
+    /// Returns `false` (and changes nothing) when `id` is not live or `point` is not in its outside
+    /// set.
+    pub fn expand_with(&mut self, id: FacetId, point: usize) -> bool {
+        let Some(facet) = self.facets.get_mut(id.index()).filter(|f| f.alive) else {
+            return false;
+        };
+        let Some(slot) = facet.outside.iter().position(|&p| p as usize == point) else {
+            return false;
+        };
+        facet.outside.swap_remove(slot);
+        let p = point as u32;
+        self.collect_visible(id, p);
+        self.build_cone(p);
+        self.repartition();
+        self.stats.expansions += 1;
+        self.stats.points_processed += 1;
+        true
+    }
+
+    /// Facets removed by the last expansion (their slots are tombstoned).
+    pub fn last_removed(&self) -> &[FacetId] {
+        &self.scratch.removed
+    }
+
+    /// Facets created by the last expansion.
+    pub fn last_created(&self) -> &[FacetId] {
+        &self.scratch.created
+    }
+
+    /// Moves into facet `id`'s outside set every point of other outside sets that lies strictly
+    /// beyond it. Returns whether its outside set is now non-empty.
+    ///
+    /// Each point sits in one outside set only, so an empty set does not yet prove that nothing
+    /// lies beyond a facet; after this call it does. Strategies that stop on "no point beyond this
+    /// facet" must call it (its cost is one predicate per remaining outside point).
+    pub fn claim_beyond(&mut self, id: FacetId) -> bool {
+        if !self.facets.get(id.index()).is_some_and(|f| f.alive) {
+            return false;
+        }
+        let mut claimed = std::mem::take(&mut self.facets[id.index()].outside);
+        for other in 0..self.facets.len() {
+            if other == id.index() || !self.facets[other].alive || self.facets[other].outside.is_empty() {
+                continue;
+            }
+            let mut outside = std::mem::take(&mut self.facets[other].outside);
+            let before = outside.len();
+            outside.retain(|&p| {
+                let beyond = self.side(id, &self.points[p as usize]) == Sign::Positive;
+                if beyond {
+                    claimed.push(p);
+                }
+                !beyond
+            });
+            if outside.len() != before {
+                self.facets[other].outside = outside;
+                self.refresh_farthest(FacetId(other as u32));
+            } else {
+                self.facets[other].outside = outside;
+            }
+        }
+        self.facets[id.index()].outside = claimed;
+        self.refresh_farthest(id);
+        !self.facets[id.index()].outside.is_empty()
+    }
+
+    /// Recomputes which point of a facet's outside set lies farthest beyond it.
+    pub(crate) fn refresh_farthest(&mut self, id: FacetId) {
+        let facet = &self.facets[id.index()];
+        let mut best: Option<(u32, f64)> = None;
+        for (slot, &p) in facet.outside.iter().enumerate() {
+            let (value, _) = facet.plane.evaluate(&self.points[p as usize]);
+            if best.is_none_or(|(_, v)| value > v) {
+                best = Some((slot as u32, value));
+            }
+        }
+        self.facets[id.index()].farthest = best;
+    }
+
+    /// Depth-first search from `start` over facets that `p` lies beyond or on (exactly decided).
+    ///
+    /// Facets with `p` on their plane count as visible: removing them keeps every hull vertex an
+    /// extreme point, and the cone over the horizon is still non-degenerate because a horizon
+    /// facet has `p` strictly beneath it.
+    fn collect_visible(&mut self, start: FacetId, p: u32) {
+        self.epoch = self.epoch.wrapping_add(1);
+        let epoch = self.epoch;
+        let point = self.points[p as usize];
+        let scratch = &mut self.scratch;
+        scratch.removed.clear();
+        scratch.horizon.clear();
+        scratch.stack.clear();
+        scratch.stack.push(start);
+        let f = &mut self.facets[start.index()];
+        f.mark = epoch;
+        f.visible = true;
+        while let Some(id) = self.scratch.stack.pop() {
+            self.scratch.removed.push(id);
+            for i in 0..D {
+                let n = self.facets[id.index()].neighbors[i];
+                let neighbor = &self.facets[n.index()];
+                let visible = if neighbor.mark == epoch {
+                    neighbor.visible
+                } else {
+                    let visible = self.side(n, &point) != Sign::Negative;
+                    let neighbor = &mut self.facets[n.index()];
+                    neighbor.mark = epoch;
+                    neighbor.visible = visible;
+                    if visible {
+                        self.scratch.stack.push(n);
+                    }
+                    visible
+                };
+                if !visible {
+                    self.scratch.horizon.push((id, i));
+                }
+            }
+        }
+    }
+
+    /// Creates one facet per horizon ridge, joined to `p`, and links the cone.
+    fn build_cone(&mut self, p: u32) {
+        self.scratch.created.clear();
+        self.scratch.ridges.clear();
+        for h in 0..self.scratch.horizon.len() {
+            let (visible, i) = self.scratch.horizon[h];
+            let old = &self.facets[visible.index()];
+            let outer = old.neighbors[i];
+            // Same vertex order with vertex i replaced by p: the new facet inherits the removed
+            // facet's orientation of the shared ridge, so it is outward (see ARCHITECTURE.md).
+            let mut vertices = old.vertices;
+            vertices[i] = p;
+            let mut neighbors = [FacetId::NONE; D];
+            neighbors[i] = outer;
+            let new = self.push_facet(vertices, neighbors);
+            self.scratch.created.push(new);
+            let back = self.facets[outer.index()]
+                .neighbors
+                .iter()
+                .position(|&n| n == visible)
+                .expect("horizon neighbour links back to the visible facet");
+            self.facets[outer.index()].neighbors[back] = new;
+            for j in (0..D).filter(|&j| j != i) {
+                // The ridge opposite vertex j contains p; key it by its other D − 2 vertices.
+                let mut key = [u32::MAX; D];
+                let mut k = 0;
+                for (m, &v) in vertices.iter().enumerate() {
+                    if m != i && m != j {
+                        key[k] = v;
+                        k += 1;
+                    }
+                }
+                key[..k].sort_unstable();
+                self.scratch.ridges.push((key, new, j));
+            }
+        }
+        self.scratch.ridges.sort_unstable_by(|a, b| a.0.cmp(&b.0));
+        for pair in self.scratch.ridges.chunks_exact(2) {
+            let (ka, a, ja) = pair[0];
+            let (kb, b, jb) = pair[1];
+            debug_assert_eq!(ka, kb, "every cone ridge is shared by exactly two new facets");
+            self.facets[a.index()].neighbors[ja] = b;
+            self.facets[b.index()].neighbors[jb] = a;
+        }
+    }
+
+    /// Tombstones the visible facets and reassigns their outside points to the new facets.
+    fn repartition(&mut self) {
+        self.scratch.orphans.clear();
+        for r in 0..self.scratch.removed.len() {
+            let id = self.scratch.removed[r];
+            let facet = &mut self.facets[id.index()];
+            facet.alive = false;
+            facet.farthest = None;
+            self.scratch.orphans.append(&mut facet.outside);
+            self.free.push(id);
+        }
+        self.live -= self.scratch.removed.len();
+        let orphans = std::mem::take(&mut self.scratch.orphans);
+        let created = std::mem::take(&mut self.scratch.created);
+        for &q in &orphans {
+            self.assign(q, &created);
+        }
+        self.scratch.orphans = orphans;
+        self.scratch.created = created;
+    }
+}

@@ -1,0 +1,107 @@
+//! Facets: simplices with neighbour links, stored in the hull's arena.
+
+use crate::predicates::FacetPlane;
+
+/// A handle to a facet in a [`Hull`](crate::Hull)'s arena.
+///
+/// Ids are slot indices. When an expansion removes a facet its slot is tombstoned and may be reused
+/// by a facet created in a *later* expansion, so a strategy that keeps ids across expansions should
+/// also keep the facet's [`serial`](Facet::serial) and compare it (see
+/// [`Hull::is_current`](crate::Hull::is_current)).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct FacetId(pub(crate) u32);
+
+impl FacetId {
+    /// The slot index in the arena.
+    pub fn index(self) -> usize {
+        self.0 as usize
+    }
+
+    /// Placeholder for a neighbour link not yet made.
+    pub(crate) const NONE: FacetId = FacetId(u32::MAX);
+}
+
+/// A simplicial facet of a hull: D vertices, D neighbours, an outward plane.
+///
+/// Neighbour `i` is the facet across the ridge opposite vertex `i`. The vertex order is oriented:
+/// the exact orientation determinant of `(vertices, p)` is positive exactly when `p` lies strictly
+/// beyond the facet.
+#[derive(Clone, Debug)]
+pub struct Facet<const D: usize> {
+    pub(crate) vertices: [u32; D],
+    pub(crate) neighbors: [FacetId; D],
+    /// Exact-predicate cache, in the hull's internal (power-of-two scaled) coordinates.
+    pub(crate) plane: FacetPlane<D>,
+    /// 1 / |cofactors|: turns an orientation value into a distance in internal coordinates.
+    pub(crate) inv_norm: f64,
+    /// Unit outward normal.
+    pub(crate) normal: [f64; D],
+    /// Offset in the caller's coordinates.
+    pub(crate) offset: f64,
+    /// Input indices of the points assigned to this facet (each strictly beyond it).
+    pub(crate) outside: Vec<u32>,
+    /// Position in `outside` of the point farthest beyond, with its orientation value.
+    pub(crate) farthest: Option<(u32, f64)>,
+    pub(crate) alive: bool,
+    pub(crate) serial: u32,
+    /// Visit epoch and verdict of the last horizon search that looked at this facet.
+    pub(crate) mark: u32,
+    pub(crate) visible: bool,
+}
+
+impl<const D: usize> Facet<D> {
+    /// Vertices as input indices, in oriented order.
+    pub fn vertices(&self) -> [usize; D] {
+        self.vertices.map(|v| v as usize)
+    }
+
+    /// Neighbours; neighbour `i` is opposite vertex `i`.
+    pub fn neighbors(&self) -> [FacetId; D] {
+        self.neighbors
+    }
+
+    /// Unit outward normal (computed in floating point from the exact vertex coordinates).
+    pub fn normal(&self) -> [f64; D] {
+        self.normal
+    }
+
+    /// Offset: points inside satisfy `normal · x <= offset` (up to rounding of the normal).
+    pub fn offset(&self) -> f64 {
+        self.offset
+    }
+
+    /// Signed distance of `x` beyond the facet's plane (positive outside), in the caller's units.
+    pub fn signed_distance(&self, x: &[f64; D]) -> f64 {
+        dot(&self.normal, x) - self.offset
+    }
+
+    /// How many input points are assigned to this facet's outside set.
+    pub fn outside_len(&self) -> usize {
+        self.outside.len()
+    }
+
+    /// Input indices of the points assigned to this facet (each strictly beyond it).
+    pub fn outside_set(&self) -> impl Iterator<Item = usize> + '_ {
+        self.outside.iter().map(|&p| p as usize)
+    }
+
+    /// The input index of the point farthest beyond this facet, if any.
+    pub fn farthest_point(&self) -> Option<usize> {
+        self.farthest
+            .map(|(slot, _)| self.outside[slot as usize] as usize)
+    }
+
+    /// Creation number, unique over the life of the hull (ids are reused, serials are not).
+    pub fn serial(&self) -> u32 {
+        self.serial
+    }
+
+    /// Whether the facet is part of the current hull.
+    pub fn is_alive(&self) -> bool {
+        self.alive
+    }
+}
+
+pub(crate) fn dot<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
