@@ -35,3 +35,5 @@ pub mod strategy;
 
 pub use hull::{Facet, FacetId, Hull, HullError, InvariantViolation};
 pub use strategy::{ClosestToOrigin, FarthestPoint, Stats, Strategy};
+#[cfg(feature = "qhull")]
+pub mod qhull_baseline;

@@ -1,0 +1,1 @@
+//! Qhull baseline (feature `qhull`). STUB: owned by the benchmark work.

@@ -1,0 +1,243 @@
+//! Known answers, errors and degenerate inputs of `Hull<D>`.
+
+use pqhull::predicates::{Sign, orientation};
+use pqhull::{ClosestToOrigin, Hull, HullError};
+
+/// Corners of [0, 1]^D.
+fn cube<const D: usize>() -> Vec<[f64; D]> {
+    (0..1usize << D)
+        .map(|m| std::array::from_fn(|c| ((m >> c) & 1) as f64))
+        .collect()
+}
+
+#[test]
+fn cube_corners_with_interior_and_face_points() {
+    fn run<const D: usize>() {
+        let mut points = cube::<D>();
+        let corners = points.len();
+        points.push([0.5; D]); // centre
+        let mut face = [0.5; D];
+        face[0] = 1.0; // centre of a face: coplanar with a facet
+        points.push(face);
+        points.extend(cube::<D>()); // every corner twice
+        let hull = Hull::try_new(&points).unwrap();
+        hull.check().unwrap();
+        let vertices = hull.vertex_indices();
+        assert_eq!(vertices.len(), corners, "D={D}: duplicates or face points became vertices");
+        assert!((hull.volume() - 1.0).abs() < 1e-12, "D={D}: volume {}", hull.volume());
+        // Every corner of the cube appears, once (either copy may be the one kept).
+        let mut seen: Vec<[f64; D]> = vertices.iter().map(|&v| points[v]).collect();
+        seen.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        seen.dedup();
+        assert_eq!(seen.len(), corners);
+        // Distance from the centre to the boundary is 1/2.
+        let (_, r) = Hull::try_with_strategy(&points, ClosestToOrigin::towards([0.5; D])).unwrap();
+        assert!((r.signed_distance - 0.5).abs() < 1e-15);
+    }
+    run::<2>();
+    run::<3>();
+    run::<4>();
+    run::<5>();
+    run::<6>();
+}
+
+#[test]
+fn simplex_volume_is_one_over_d_factorial() {
+    fn run<const D: usize>() {
+        let mut points = vec![[0.0; D]];
+        for i in 0..D {
+            let mut e = [0.0; D];
+            e[i] = 1.0;
+            points.push(e);
+        }
+        let hull = Hull::try_new(&points).unwrap();
+        hull.check().unwrap();
+        let factorial: f64 = (1..=D).map(|k| k as f64).product();
+        assert!((hull.volume() - 1.0 / factorial).abs() < 1e-15);
+        assert_eq!(hull.facet_count(), D + 1);
+    }
+    run::<2>();
+    run::<3>();
+    run::<4>();
+    run::<5>();
+    run::<6>();
+    run::<7>();
+    run::<8>();
+}
+
+/// Brute force: a D-subset is a facet iff every other point lies strictly on one side of it.
+fn brute_force_facets<const D: usize>(points: &[[f64; D]]) -> Vec<Vec<usize>> {
+    let n = points.len();
+    let mut found = Vec::new();
+    let mut subset: Vec<usize> = (0..D).collect();
+    loop {
+        let vertices: [[f64; D]; D] = std::array::from_fn(|k| points[subset[k]]);
+        let mut signs = (0..n)
+            .filter(|i| !subset.contains(i))
+            .map(|i| orientation(&vertices, &points[i]));
+        let first = signs.next().unwrap();
+        if first != Sign::Zero && signs.all(|s| s == first) {
+            found.push(subset.clone());
+        }
+        // Next combination.
+        let mut k = D;
+        while k > 0 && subset[k - 1] == n - D + k - 1 {
+            k -= 1;
+        }
+        if k == 0 {
+            break;
+        }
+        subset[k - 1] += 1;
+        for j in k..D {
+            subset[j] = subset[j - 1] + 1;
+        }
+    }
+    found.sort();
+    found
+}
+
+#[test]
+fn facets_match_brute_force_in_general_position() {
+    fn run<const D: usize>(n: usize, seeds: u64) {
+        for seed in 0..seeds {
+            let points = pqhull::rbox::generate::<D>(&pqhull::rbox::Family::UniformCube, n, seed);
+            let hull = Hull::try_new(&points).unwrap();
+            let mut facets: Vec<Vec<usize>> = hull
+                .facets()
+                .map(|(_, f)| {
+                    let mut v = f.vertices().to_vec();
+                    v.sort();
+                    v
+                })
+                .collect();
+            facets.sort();
+            assert_eq!(facets, brute_force_facets(&points), "D={D} seed={seed}");
+        }
+    }
+    run::<2>(12, 20);
+    run::<3>(12, 20);
+    run::<4>(11, 10);
+    run::<5>(10, 5);
+}
+
+#[test]
+fn errors_name_what_is_wrong() {
+    assert_eq!(
+        Hull::<3>::try_new(&[[0.0; 3]; 3]).unwrap_err(),
+        HullError::TooFewPoints { needed: 4, got: 3 }
+    );
+    let mut points = cube::<3>();
+    points[5][2] = f64::NAN;
+    assert_eq!(
+        Hull::try_new(&points).unwrap_err(),
+        HullError::NonFinite { index: 5, coordinate: 2 }
+    );
+    points[5][2] = f64::NEG_INFINITY;
+    assert_eq!(
+        Hull::try_new(&points).unwrap_err(),
+        HullError::NonFinite { index: 5, coordinate: 2 }
+    );
+    // Rank 0, 1, 2 in 3-D.
+    let same = vec![[1.5, -2.0, 3.0]; 10];
+    assert_eq!(
+        Hull::try_new(&same).unwrap_err(),
+        HullError::AffinelyDependent { rank: 0, dimension: 3 }
+    );
+    let line: Vec<[f64; 3]> = (0..10).map(|i| [i as f64 * 0.1, 2.0 * i as f64 * 0.1, 3.0]).collect();
+    assert_eq!(
+        Hull::try_new(&line).unwrap_err(),
+        HullError::AffinelyDependent { rank: 1, dimension: 3 }
+    );
+    let plane: Vec<[f64; 3]> = (0..30)
+        .map(|i| {
+            let (x, y) = ((i % 6) as f64 * 0.3, (i / 6) as f64 * 0.7);
+            [x, y, 0.25 * x - 0.5 * y + 1.0]
+        })
+        .collect();
+    assert_eq!(
+        Hull::try_new(&plane).unwrap_err(),
+        HullError::AffinelyDependent { rank: 2, dimension: 3 }
+    );
+    // A 5-D set lying in a 4-D hyperplane.
+    let flat: Vec<[f64; 5]> = (0..40)
+        .map(|i| {
+            let t = i as f64;
+            [t.sin(), t.cos(), (2.0 * t).sin(), (3.0 * t).cos(), 0.0]
+        })
+        .collect();
+    assert_eq!(
+        Hull::try_new(&flat).unwrap_err(),
+        HullError::AffinelyDependent { rank: 4, dimension: 5 }
+    );
+    // Messages say what and where.
+    let message = HullError::NonFinite { index: 5, coordinate: 2 }.to_string();
+    assert!(message.contains("point 5") && message.contains("coordinate 2"), "{message}");
+}
+
+#[test]
+fn huge_and_tiny_coordinates_scale_exactly() {
+    fn run<const D: usize>() {
+        let base = pqhull::rbox::generate::<D>(&pqhull::rbox::Family::SphereSurface, 60, 7);
+        let reference = Hull::try_new(&base).unwrap();
+        for factor in [1e-200, 1e-30, 1e30, 1e200] {
+            let scaled: Vec<[f64; D]> = base.iter().map(|p| p.map(|x| x * factor)).collect();
+            let hull = Hull::try_new(&scaled).unwrap();
+            hull.check().unwrap();
+            assert_eq!(hull.vertex_indices(), reference.vertex_indices(), "factor {factor}");
+            let expected = reference.volume() * factor.powi(D as i32);
+            if expected.is_normal() {
+                assert!((hull.volume() / expected - 1.0).abs() < 1e-9, "factor {factor}");
+            }
+        }
+    }
+    run::<2>();
+    run::<3>();
+    run::<4>();
+}
+
+#[test]
+fn nearly_coincident_points_and_one_ulp_moves() {
+    // A square whose edge midpoints are moved in or out by one ulp: exactly decided.
+    let mut points = vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+    points.push([0.5, f64::next_down(0.0)]); // one ulp below the bottom edge: a vertex
+    points.push([f64::next_down(1.0), 0.5]); // one ulp inside the right edge: not a vertex
+    points.push([0.5, 1.0]); // on the top edge: not a vertex
+    let hull = Hull::try_new(&points).unwrap();
+    hull.check().unwrap();
+    assert_eq!(hull.vertex_indices(), vec![0, 1, 2, 3, 4]);
+}
+
+#[test]
+fn closest_to_origin_outside_and_on_boundary() {
+    // Unit cube [0,1]^3: from (2, 0.5, 0.5) the distance is 1, from (2, 2, 0.5) it is √2 (edge),
+    // from (2, 2, 2) it is √3 (corner) — the facet-plane rule would give 1 in every case.
+    let points = cube::<3>();
+    for (q, d) in [
+        ([2.0, 0.5, 0.5], 1.0),
+        ([2.0, 2.0, 0.5], 2f64.sqrt()),
+        ([2.0, 2.0, 2.0], 3f64.sqrt()),
+        ([1.0, 0.5, 0.5], 0.0),
+        ([1.0, 1.0, 1.0], 0.0),
+    ] {
+        let (partial, r) = Hull::try_with_strategy(&points, ClosestToOrigin::towards(q)).unwrap();
+        partial.check().unwrap();
+        assert!((r.signed_distance + d).abs() < 1e-15, "q={q:?}: {}", r.signed_distance);
+        let gap: f64 = r
+            .nearest_point
+            .iter()
+            .zip(&q)
+            .map(|(a, b)| (a - b) * (a - b))
+            .sum::<f64>()
+            .sqrt();
+        assert!((gap - d).abs() < 1e-15);
+    }
+}
+
+#[test]
+fn partial_hull_does_less_work_on_a_sphere() {
+    let points = pqhull::rbox::generate::<6>(&pqhull::rbox::Family::SphereSurface, 400, 3);
+    let full = Hull::try_new(&points).unwrap();
+    let (_, r) = Hull::try_with_strategy(&points, ClosestToOrigin::new()).unwrap();
+    assert!(r.stats.facets_created * 5 < full.stats().facets_created, "{:?} vs {:?}", r.stats, full.stats());
+    assert!(r.stats.points_processed < full.stats().points_processed);
+}
