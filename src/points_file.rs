@@ -1,1 +1,422 @@
-//! stub
+//! Reading point sets from text: one point per line.
+//!
+//! The format, as written by hand, by spreadsheets and by Qhull's `rbox` (without its header):
+//!
+//! * one point per line; its coordinates are separated by commas and/or whitespace
+//!   (`1.5, -2, 3e-4`, `1.5 -2 3e-4` and `1.5,-2 , 3e-4` are the same point);
+//! * `#` starts a comment, on its own line or after a point;
+//! * blank lines (and comment-only lines) are ignored; `\n` and `\r\n` line endings both work;
+//! * the dimension is the number of coordinates on the first data row; every other row must have
+//!   as many;
+//! * numbers are Rust `f64` literals (`1`, `-0.5`, `.5`, `1e-3`, `+2`); `nan`, `inf` and numbers
+//!   that overflow to infinity are rejected.
+//!
+//! Every error names the (1-based) line it was found on.
+//!
+//! ```
+//! use pqhull::points_file::parse_points;
+//!
+//! let table = parse_points("# unit square\n0 0\n1, 0\n1 1  # top right\n\n0,1\n").unwrap();
+//! assert_eq!(table.dimension(), 2);
+//! assert_eq!(table.len(), 4);
+//! assert_eq!(table.row(2), &[1.0, 1.0]);
+//! assert_eq!(table.line(2), 4);
+//! assert_eq!(table.to_arrays::<2>().unwrap()[3], [0.0, 1.0]);
+//!
+//! let err = parse_points("0 0 0\n1 1\n").unwrap_err();
+//! assert_eq!(err.to_string(), "line 2: expected 3 coordinates (from line 1), found 2");
+//! ```
+
+use std::fmt;
+use std::str::FromStr;
+
+/// A parsed point set: `len()` rows of `dimension()` coordinates, row-major.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PointTable {
+    dimension: usize,
+    coords: Vec<f64>,
+    lines: Vec<usize>,
+}
+
+impl PointTable {
+    /// Number of coordinates of each point (at least 1).
+    pub fn dimension(&self) -> usize {
+        self.dimension
+    }
+
+    /// Number of points.
+    pub fn len(&self) -> usize {
+        self.lines.len()
+    }
+
+    /// Whether there are no points (never true for a table returned by [`parse_points`]).
+    pub fn is_empty(&self) -> bool {
+        self.lines.is_empty()
+    }
+
+    /// All coordinates, row-major: point `i` is `coords()[i * dimension() .. (i + 1) * dimension()]`.
+    pub fn coords(&self) -> &[f64] {
+        &self.coords
+    }
+
+    /// The coordinates of point `i`.
+    ///
+    /// # Panics
+    ///
+    /// If `i >= len()`.
+    pub fn row(&self, i: usize) -> &[f64] {
+        &self.coords[i * self.dimension..(i + 1) * self.dimension]
+    }
+
+    /// The points in order.
+    pub fn rows(&self) -> impl ExactSizeIterator<Item = &[f64]> + '_ {
+        self.coords.chunks_exact(self.dimension)
+    }
+
+    /// The (1-based) source line of point `i`.
+    ///
+    /// # Panics
+    ///
+    /// If `i >= len()`.
+    pub fn line(&self, i: usize) -> usize {
+        self.lines[i]
+    }
+
+    /// The source line of every point.
+    pub fn lines(&self) -> &[usize] {
+        &self.lines
+    }
+
+    /// The points as fixed-size arrays, or `None` when `D` is not [`PointTable::dimension`].
+    pub fn to_arrays<const D: usize>(&self) -> Option<Vec<[f64; D]>> {
+        (D == self.dimension).then(|| {
+            self.rows()
+                .map(|row| std::array::from_fn(|i| row[i]))
+                .collect()
+        })
+    }
+}
+
+/// Why a points file could not be read. Every variant but [`ParseError::Empty`] carries the
+/// 1-based line number.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ParseError {
+    /// The input has no data rows (only blank lines and comments, or nothing).
+    Empty,
+    /// A row has a different number of coordinates than the first one.
+    WrongLength {
+        /// The offending line.
+        line: usize,
+        /// The number of coordinates of the first row.
+        expected: usize,
+        /// The line of the first row.
+        first_line: usize,
+        /// The number of coordinates on this line.
+        found: usize,
+    },
+    /// A field between commas is empty (`1,,2` or a trailing comma).
+    EmptyField {
+        /// The offending line.
+        line: usize,
+        /// 1-based position of the empty field on the line.
+        column: usize,
+    },
+    /// A token is not a number.
+    NotANumber {
+        /// The offending line.
+        line: usize,
+        /// 1-based coordinate position of the token on the line.
+        column: usize,
+        /// The token as written.
+        token: String,
+    },
+    /// A coordinate is NaN or infinite (written so, or overflowing `f64`).
+    NonFinite {
+        /// The offending line.
+        line: usize,
+        /// 1-based coordinate position on the line.
+        column: usize,
+        /// The token as written.
+        token: String,
+    },
+}
+
+impl ParseError {
+    /// The 1-based line of the error (`None` for [`ParseError::Empty`]).
+    pub fn line(&self) -> Option<usize> {
+        match self {
+            ParseError::Empty => None,
+            ParseError::WrongLength { line, .. }
+            | ParseError::EmptyField { line, .. }
+            | ParseError::NotANumber { line, .. }
+            | ParseError::NonFinite { line, .. } => Some(*line),
+        }
+    }
+}
+
+impl fmt::Display for ParseError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ParseError::Empty => write!(f, "no points: the input has no data rows"),
+            ParseError::WrongLength {
+                line,
+                expected,
+                first_line,
+                found,
+            } => write!(
+                f,
+                "line {line}: expected {expected} coordinates (from line {first_line}), found {found}"
+            ),
+            ParseError::EmptyField { line, column } => {
+                write!(
+                    f,
+                    "line {line}: field {column} is empty (two commas in a row?)"
+                )
+            }
+            ParseError::NotANumber {
+                line,
+                column,
+                token,
+            } => write!(
+                f,
+                "line {line}: coordinate {column} '{token}' is not a number"
+            ),
+            ParseError::NonFinite {
+                line,
+                column,
+                token,
+            } => write!(
+                f,
+                "line {line}: coordinate {column} '{token}' is not finite (NaN or infinite)"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for ParseError {}
+
+/// Parses a points file (see the [module documentation](self) for the format).
+pub fn parse_points(text: &str) -> Result<PointTable, ParseError> {
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let mut table = PointTable {
+        dimension: 0,
+        coords: Vec::new(),
+        lines: Vec::new(),
+    };
+    let mut first_line = 0;
+    let mut row = Vec::new();
+    for (index, raw) in text.lines().enumerate() {
+        let line = index + 1;
+        let data = raw.split_once('#').map_or(raw, |(data, _)| data).trim();
+        if data.is_empty() {
+            continue;
+        }
+        row.clear();
+        let mut column = 0;
+        for field in data.split(',') {
+            let field = field.trim();
+            if field.is_empty() {
+                return Err(ParseError::EmptyField {
+                    line,
+                    column: column + 1,
+                });
+            }
+            for token in field.split_whitespace() {
+                column += 1;
+                let value: f64 = token.parse().map_err(|_| ParseError::NotANumber {
+                    line,
+                    column,
+                    token: token.to_string(),
+                })?;
+                if !value.is_finite() {
+                    return Err(ParseError::NonFinite {
+                        line,
+                        column,
+                        token: token.to_string(),
+                    });
+                }
+                row.push(value);
+            }
+        }
+        if table.lines.is_empty() {
+            table.dimension = row.len();
+            first_line = line;
+        } else if row.len() != table.dimension {
+            return Err(ParseError::WrongLength {
+                line,
+                expected: table.dimension,
+                first_line,
+                found: row.len(),
+            });
+        }
+        table.coords.extend_from_slice(&row);
+        table.lines.push(line);
+    }
+    if table.lines.is_empty() {
+        return Err(ParseError::Empty);
+    }
+    Ok(table)
+}
+
+impl FromStr for PointTable {
+    type Err = ParseError;
+
+    /// Same as [`parse_points`].
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        parse_points(s)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn separators_comments_and_blank_lines() {
+        let text = "\
+# header comment
+   # indented comment
+
+1 2 3
+4,5,6   # trailing comment
+ 7 ,\t8 , 9
+10\t11    12
+
+-1.5e2, +.5 , 3.
+";
+        let t = parse_points(text).unwrap();
+        assert_eq!(t.dimension(), 3);
+        assert_eq!(t.len(), 5);
+        assert!(!t.is_empty());
+        assert_eq!(t.lines(), &[4, 5, 6, 7, 9]);
+        assert_eq!(t.row(1), &[4.0, 5.0, 6.0]);
+        assert_eq!(t.row(2), &[7.0, 8.0, 9.0]);
+        assert_eq!(t.row(4), &[-150.0, 0.5, 3.0]);
+        assert_eq!(t.coords().len(), 15);
+        assert_eq!(t.rows().len(), 5);
+        assert_eq!(t.line(3), 7);
+    }
+
+    #[test]
+    fn mixed_comma_and_space_on_one_line() {
+        let t = parse_points("1 2, 3\n").unwrap();
+        assert_eq!(t.row(0), &[1.0, 2.0, 3.0]);
+    }
+
+    #[test]
+    fn crlf_and_bom_and_no_final_newline() {
+        let t = parse_points("\u{feff}1,2\r\n# c\r\n3 4\r\n\r\n5 6").unwrap();
+        assert_eq!(t.coords(), &[1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
+        assert_eq!(t.lines(), &[1, 3, 5]);
+        // A lone CR (old Mac) at the end of a row is whitespace.
+        let t = parse_points("1 2\r").unwrap();
+        assert_eq!(t.coords(), &[1.0, 2.0]);
+    }
+
+    #[test]
+    fn to_arrays_checks_the_dimension() {
+        let t: PointTable = "1 2\n3 4\n".parse().unwrap();
+        assert_eq!(t.to_arrays::<2>(), Some(vec![[1.0, 2.0], [3.0, 4.0]]));
+        assert_eq!(t.to_arrays::<3>(), None);
+    }
+
+    #[test]
+    fn one_dimensional_rows_are_fine_here() {
+        let t = parse_points("1\n2\n").unwrap();
+        assert_eq!(t.dimension(), 1);
+    }
+
+    #[test]
+    fn wrong_length_names_both_lines() {
+        let e = parse_points("# c\n\n1 2 3\n4 5 6\n\n7 8\n").unwrap_err();
+        assert_eq!(
+            e,
+            ParseError::WrongLength {
+                line: 6,
+                expected: 3,
+                first_line: 3,
+                found: 2
+            }
+        );
+        assert_eq!(e.line(), Some(6));
+        assert_eq!(
+            e.to_string(),
+            "line 6: expected 3 coordinates (from line 3), found 2"
+        );
+        let e = parse_points("1 2\n3 4 5\n").unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "line 2: expected 2 coordinates (from line 1), found 3"
+        );
+    }
+
+    #[test]
+    fn not_a_number_names_line_and_token() {
+        let e = parse_points("1 2\n3 abc\n").unwrap_err();
+        assert_eq!(
+            e,
+            ParseError::NotANumber {
+                line: 2,
+                column: 2,
+                token: "abc".into()
+            }
+        );
+        assert_eq!(e.to_string(), "line 2: coordinate 2 'abc' is not a number");
+        // Semicolons are not separators.
+        let e = parse_points("1;2\n").unwrap_err();
+        assert!(e.to_string().contains("'1;2'"), "{e}");
+        // Hex and thousands separators are not numbers.
+        assert!(matches!(
+            parse_points("0x10 1\n"),
+            Err(ParseError::NotANumber { .. })
+        ));
+    }
+
+    #[test]
+    fn non_finite_values_are_rejected() {
+        for (text, token) in [
+            ("1 2\n3 nan\n", "nan"),
+            ("1 2\n3 NaN\n", "NaN"),
+            ("1 2\n3 inf\n", "inf"),
+            ("1 2\n3 -infinity\n", "-infinity"),
+            ("1 2\n3 1e400\n", "1e400"),
+        ] {
+            let e = parse_points(text).unwrap_err();
+            assert_eq!(
+                e,
+                ParseError::NonFinite {
+                    line: 2,
+                    column: 2,
+                    token: token.into()
+                }
+            );
+            assert!(e.to_string().starts_with("line 2: "), "{e}");
+        }
+    }
+
+    #[test]
+    fn empty_fields_are_rejected() {
+        let e = parse_points("1,,2\n").unwrap_err();
+        assert_eq!(e, ParseError::EmptyField { line: 1, column: 2 });
+        assert_eq!(e.line(), Some(1));
+        let e = parse_points("0 0\n1,2,\n").unwrap_err();
+        assert_eq!(e, ParseError::EmptyField { line: 2, column: 3 });
+        assert!(e.to_string().starts_with("line 2: "));
+    }
+
+    #[test]
+    fn empty_input_is_an_error() {
+        for text in ["", "\n\n", "# only a comment\n   \n# another\r\n"] {
+            let e = parse_points(text).unwrap_err();
+            assert_eq!(e, ParseError::Empty);
+            assert_eq!(e.line(), None);
+            assert_eq!(e.to_string(), "no points: the input has no data rows");
+        }
+    }
+
+    #[test]
+    fn error_trait_object() {
+        let e: Box<dyn std::error::Error> = Box::new(ParseError::Empty);
+        assert!(!e.to_string().is_empty());
+    }
+}

@@ -150,8 +150,9 @@ fn errors_name_what_is_wrong() {
     );
     let plane: Vec<[f64; 3]> = (0..30)
         .map(|i| {
-            let (x, y) = ((i % 6) as f64 * 0.3, (i / 6) as f64 * 0.7);
-            [x, y, 0.25 * x - 0.5 * y + 1.0]
+            // Dyadic coordinates: the plane z = x − 2y + 1 holds them exactly.
+            let (x, y) = ((i % 6) as f64 * 0.25, (i / 6) as f64 * 0.5);
+            [x, y, x - 2.0 * y + 1.0]
         })
         .collect();
     assert_eq!(
@@ -240,4 +241,22 @@ fn partial_hull_does_less_work_on_a_sphere() {
     let (_, r) = Hull::try_with_strategy(&points, ClosestToOrigin::new()).unwrap();
     assert!(r.stats.facets_created * 5 < full.stats().facets_created, "{:?} vs {:?}", r.stats, full.stats());
     assert!(r.stats.points_processed < full.stats().points_processed);
+}
+
+#[test]
+fn sliver_facets_get_finite_normals() {
+    // Nearly (not exactly) coplanar: rounding of 0.25x − 0.5y + 1 lifts some points by an ulp, so
+    // the hull is a genuine sliver whose facets have cofactors that cancel to zero in floating
+    // point. Their normals must still be finite unit vectors.
+    let points: Vec<[f64; 3]> = (0..30)
+        .map(|i| {
+            let (x, y) = ((i % 6) as f64 * 0.3, (i / 6) as f64 * 0.7);
+            [x, y, 0.25 * x - 0.5 * y + 1.0]
+        })
+        .collect();
+    let hull = Hull::try_new(&points).unwrap();
+    hull.check().unwrap();
+    for (_, f) in hull.facets() {
+        assert!(f.normal().iter().all(|c| c.is_finite()) && f.offset().is_finite());
+    }
 }

@@ -32,7 +32,7 @@ fn size_for(d: usize) -> usize {
 }
 
 fn families() -> Vec<Family> {
-    rbox::Family::all()
+    rbox::Family::ALL.to_vec()
 }
 
 /// Volume by the divergence theorem with Gram-determinant facet areas — shares no code with

@@ -1,1 +1,78 @@
-fn main() {}
+//! `pqh`: the pqhull command-line tool.
+//!
+//! Parsing, I/O and output only; every computation is a call into the `pqhull` library.
+
+mod error;
+mod hull_cmd;
+mod input;
+
+use clap::{Parser, Subcommand};
+use error::CliError;
+use std::process::ExitCode;
+
+const EXIT_STATUS_HELP: &str = "\
+Exit status:
+  0  success
+  1  the points admit no hull (too few, or affinely dependent: all on one line, plane, ...)
+  2  usage or input error (bad option, unreadable file, malformed points file, unsupported
+     dimension)
+
+Errors are reported on stderr as one line starting with 'pqh: '.";
+
+/// Exact convex hulls and partial hulls in 2 to 8 dimensions.
+#[derive(Debug, Parser)]
+#[command(
+    name = "pqh",
+    version,
+    about = "Exact convex hulls and partial hulls (QuickHull) in 2 to 8 dimensions",
+    long_about = "\
+pqh builds convex hulls of point sets in 2 to 8 dimensions with an exact QuickHull engine
+(pqhull). Besides the full hull it can grow a *partial* hull toward a query point and stop as soon
+as the facet nearest that point is certain: the signed distance from the point to the hull
+boundary, which is the Ferrari-Canny grasp quality metric when the points are contact wrenches
+and the query is the origin.
+
+Points files: one point per line, coordinates separated by commas and/or whitespace, '#' starts
+a comment; the dimension is the number of coordinates on the first row.",
+    after_help = EXIT_STATUS_HELP,
+    propagate_version = true
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Convex hull of a points file (full, or partial toward a query point)
+    #[command(long_about = hull_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
+    Hull(hull_cmd::HullArgs),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Hull(args) => hull_cmd::run(&args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(CliError::Output(e)) if e.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+        Err(err) => {
+            // One line, whatever the message contains.
+            let message = err.to_string().replace(['\n', '\r'], " ");
+            eprintln!("pqh: {message}");
+            ExitCode::from(err.exit_code())
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Cli;
+    use clap::CommandFactory;
+
+    #[test]
+    fn cli_definition_is_consistent() {
+        Cli::command().debug_assert();
+    }
+}

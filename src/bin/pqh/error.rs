@@ -1,0 +1,41 @@
+//! The CLI's error type and exit codes.
+
+use std::fmt;
+
+/// Everything that makes `pqh` fail. Each is reported as one `pqh: ` line on stderr.
+#[derive(Debug)]
+pub enum CliError {
+    /// Bad option values (exit 2).
+    Usage(String),
+    /// The input could not be read or parsed, or is unsupported (exit 2).
+    Input(String),
+    /// The points admit no hull (exit 1).
+    Geometry(String),
+    /// Writing the output failed (exit 1; a closed pipe is not reported).
+    Output(std::io::Error),
+}
+
+impl CliError {
+    /// The process exit status for this error.
+    pub fn exit_code(&self) -> u8 {
+        match self {
+            CliError::Usage(_) | CliError::Input(_) => 2,
+            CliError::Geometry(_) | CliError::Output(_) => 1,
+        }
+    }
+}
+
+impl fmt::Display for CliError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            CliError::Usage(m) | CliError::Input(m) | CliError::Geometry(m) => f.write_str(m),
+            CliError::Output(e) => write!(f, "cannot write output: {e}"),
+        }
+    }
+}
+
+impl From<std::io::Error> for CliError {
+    fn from(e: std::io::Error) -> Self {
+        CliError::Output(e)
+    }
+}

@@ -1,0 +1,310 @@
+//! Exact (slow-path) arithmetic: the sign of an orientation determinant and the exact affine rank.
+//!
+//! Every finite `f64` is an integer times a power of two, so a set of coordinates can be scaled by a
+//! single power of two into integers without any rounding. Determinants of those integers are then
+//! computed exactly: in `i128` with checked arithmetic when the numbers are small (the common case
+//! for lattice-like degenerate input, which is exactly when the filter fails), otherwise in
+//! `BigInt`. Both use fraction-free Bareiss elimination, whose divisions are exact.
+
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::{One, Signed, Zero};
+
+use super::Sign;
+
+/// Coordinates inside `[2^-EXP_LIMIT, 2^EXP_LIMIT]` (in absolute value) or zero are safe for the
+/// adaptive expansion arithmetic of `robust` (no underflow nor overflow can occur in its
+/// intermediate expansions for polynomials of degree ≤ 3; see [`robust_safe`]).
+const EXP_LIMIT: i32 = 250;
+
+/// Whether every coordinate is zero or has magnitude in `[2^-250, 2^250]`.
+///
+/// Shewchuk's expansions are exact only without underflow and overflow. Every coordinate in that
+/// range is an integer multiple of `2^-302` (its ulp), so every term of the degree-3 polynomial, and
+/// every roundoff tail the expansions produce, is a multiple of `2^-906 > 2^-1074` (no underflow),
+/// and all magnitudes stay below `2^(3·251 + a few)` (no overflow).
+fn robust_safe(points: &[&[f64]]) -> bool {
+    let lo = 2f64.powi(-EXP_LIMIT);
+    let hi = 2f64.powi(EXP_LIMIT);
+    points
+        .iter()
+        .flat_map(|p| p.iter())
+        .all(|&x| x == 0.0 || (x.abs() >= lo && x.abs() <= hi))
+}
+
+/// Converts a finite `f64` into `(m, e)` with `x = m · 2^e`, `m` odd (or `m = 0`).
+///
+/// # Panics
+/// If `x` is not finite.
+fn decompose(x: f64) -> (i64, i32) {
+    assert!(
+        x.is_finite(),
+        "pqhull::predicates: non-finite coordinate {x} given to an exact predicate"
+    );
+    if x == 0.0 {
+        return (0, 0);
+    }
+    let bits = x.to_bits();
+    let exp_field = ((bits >> 52) & 0x7ff) as i32;
+    let frac = (bits & ((1u64 << 52) - 1)) as i64;
+    let (mut m, mut e) = if exp_field == 0 {
+        (frac, -1074)
+    } else {
+        (frac | (1i64 << 52), exp_field - 1075)
+    };
+    let tz = m.trailing_zeros();
+    m >>= tz;
+    e += tz as i32;
+    if bits >> 63 == 1 {
+        m = -m;
+    }
+    (m, e)
+}
+
+/// The decomposed coordinates of a set of points, all to be scaled to the common exponent `emin`.
+struct Scaled {
+    /// `(mantissa, exponent)` for every coordinate, point-major.
+    parts: Vec<(i64, i32)>,
+    /// The smallest exponent among the nonzero coordinates (0 if all are zero).
+    emin: i32,
+    /// The largest `exponent − emin` among the nonzero coordinates.
+    spread: i32,
+}
+
+fn scale(points: &[&[f64]]) -> Scaled {
+    let parts: Vec<(i64, i32)> = points
+        .iter()
+        .flat_map(|p| p.iter())
+        .map(|&x| decompose(x))
+        .collect();
+    let nonzero = || parts.iter().filter(|(m, _)| *m != 0);
+    let emin = nonzero().map(|&(_, e)| e).min().unwrap_or(0);
+    let emax = nonzero().map(|&(_, e)| e).max().unwrap_or(0);
+    Scaled {
+        parts,
+        emin,
+        spread: emax - emin,
+    }
+}
+
+/// Exact sign of `det[v1 − v0; …; v(D−1) − v0; p − v0]`, using `robust` for D = 2, 3 when the
+/// coordinates are in its safe range, integer Bareiss elimination otherwise.
+pub(crate) fn orientation<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> Sign {
+    if D == 2 || D == 3 {
+        let mut all: Vec<&[f64]> = vertices.iter().map(|v| &v[..]).collect();
+        all.push(&p[..]);
+        for x in all.iter().flat_map(|q| q.iter()) {
+            assert!(
+                x.is_finite(),
+                "pqhull::predicates: non-finite coordinate {x} given to orientation"
+            );
+        }
+        if robust_safe(&all) {
+            return if D == 2 {
+                orientation_robust2(&all)
+            } else {
+                orientation_robust3(&all)
+            };
+        }
+    }
+    orientation_bareiss(vertices, p)
+}
+
+/// `robust::orient2d(a, b, c)` is `det[a − c; b − c] = det[b − a; c − a]` (translate by −a, then
+/// subtract row 1 from row 2), exactly our determinant with `(a, b, c) = (v0, v1, p)`.
+fn orientation_robust2(pts: &[&[f64]]) -> Sign {
+    let c = |q: &[f64]| robust::Coord { x: q[0], y: q[1] };
+    sign_of(robust::orient2d(c(pts[0]), c(pts[1]), c(pts[2])))
+}
+
+/// `robust::orient3d(a, b, c, d)` is `det[a − d; b − d; c − d]`. With `x = a − d`:
+/// `det[x; (b − a) + x; (c − a) + x] = det[x; b − a; c − a] = det[b − a; c − a; x]` (a cyclic,
+/// hence even, row permutation) `= −det[b − a; c − a; d − a]`. So our determinant with
+/// `(a, b, c, d) = (v0, v1, v2, p)` is the *negated* `orient3d`.
+fn orientation_robust3(pts: &[&[f64]]) -> Sign {
+    let c = |q: &[f64]| robust::Coord3D {
+        x: q[0],
+        y: q[1],
+        z: q[2],
+    };
+    let s = robust::orient3d(c(pts[0]), c(pts[1]), c(pts[2]), c(pts[3]));
+    sign_of(-s)
+}
+
+fn sign_of(x: f64) -> Sign {
+    if x > 0.0 {
+        Sign::Positive
+    } else if x < 0.0 {
+        Sign::Negative
+    } else {
+        Sign::Zero
+    }
+}
+
+fn sign_of_int<T: Signed>(x: &T) -> Sign {
+    if x.is_positive() {
+        Sign::Positive
+    } else if x.is_negative() {
+        Sign::Negative
+    } else {
+        Sign::Zero
+    }
+}
+
+/// The exact integer path, valid for every D (also used to cross-check `robust` in tests).
+pub(crate) fn orientation_bareiss<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> Sign {
+    let mut all: Vec<&[f64]> = vertices.iter().map(|v| &v[..]).collect();
+    all.push(&p[..]);
+    let s = scale(&all);
+    let (v0, rest) = s.parts.split_at(D);
+    let rows = rest.chunks_exact(D);
+
+    // Small case: every scaled coordinate fits in i128 with room for one subtraction.
+    if s.spread <= 70 {
+        let int = |(m, e): (i64, i32)| -> i128 {
+            if m == 0 {
+                0
+            } else {
+                i128::from(m) << (e - s.emin)
+            }
+        };
+        let matrix: Vec<Vec<i128>> = rows
+            .clone()
+            .map(|r| (0..D).map(|j| int(r[j]) - int(v0[j])).collect())
+            .collect();
+        if let Some(sign) = bareiss_i128(matrix) {
+            return sign;
+        }
+    }
+    let int = |(m, e): (i64, i32)| -> BigInt {
+        if m == 0 {
+            BigInt::zero()
+        } else {
+            BigInt::from(m) << ((e - s.emin) as usize)
+        }
+    };
+    let matrix: Vec<Vec<BigInt>> = rows
+        .map(|r| (0..D).map(|j| int(r[j]) - int(v0[j])).collect())
+        .collect();
+    bareiss_big(matrix)
+}
+
+/// Bareiss elimination in checked `i128`; `None` on overflow.
+///
+/// After step k every remaining entry is a (k+1)×(k+1) minor of the input, and the division by the
+/// previous pivot is exact (Sylvester's identity), so integer division loses nothing.
+fn bareiss_i128(mut a: Vec<Vec<i128>>) -> Option<Sign> {
+    let n = a.len();
+    let mut negate = false;
+    let mut prev: i128 = 1;
+    for k in 0..n {
+        if a[k][k] == 0 {
+            let r = (k + 1..n).find(|&r| a[r][k] != 0);
+            match r {
+                Some(r) => {
+                    a.swap(k, r);
+                    negate = !negate;
+                }
+                None => return Some(Sign::Zero),
+            }
+        }
+        for i in k + 1..n {
+            for j in k + 1..n {
+                let x = a[i][j].checked_mul(a[k][k])?;
+                let y = a[i][k].checked_mul(a[k][j])?;
+                a[i][j] = x.checked_sub(y)? / prev;
+            }
+        }
+        prev = a[k][k];
+    }
+    let s = if n == 0 {
+        Sign::Positive
+    } else {
+        sign_of_int(&a[n - 1][n - 1])
+    };
+    Some(if negate { flip(s) } else { s })
+}
+
+/// Bareiss elimination in `BigInt` (see [`bareiss_i128`]).
+fn bareiss_big(mut a: Vec<Vec<BigInt>>) -> Sign {
+    let n = a.len();
+    let mut negate = false;
+    let mut prev = BigInt::one();
+    for k in 0..n {
+        if a[k][k].is_zero() {
+            match (k + 1..n).find(|&r| !a[r][k].is_zero()) {
+                Some(r) => {
+                    a.swap(k, r);
+                    negate = !negate;
+                }
+                None => return Sign::Zero,
+            }
+        }
+        for i in k + 1..n {
+            for j in k + 1..n {
+                let x = &a[i][j] * &a[k][k] - &a[i][k] * &a[k][j];
+                a[i][j] = x / &prev;
+            }
+        }
+        prev = a[k][k].clone();
+    }
+    let s = if n == 0 {
+        Sign::Positive
+    } else {
+        sign_of_int(&a[n - 1][n - 1])
+    };
+    if negate { flip(s) } else { s }
+}
+
+pub(crate) fn flip(s: Sign) -> Sign {
+    match s {
+        Sign::Negative => Sign::Positive,
+        Sign::Zero => Sign::Zero,
+        Sign::Positive => Sign::Negative,
+    }
+}
+
+/// Exact rational conversion of a finite `f64`.
+///
+/// # Panics
+/// If `x` is not finite.
+pub(crate) fn rational(x: f64) -> BigRational {
+    BigRational::from_float(x).unwrap_or_else(|| {
+        panic!("pqhull::predicates: non-finite coordinate {x} given to an exact predicate")
+    })
+}
+
+/// Greedy exact affine basis: see [`super::affinely_independent_subset`].
+pub(crate) fn affinely_independent_subset<const D: usize>(points: &[[f64; D]]) -> Vec<usize> {
+    let Some(first) = points.first() else {
+        return Vec::new();
+    };
+    let origin: Vec<BigRational> = first.iter().map(|&x| rational(x)).collect();
+    let mut kept = vec![0];
+    // Row-echelon basis of the kept difference vectors: (pivot column, row), where each row is zero
+    // in the pivot columns of the rows before it.
+    let mut basis: Vec<(usize, Vec<BigRational>)> = Vec::with_capacity(D);
+    for (i, q) in points.iter().enumerate().skip(1) {
+        if basis.len() == D {
+            break; // Full rank: no later point can raise it.
+        }
+        let mut v: Vec<BigRational> = q
+            .iter()
+            .zip(&origin)
+            .map(|(&x, o)| rational(x) - o)
+            .collect();
+        for (c, row) in &basis {
+            if !v[*c].is_zero() {
+                let f = &v[*c] / &row[*c];
+                for (vj, rj) in v.iter_mut().zip(row).skip(*c) {
+                    *vj -= &f * rj;
+                }
+            }
+        }
+        if let Some(c) = v.iter().position(|x| !x.is_zero()) {
+            kept.push(i);
+            basis.push((c, v));
+        }
+    }
+    kept
+}

@@ -1,0 +1,186 @@
+//! The floating-point filter: a cached hyperplane with a certified error bound.
+
+use super::{Sign, exact};
+
+/// Unit roundoff of `f64` (round to nearest).
+const U: f64 = f64::EPSILON / 2.0;
+
+/// Absolute slack covering every underflow, valid when all coordinates are in `[−1, 1]`.
+///
+/// An underflowing product or sum commits an *absolute* error of at most `2^-1075` instead of a
+/// relative one. With coordinates in `[−1, 1]` every difference is at most 2 in magnitude, so such
+/// an error is amplified by at most `2` per Laplace level and summed over at most `D ≤ 8` terms per
+/// level: at most `(2·8)^9 · 2^-1075 < 2^-1030` in the end. `2^-1000` is a generous cover, and is
+/// itself far below any meaningful determinant.
+const UNDERFLOW_SLACK: f64 = 9.332636185032189e-302; // 2^-1000
+
+/// Relative inflation covering the roundings of the bound computation itself (at most ~30
+/// operations on non-negative numbers, each with relative error `u = 2^-53`: `30u < 2^-40`).
+const BOUND_INFLATION: f64 = 1.0 + 1.0 / (1u64 << 40) as f64;
+
+/// The hyperplane through D points, cached for fast exact side tests.
+///
+/// Stores the base vertex `v0`, the cofactors `C_j` of the last row of
+/// `[v1 − v0; …; v(D−1) − v0; ·]`, and per-coordinate error coefficients, so that
+/// `Σ_j C_j·(p_j − v0_j)` approximates `det[v1 − v0; …; v(D−1) − v0; p − v0]` with a certified
+/// error bound `Σ_j err_j·|p_j − v0_j|` (see [`FacetPlane::evaluate`]).
+#[derive(Clone, Debug)]
+pub struct FacetPlane<const D: usize> {
+    base: [f64; D],
+    cofactors: [f64; D],
+    error: [f64; D],
+    /// `UNDERFLOW_SLACK` if every vertex coordinate is in `[−1, 1]`, `+∞` otherwise (filter off).
+    slack: f64,
+}
+
+impl<const D: usize> FacetPlane<D> {
+    /// Caches the hyperplane through `vertices` (`vertices[0]` is the base `v0`).
+    ///
+    /// Costs `D·2^(D−1)` multiply-adds (1024 for D = 8) and no allocation: all the
+    /// (D−1)×(D−1) minors are computed at once by a dynamic programme over column subsets.
+    ///
+    /// The error bounds of [`evaluate`](Self::evaluate) are only finite when every vertex coordinate
+    /// is in `[−1, 1]`; otherwise the plane is still usable, but [`side`](Self::side) always takes
+    /// the exact path.
+    ///
+    /// Compile-time error if `D` is 0 or greater than 8.
+    pub fn new(vertices: &[[f64; D]; D]) -> Self {
+        const { assert!(D >= 1 && D <= 8, "FacetPlane supports 1 ≤ D ≤ 8") };
+        let base = vertices[0];
+        let in_range = vertices.iter().flatten().all(|x| x.abs() <= 1.0);
+
+        // minor[S] = det of rows e_1..e_k restricted to the k columns of the bit set S (ascending),
+        // perm[S] the matching permanent of absolute values. Masks are visited in increasing order,
+        // so S \ {j} (a smaller number) is always ready before S.
+        let mut minor = [0.0f64; 256];
+        let mut perm = [0.0f64; 256];
+        minor[0] = 1.0;
+        perm[0] = 1.0;
+        let full = (1usize << D) - 1;
+        for mask in 1..full {
+            let k = mask.count_ones() as usize;
+            if k >= D {
+                continue;
+            }
+            // Row e_k = v_k − v0 (rounded), expanded as the last of the k rows.
+            let row = &vertices[k];
+            // Sign of column position t in S is (−1)^((k−1)+t).
+            let mut negative = (k - 1) % 2 == 1;
+            let mut m = 0.0;
+            let mut q = 0.0;
+            let mut bits = mask;
+            while bits != 0 {
+                let j = bits.trailing_zeros() as usize;
+                bits &= bits - 1;
+                let e = row[j] - base[j];
+                let sub = mask & !(1 << j);
+                let term = e * minor[sub];
+                m = if negative { m - term } else { m + term };
+                q += e.abs() * perm[sub];
+                negative = !negative;
+            }
+            minor[mask] = m;
+            perm[mask] = q;
+        }
+
+        // Error analysis (why these constants are safe; u = 2^-53).
+        // * Entries: ê = fl(v_k − v0) = (v_k − v0)(1 + δ), |δ| ≤ u (a difference that underflows is
+        //   exact). Replacing the exact rows by ê perturbs a (D−1)-minor by at most
+        //   ((1+u)^(D−1) − 1)·P ≈ (D−1)u·P, P the permanent of |ê|.
+        // * Laplace level k (a sum of k products of an entry by a computed (k−1)-minor): the product
+        //   and the recursive summation add at most γ_k = ku/(1−ku) relative to the sum of absolute
+        //   terms, which is bounded by the permanent; errors of the sub-minors are carried over
+        //   weighted by |entry|, i.e. again relative to the permanent. Summing levels 2..D−1 gives at
+        //   most Σ k·u ≈ D²/2·u·P to first order.
+        // * Final dot product Σ Ĉ_j·d̂_j with d̂_j = fl(p_j − v0_j): the relative error of d̂_j (u),
+        //   and the D-term dot product (γ_D) add (D+1)u·|Ĉ_j| per |d_j|, plus second-order terms.
+        // First order: err_j ≈ (D²/2 + D)·u·P_j + (D+1)·u·|C_j|. We take
+        // c_D = 2(D² + 4D + 8) (over four times the first-order coefficient, which absorbs all
+        // second-order terms, the use of computed instead of exact permanents and |d̂| instead of
+        // |d|) and (D+3) for the cofactor term.
+        let d = D as f64;
+        let c_perm = 2.0 * (d * d + 4.0 * d + 8.0) * U;
+        let c_cof = (d + 3.0) * U;
+        let mut cofactors = [0.0; D];
+        let mut error = [0.0; D];
+        for j in 0..D {
+            let sub = full & !(1 << j);
+            let c = if (D - 1 + j) % 2 == 1 {
+                -minor[sub]
+            } else {
+                minor[sub]
+            };
+            cofactors[j] = c;
+            error[j] = c_perm * perm[sub] + c_cof * c.abs();
+        }
+        FacetPlane {
+            base,
+            cofactors,
+            error,
+            slack: if in_range {
+                UNDERFLOW_SLACK
+            } else {
+                f64::INFINITY
+            },
+        }
+    }
+
+    /// Approximate value of `det[v1 − v0; …; v(D−1) − v0; p − v0]` (the determinant whose sign is
+    /// [`orientation`](super::orientation)`(vertices, p)`) and a certified bound on its absolute
+    /// error: `|value − exact| ≤ bound`.
+    ///
+    /// The bound is finite only if every coordinate of `p` and of the vertices is in `[−1, 1]`;
+    /// otherwise (including NaN or infinite `p`) it is `+∞`.
+    #[inline]
+    pub fn evaluate(&self, p: &[f64; D]) -> (f64, f64) {
+        let mut value = 0.0;
+        let mut bound = 0.0;
+        let mut in_range = true;
+        for (((&x, &b), &c), &e) in p
+            .iter()
+            .zip(&self.base)
+            .zip(&self.cofactors)
+            .zip(&self.error)
+        {
+            let d = x - b;
+            value += c * d;
+            bound += e * d.abs();
+            in_range &= x.abs() <= 1.0;
+        }
+        let bound = bound * BOUND_INFLATION + self.slack;
+        (value, if in_range { bound } else { f64::INFINITY })
+    }
+
+    /// The exact sign of [`orientation`](super::orientation)`(vertices, p)`, where `vertices` are
+    /// the points this plane was built from.
+    ///
+    /// Decided by the filter ([`evaluate`](Self::evaluate)) when `|value| > bound`; only otherwise
+    /// is `vertices` called, and the exact predicate run. The closure must return the same
+    /// vertices that were given to [`new`](Self::new), in the same order.
+    ///
+    /// # Panics
+    /// On the exact path, if a coordinate is not finite.
+    #[inline]
+    pub fn side(&self, p: &[f64; D], vertices: impl FnOnce() -> [[f64; D]; D]) -> Sign {
+        let (value, bound) = self.evaluate(p);
+        if value > bound {
+            Sign::Positive
+        } else if -value > bound {
+            Sign::Negative
+        } else {
+            exact::orientation(&vertices(), p)
+        }
+    }
+
+    /// The cofactor vector `C`: `det[v1 − v0; …; v(D−1) − v0; p − v0] = Σ_j C_j·(p_j − v0_j)`
+    /// exactly for the exact cofactors; these are their floating-point approximations. It is an
+    /// unnormalised normal of the hyperplane, pointing to its positive side.
+    pub fn cofactors(&self) -> &[f64; D] {
+        &self.cofactors
+    }
+
+    /// The base vertex `v0` (the first vertex given to [`new`](Self::new)).
+    pub fn base(&self) -> &[f64; D] {
+        &self.base
+    }
+}

@@ -1,0 +1,350 @@
+//! End-to-end tests of the `pqh` binary: documented output and error behaviour.
+
+use serde_json::Value;
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::{Command, Output, Stdio};
+
+const SQUARE: &str = "\
+# the square [-1, 1]^2 and an interior point
+-1 -1
+1, -1
+1 1   # top right
+-1,1
+
+0.2 0.1
+";
+
+/// Runs `pqh` with `args`, feeding `stdin` (empty if `None`).
+fn pqh(args: &[&str], stdin: Option<&str>) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_pqh"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("spawn pqh");
+    let mut input = child.stdin.take().expect("stdin");
+    // pqh may exit (on a usage error) before reading its input: a closed pipe is fine.
+    if let Err(e) = input.write_all(stdin.unwrap_or("").as_bytes()) {
+        assert_eq!(e.kind(), std::io::ErrorKind::BrokenPipe, "write stdin: {e}");
+    }
+    drop(input);
+    child.wait_with_output().expect("wait for pqh")
+}
+
+/// Writes `contents` to a file unique to this test and returns its path.
+fn file(name: &str, contents: &str) -> PathBuf {
+    let path = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-{name}"));
+    std::fs::write(&path, contents).expect("write test input");
+    path
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8(o.stdout.clone()).expect("utf-8 stdout")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8(o.stderr.clone()).expect("utf-8 stderr")
+}
+
+fn json(o: &Output) -> Value {
+    assert!(
+        o.status.success(),
+        "pqh failed: {:?}\n{}",
+        o.status,
+        stderr(o)
+    );
+    serde_json::from_str(&stdout(o)).expect("stdout is one JSON object")
+}
+
+fn usizes(v: &Value) -> Vec<usize> {
+    v.as_array()
+        .expect("array")
+        .iter()
+        .map(|x| x.as_u64().expect("integer") as usize)
+        .collect()
+}
+
+fn floats(v: &Value) -> Vec<f64> {
+    v.as_array()
+        .expect("array")
+        .iter()
+        .map(|x| x.as_f64().expect("number"))
+        .collect()
+}
+
+/// Asserts the run failed with `code`, printing exactly one `pqh: ` line on stderr and nothing on
+/// stdout; returns that line.
+fn one_line_error(o: &Output, code: i32) -> String {
+    let err = stderr(o);
+    assert_eq!(o.status.code(), Some(code), "stderr: {err}");
+    assert!(o.stdout.is_empty(), "stdout: {}", stdout(o));
+    assert_eq!(err.lines().count(), 1, "stderr: {err}");
+    assert!(err.starts_with("pqh: "), "stderr: {err}");
+    err.trim_end().to_string()
+}
+
+#[test]
+fn square_full_hull_json() {
+    let path = file("square.txt", SQUARE);
+    let v = json(&pqh(&["hull", "--json", path.to_str().unwrap()], None));
+    assert_eq!(v["dimension"], 2);
+    assert_eq!(v["points"], 5);
+    assert_eq!(v["strategy"], "full");
+    assert_eq!(usizes(&v["vertices"]), vec![0, 1, 2, 3]);
+    assert!((v["volume"].as_f64().unwrap() - 4.0).abs() < 1e-12);
+    assert!(v.get("origin_distance").is_none());
+    let facets = v["facets"].as_array().unwrap();
+    assert_eq!(facets.len(), 4);
+    for (i, f) in facets.iter().enumerate() {
+        let verts = usizes(&f["vertices"]);
+        assert_eq!(verts.len(), 2);
+        let normal = floats(&f["normal"]);
+        assert!((normal.iter().map(|x| x * x).sum::<f64>() - 1.0).abs() < 1e-12);
+        assert!((f["offset"].as_f64().unwrap() - 1.0).abs() < 1e-12);
+        // Neighbours are positions in the list, and the relation is symmetric.
+        for n in usizes(&f["neighbors"]) {
+            assert!(usizes(&facets[n]["neighbors"]).contains(&i));
+        }
+    }
+    let stats = &v["stats"];
+    for key in [
+        "points_processed",
+        "facets_created",
+        "expansions",
+        "elapsed_us",
+    ] {
+        assert!(stats[key].is_u64(), "stats.{key}: {stats}");
+    }
+    assert!(stats["points_processed"].as_u64().unwrap() >= 4);
+}
+
+#[test]
+fn square_human_output() {
+    let path = file("square-human.txt", SQUARE);
+    let o = pqh(&["hull", path.to_str().unwrap()], None);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.contains("dimension        2"), "{out}");
+    assert!(out.contains("points           5"), "{out}");
+    assert!(out.contains("vertices         4: 0 1 2 3"), "{out}");
+    assert!(out.contains("facets           4"), "{out}");
+    assert!(out.contains("volume           4"), "{out}");
+    assert!(out.contains("points processed"), "{out}");
+}
+
+#[test]
+fn cube_3d_with_coplanar_points() {
+    // Corners of the unit cube plus face centres (coplanar with the faces) and the centre.
+    let mut text = String::new();
+    for i in 0..8 {
+        text += &format!("{} {} {}\n", i & 1, i >> 1 & 1, i >> 2 & 1);
+    }
+    text += "0.5 0.5 0\n0.5 0.5 1\n0 0.5 0.5\n1 0.5 0.5\n0.5 0 0.5\n0.5 1 0.5\n0.5 0.5 0.5\n";
+    let v = json(&pqh(&["hull", "--json"], Some(&text)));
+    assert_eq!(v["dimension"], 3);
+    assert_eq!(usizes(&v["vertices"]), (0..8).collect::<Vec<_>>());
+    assert!((v["volume"].as_f64().unwrap() - 1.0).abs() < 1e-12);
+    assert_eq!(v["facets"].as_array().unwrap().len(), 12);
+}
+
+#[test]
+fn closest_to_origin_on_the_square() {
+    let path = file("square-closest.txt", SQUARE);
+    let p = path.to_str().unwrap();
+    let v = json(&pqh(
+        &["hull", "--strategy", "closest-to-origin", "--json", p],
+        None,
+    ));
+    assert_eq!(v["strategy"], "closest-to-origin");
+    assert!((v["origin_distance"].as_f64().unwrap() - 1.0).abs() < 1e-12);
+    assert!(v.get("volume").is_none());
+    let facet = usizes(&v["closest_facet"]);
+    assert_eq!(facet.len(), 2);
+    assert!(facet.iter().all(|&i| i < 4), "{facet:?}");
+    let nearest = floats(&v["nearest_point"]);
+    assert!((nearest.iter().map(|x| x.abs()).fold(0.0, f64::max) - 1.0).abs() < 1e-12);
+
+    // A query point off centre: the right edge (vertices 1 and 2) is nearest.
+    let v = json(&pqh(
+        &[
+            "hull",
+            "--strategy",
+            "closest-to-origin",
+            "--origin",
+            "0.5,0",
+            "--json",
+            p,
+        ],
+        None,
+    ));
+    assert!((v["origin_distance"].as_f64().unwrap() - 0.5).abs() < 1e-12);
+    let mut facet = usizes(&v["closest_facet"]);
+    facet.sort();
+    assert_eq!(facet, vec![1, 2]);
+    let nearest = floats(&v["nearest_point"]);
+    assert!((nearest[0] - 1.0).abs() < 1e-12 && nearest[1].abs() < 1e-12);
+
+    // Outside: negative distance; negative coordinates need no '='.
+    let v = json(&pqh(
+        &[
+            "hull",
+            "--strategy",
+            "closest-to-origin",
+            "--origin",
+            "-3,0",
+            "--json",
+            p,
+        ],
+        None,
+    ));
+    assert!((v["origin_distance"].as_f64().unwrap() + 2.0).abs() < 1e-12);
+    let mut facet = usizes(&v["closest_facet"]);
+    facet.sort();
+    assert_eq!(facet, vec![0, 3]);
+}
+
+#[test]
+fn closest_to_origin_human_output() {
+    let o = pqh(&["hull", "--strategy", "closest-to-origin"], Some(SQUARE));
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = stdout(&o);
+    assert!(out.contains("signed distance  1 (inside)"), "{out}");
+    assert!(out.contains("closest facet"), "{out}");
+}
+
+#[test]
+fn stdin_input() {
+    let path = file("square-stdin.txt", SQUARE);
+    let from_file = json(&pqh(&["hull", "--json", path.to_str().unwrap()], None));
+    for args in [&["hull", "--json", "-"][..], &["hull", "--json"][..]] {
+        let v = json(&pqh(args, Some(SQUARE)));
+        assert_eq!(v["vertices"], from_file["vertices"]);
+        assert_eq!(v["facets"], from_file["facets"]);
+        assert_eq!(v["volume"], from_file["volume"]);
+    }
+}
+
+#[test]
+fn ragged_rows_name_the_line() {
+    let path = file("ragged.txt", "# comment\n0 0 0\n1 0 0\n\n0 1\n0 0 1\n");
+    let o = pqh(&["hull", path.to_str().unwrap()], None);
+    let err = one_line_error(&o, 2);
+    assert!(err.contains("ragged.txt"), "{err}");
+    assert!(
+        err.contains("line 5: expected 3 coordinates (from line 2), found 2"),
+        "{err}"
+    );
+}
+
+#[test]
+fn nan_names_the_line() {
+    let o = pqh(&["hull"], Some("0 0\n1 0\n0 NaN\n1 1\n"));
+    let err = one_line_error(&o, 2);
+    assert!(err.contains("line 3"), "{err}");
+    assert!(err.contains("NaN"), "{err}");
+}
+
+#[test]
+fn not_a_number_names_line_and_token() {
+    let o = pqh(&["hull"], Some("0 0\n1 0\n0 1\n1 one\n"));
+    let err = one_line_error(&o, 2);
+    assert!(err.contains("line 4") && err.contains("'one'"), "{err}");
+}
+
+#[test]
+fn unsupported_dimensions() {
+    let o = pqh(&["hull"], Some("0\n1\n2\n"));
+    let err = one_line_error(&o, 2);
+    assert!(err.contains("dimension 1"), "{err}");
+    let nine = "0 0 0 0 0 0 0 0 1\n".repeat(12);
+    let err = one_line_error(&pqh(&["hull"], Some(&nine)), 2);
+    assert!(err.contains("dimension 9"), "{err}");
+}
+
+#[test]
+fn empty_input() {
+    let err = one_line_error(&pqh(&["hull"], Some("# nothing\n\n")), 2);
+    assert!(err.contains("no points"), "{err}");
+}
+
+#[test]
+fn collinear_points_are_a_geometry_error() {
+    let o = pqh(&["hull"], Some("0 0\n1 1\n2 2\n3 3\n"));
+    let err = one_line_error(&o, 1);
+    assert!(err.contains("affinely dependent"), "{err}");
+}
+
+#[test]
+fn too_few_points_is_a_geometry_error() {
+    let err = one_line_error(&pqh(&["hull", "--json"], Some("0 0\n1 0\n")), 1);
+    assert!(err.contains("too few points"), "{err}");
+}
+
+#[test]
+fn missing_file() {
+    let path = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("cli-does-not-exist.txt");
+    let o = pqh(&["hull", path.to_str().unwrap()], None);
+    let err = one_line_error(&o, 2);
+    assert!(err.contains("cli-does-not-exist.txt"), "{err}");
+}
+
+#[test]
+fn origin_errors() {
+    // Wrong dimension.
+    let o = pqh(
+        &[
+            "hull",
+            "--strategy",
+            "closest-to-origin",
+            "--origin",
+            "1,2,3",
+        ],
+        Some(SQUARE),
+    );
+    let err = one_line_error(&o, 2);
+    assert!(
+        err.contains("--origin") && err.contains("dimension 2"),
+        "{err}"
+    );
+    // Not a number.
+    let o = pqh(
+        &["hull", "--strategy", "closest-to-origin", "--origin", "1,x"],
+        Some(SQUARE),
+    );
+    let err = one_line_error(&o, 2);
+    assert!(err.contains("'x'"), "{err}");
+    // Only meaningful for closest-to-origin.
+    let err = one_line_error(&pqh(&["hull", "--origin", "0,0"], Some(SQUARE)), 2);
+    assert!(err.contains("closest-to-origin"), "{err}");
+}
+
+#[test]
+fn bad_strategy_is_a_usage_error() {
+    let o = pqh(&["hull", "--strategy", "nearest"], Some(SQUARE));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(stderr(&o).contains("nearest"));
+}
+
+#[test]
+fn help_explains_the_tool_and_exit_status() {
+    let o = pqh(&["--help"], None);
+    assert!(o.status.success());
+    let out = stdout(&o);
+    assert!(out.contains("convex hull"), "{out}");
+    assert!(out.contains("Exit status"), "{out}");
+    assert!(out.contains("hull"), "{out}");
+    let o = pqh(&["hull", "--help"], None);
+    assert!(o.status.success());
+    let out = stdout(&o);
+    for word in [
+        "--strategy",
+        "closest-to-origin",
+        "--origin",
+        "--json",
+        "Exit status",
+    ] {
+        assert!(out.contains(word), "missing {word}: {out}");
+    }
+}
