@@ -89,7 +89,17 @@ impl<const D: usize> Hull<D> {
         let plane = FacetPlane::new(&coords);
         let norm = dot(plane.cofactors(), plane.cofactors()).sqrt();
         let inv_norm = 1.0 / norm;
-        let normal = plane.cofactors().map(|c| c * inv_norm);
+        let largest = plane.cofactors().iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        let error = plane.cofactor_errors().iter().fold(0.0f64, |m, e| m.max(*e));
+        let normal = if error <= 1e-11 * largest {
+            plane.cofactors().map(|c| c * inv_norm)
+        } else {
+            // The floating-point cofactors cancelled (a sliver or a tiny facet far from the
+            // origin): take the direction from the exact cofactors instead.
+            let exact = FacetPlane::exact_normal_direction(&coords);
+            let length = dot(&exact, &exact).sqrt();
+            exact.map(|c| c / length)
+        };
         let offset = dot(&normal, &coords[0]) / self.scale;
         let serial = self.next_serial;
         self.next_serial = self.next_serial.wrapping_add(1);

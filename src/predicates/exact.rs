@@ -308,3 +308,75 @@ pub(crate) fn affinely_independent_subset<const D: usize>(points: &[[f64; D]]) -
     }
     kept
 }
+
+/// The cofactor vector of `[v1 − v0; …; v(D−1) − v0; ·]` computed exactly, then rounded to `f64`
+/// after a common power-of-two scaling (so only its direction is meaningful).
+///
+/// Used when the floating-point cofactors of a facet cancel too much to give an accurate normal
+/// (slivers, tiny clusters): each component is then within a few ulps of the exact direction's.
+pub(crate) fn exact_cofactor_direction<const D: usize>(vertices: &[[f64; D]; D]) -> [f64; D] {
+    let all: Vec<&[f64]> = vertices.iter().map(|v| &v[..]).collect();
+    let s = scale(&all);
+    let int = |(m, e): (i64, i32)| -> BigInt {
+        if m == 0 {
+            BigInt::zero()
+        } else {
+            BigInt::from(m) << ((e - s.emin) as usize)
+        }
+    };
+    let (v0, rest) = s.parts.split_at(D);
+    let edges: Vec<Vec<BigInt>> = rest
+        .chunks_exact(D)
+        .map(|r| (0..D).map(|j| int(r[j]) - int(v0[j])).collect())
+        .collect();
+    let cofactors: Vec<BigInt> = (0..D)
+        .map(|j| {
+            let minor: Vec<Vec<BigInt>> = edges
+                .iter()
+                .map(|row| (0..D).filter(|&c| c != j).map(|c| row[c].clone()).collect())
+                .collect();
+            let det = bareiss_value(minor);
+            if (D - 1 + j) % 2 == 1 { -det } else { det }
+        })
+        .collect();
+    // Shift so that the largest magnitude has about 62 bits, then convert: f64 rounding of each
+    // component is then the only error.
+    let bits = cofactors.iter().map(|c| c.bits()).max().unwrap_or(0);
+    let shift = bits.saturating_sub(62);
+    let mut out = [0.0; D];
+    for (o, c) in out.iter_mut().zip(&cofactors) {
+        let shifted: BigInt = c >> (shift as usize);
+        *o = num_traits::ToPrimitive::to_f64(&shifted).unwrap_or(0.0);
+    }
+    out
+}
+
+/// The exact determinant of a square integer matrix (Bareiss elimination with row swaps).
+fn bareiss_value(mut a: Vec<Vec<BigInt>>) -> BigInt {
+    let n = a.len();
+    if n == 0 {
+        return BigInt::one();
+    }
+    let mut negate = false;
+    let mut prev = BigInt::one();
+    for k in 0..n {
+        if a[k][k].is_zero() {
+            match (k + 1..n).find(|&r| !a[r][k].is_zero()) {
+                Some(r) => {
+                    a.swap(k, r);
+                    negate = !negate;
+                }
+                None => return BigInt::zero(),
+            }
+        }
+        for i in k + 1..n {
+            for j in k + 1..n {
+                let x = &a[i][j] * &a[k][k] - &a[i][k] * &a[k][j];
+                a[i][j] = x / &prev;
+            }
+        }
+        prev = a[k][k].clone();
+    }
+    let det = a[n - 1][n - 1].clone();
+    if negate { -det } else { det }
+}

@@ -172,6 +172,22 @@ impl<const D: usize> FacetPlane<D> {
         }
     }
 
+    /// Per-component error coefficients: `|Ĉ_j − C_j| ≤ cofactor_errors()[j]` for the computed
+    /// cofactors `Ĉ` (the coefficients also cover the rounding of `p − v0` in
+    /// [`evaluate`](Self::evaluate), so they are a little generous as cofactor bounds).
+    pub fn cofactor_errors(&self) -> &[f64; D] {
+        &self.error
+    }
+
+    /// The direction of the exact cofactor vector, correctly rounded up to a common power-of-two
+    /// scale: an accurate normal even when the floating-point cofactors cancel (slivers).
+    ///
+    /// Costs D exact (D−1)×(D−1) determinants: use it only when
+    /// [`cofactor_errors`](Self::cofactor_errors) says the floating-point cofactors are poor.
+    pub fn exact_normal_direction(vertices: &[[f64; D]; D]) -> [f64; D] {
+        exact::exact_cofactor_direction(vertices)
+    }
+
     /// The cofactor vector `C`: `det[v1 − v0; …; v(D−1) − v0; p − v0] = Σ_j C_j·(p_j − v0_j)`
     /// exactly for the exact cofactors; these are their floating-point approximations. It is an
     /// unnormalised normal of the hyperplane, pointing to its positive side.
