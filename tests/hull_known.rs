@@ -23,8 +23,16 @@ fn cube_corners_with_interior_and_face_points() {
         let hull = Hull::try_new(&points).unwrap();
         hull.check().unwrap();
         let vertices = hull.vertex_indices();
-        assert_eq!(vertices.len(), corners, "D={D}: duplicates or face points became vertices");
-        assert!((hull.volume() - 1.0).abs() < 1e-12, "D={D}: volume {}", hull.volume());
+        assert_eq!(
+            vertices.len(),
+            corners,
+            "D={D}: duplicates or face points became vertices"
+        );
+        assert!(
+            (hull.volume() - 1.0).abs() < 1e-12,
+            "D={D}: volume {}",
+            hull.volume()
+        );
         // Every corner of the cube appears, once (either copy may be the one kept).
         let mut seen: Vec<[f64; D]> = vertices.iter().map(|&v| points[v]).collect();
         seen.sort_by(|a, b| a.partial_cmp(b).unwrap());
@@ -130,23 +138,37 @@ fn errors_name_what_is_wrong() {
     points[5][2] = f64::NAN;
     assert_eq!(
         Hull::try_new(&points).unwrap_err(),
-        HullError::NonFinite { index: 5, coordinate: 2 }
+        HullError::NonFinite {
+            index: 5,
+            coordinate: 2
+        }
     );
     points[5][2] = f64::NEG_INFINITY;
     assert_eq!(
         Hull::try_new(&points).unwrap_err(),
-        HullError::NonFinite { index: 5, coordinate: 2 }
+        HullError::NonFinite {
+            index: 5,
+            coordinate: 2
+        }
     );
     // Rank 0, 1, 2 in 3-D.
     let same = vec![[1.5, -2.0, 3.0]; 10];
     assert_eq!(
         Hull::try_new(&same).unwrap_err(),
-        HullError::AffinelyDependent { rank: 0, dimension: 3 }
+        HullError::AffinelyDependent {
+            rank: 0,
+            dimension: 3
+        }
     );
-    let line: Vec<[f64; 3]> = (0..10).map(|i| [i as f64 * 0.1, 2.0 * i as f64 * 0.1, 3.0]).collect();
+    let line: Vec<[f64; 3]> = (0..10)
+        .map(|i| [i as f64 * 0.1, 2.0 * i as f64 * 0.1, 3.0])
+        .collect();
     assert_eq!(
         Hull::try_new(&line).unwrap_err(),
-        HullError::AffinelyDependent { rank: 1, dimension: 3 }
+        HullError::AffinelyDependent {
+            rank: 1,
+            dimension: 3
+        }
     );
     let plane: Vec<[f64; 3]> = (0..30)
         .map(|i| {
@@ -157,7 +179,10 @@ fn errors_name_what_is_wrong() {
         .collect();
     assert_eq!(
         Hull::try_new(&plane).unwrap_err(),
-        HullError::AffinelyDependent { rank: 2, dimension: 3 }
+        HullError::AffinelyDependent {
+            rank: 2,
+            dimension: 3
+        }
     );
     // A 5-D set lying in a 4-D hyperplane.
     let flat: Vec<[f64; 5]> = (0..40)
@@ -168,11 +193,21 @@ fn errors_name_what_is_wrong() {
         .collect();
     assert_eq!(
         Hull::try_new(&flat).unwrap_err(),
-        HullError::AffinelyDependent { rank: 4, dimension: 5 }
+        HullError::AffinelyDependent {
+            rank: 4,
+            dimension: 5
+        }
     );
     // Messages say what and where.
-    let message = HullError::NonFinite { index: 5, coordinate: 2 }.to_string();
-    assert!(message.contains("point 5") && message.contains("coordinate 2"), "{message}");
+    let message = HullError::NonFinite {
+        index: 5,
+        coordinate: 2,
+    }
+    .to_string();
+    assert!(
+        message.contains("point 5") && message.contains("coordinate 2"),
+        "{message}"
+    );
 }
 
 #[test]
@@ -184,10 +219,17 @@ fn huge_and_tiny_coordinates_scale_exactly() {
             let scaled: Vec<[f64; D]> = base.iter().map(|p| p.map(|x| x * factor)).collect();
             let hull = Hull::try_new(&scaled).unwrap();
             hull.check().unwrap();
-            assert_eq!(hull.vertex_indices(), reference.vertex_indices(), "factor {factor}");
+            assert_eq!(
+                hull.vertex_indices(),
+                reference.vertex_indices(),
+                "factor {factor}"
+            );
             let expected = reference.volume() * factor.powi(D as i32);
             if expected.is_normal() {
-                assert!((hull.volume() / expected - 1.0).abs() < 1e-9, "factor {factor}");
+                assert!(
+                    (hull.volume() / expected - 1.0).abs() < 1e-9,
+                    "factor {factor}"
+                );
             }
         }
     }
@@ -222,7 +264,11 @@ fn closest_to_origin_outside_and_on_boundary() {
     ] {
         let (partial, r) = Hull::try_with_strategy(&points, ClosestToOrigin::towards(q)).unwrap();
         partial.check().unwrap();
-        assert!((r.signed_distance + d).abs() < 1e-15, "q={q:?}: {}", r.signed_distance);
+        assert!(
+            (r.signed_distance + d).abs() < 1e-15,
+            "q={q:?}: {}",
+            r.signed_distance
+        );
         let gap: f64 = r
             .nearest_point
             .iter()
@@ -239,7 +285,12 @@ fn partial_hull_does_less_work_on_a_sphere() {
     let points = pqhull::rbox::generate::<6>(&pqhull::rbox::Family::SphereSurface, 400, 3);
     let full = Hull::try_new(&points).unwrap();
     let (_, r) = Hull::try_with_strategy(&points, ClosestToOrigin::new()).unwrap();
-    assert!(r.stats.facets_created * 5 < full.stats().facets_created, "{:?} vs {:?}", r.stats, full.stats());
+    assert!(
+        r.stats.facets_created * 5 < full.stats().facets_created,
+        "{:?} vs {:?}",
+        r.stats,
+        full.stats()
+    );
     assert!(r.stats.points_processed < full.stats().points_processed);
 }
 

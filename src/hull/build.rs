@@ -18,11 +18,17 @@ impl<const D: usize> Hull<D> {
             return Err(HullError::NonFinite { index, coordinate });
         }
         if input.len() < D + 1 {
-            return Err(HullError::TooFewPoints { needed: D + 1, got: input.len() });
+            return Err(HullError::TooFewPoints {
+                needed: D + 1,
+                got: input.len(),
+            });
         }
         if input.len() > u32::MAX as usize {
             // Vertices are stored as u32 to halve the facet arena's index traffic.
-            return Err(HullError::TooManyPoints { max: u32::MAX as usize, got: input.len() });
+            return Err(HullError::TooManyPoints {
+                max: u32::MAX as usize,
+                got: input.len(),
+            });
         }
         let scale = exact_power_of_two_scale(input);
         let points: Vec<[f64; D]> = input.iter().map(|p| p.map(|x| x * scale)).collect();
@@ -90,7 +96,10 @@ impl<const D: usize> Hull<D> {
         let norm = dot(plane.cofactors(), plane.cofactors()).sqrt();
         let inv_norm = 1.0 / norm;
         let largest = plane.cofactors().iter().fold(0.0f64, |m, c| m.max(c.abs()));
-        let error = plane.cofactor_errors().iter().fold(0.0f64, |m, e| m.max(*e));
+        let error = plane
+            .cofactor_errors()
+            .iter()
+            .fold(0.0f64, |m, e| m.max(*e));
         let normal = if error <= 1e-11 * largest {
             plane.cofactors().map(|c| c * inv_norm)
         } else {
@@ -189,9 +198,10 @@ fn orientation_of<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> Sig
 }
 
 fn first_non_finite<const D: usize>(points: &[[f64; D]]) -> Option<(usize, usize)> {
-    points.iter().enumerate().find_map(|(i, p)| {
-        p.iter().position(|x| !x.is_finite()).map(|c| (i, c))
-    })
+    points
+        .iter()
+        .enumerate()
+        .find_map(|(i, p)| p.iter().position(|x| !x.is_finite()).map(|c| (i, c)))
 }
 
 /// The power of two that brings the largest coordinate into [0.5, 1), if scaling by it is exact
@@ -257,8 +267,14 @@ fn greedy_simplex<const D: usize>(points: &[[f64; D]]) -> Option<Vec<usize>> {
     let mut extremes = Vec::with_capacity(2 * D);
     for axis in 0..D {
         let by_axis = |a: &&[f64; D], b: &&[f64; D]| a[axis].total_cmp(&b[axis]);
-        let (lo, _) = points.iter().enumerate().min_by(|a, b| by_axis(&a.1, &b.1))?;
-        let (hi, _) = points.iter().enumerate().max_by(|a, b| by_axis(&a.1, &b.1))?;
+        let (lo, _) = points
+            .iter()
+            .enumerate()
+            .min_by(|a, b| by_axis(&a.1, &b.1))?;
+        let (hi, _) = points
+            .iter()
+            .enumerate()
+            .max_by(|a, b| by_axis(&a.1, &b.1))?;
         extremes.push(lo);
         extremes.push(hi);
     }

@@ -23,7 +23,11 @@ impl<const D: usize> Hull<D> {
         let fail = |message: String| Err(InvariantViolation { message });
         let live: Vec<FacetId> = self.facets().map(|(id, _)| id).collect();
         if live.len() != self.live {
-            return fail(format!("{} live facets, counter says {}", live.len(), self.live));
+            return fail(format!(
+                "{} live facets, counter says {}",
+                live.len(),
+                self.live
+            ));
         }
         let extent = self.extent();
         for &id in &live {
@@ -67,7 +71,10 @@ impl<const D: usize> Hull<D> {
                     return fail(format!("point {p} is in two outside sets"));
                 }
                 if self.side(id, &self.points[p as usize]) != Sign::Positive {
-                    return fail(format!("point {p} is in facet {}'s outside set but not beyond it", id.0));
+                    return fail(format!(
+                        "point {p} is in facet {}'s outside set but not beyond it",
+                        id.0
+                    ));
                 }
             }
         }
@@ -76,6 +83,10 @@ impl<const D: usize> Hull<D> {
                 continue;
             }
             for &id in &live {
+                // A facet's own vertices lie on it by construction.
+                if self.facet(id).vertices.contains(&(p as u32)) {
+                    continue;
+                }
                 if self.side(id, point) == Sign::Positive {
                     return fail(format!(
                         "point {p} lies beyond facet {} but is in no outside set",

@@ -1,7 +1,7 @@
 //! One QuickHull expansion: visible facets, horizon, cone of new facets, repartition.
 
-use super::facet::FacetId;
 use super::Hull;
+use super::facet::FacetId;
 use crate::predicates::Sign;
 
 /// Buffers reused across expansions so that steady-state expansion does not allocate.
@@ -81,7 +81,10 @@ impl<const D: usize> Hull<D> {
         }
         let mut claimed = std::mem::take(&mut self.facets[id.index()].outside);
         for other in 0..self.facets.len() {
-            if other == id.index() || !self.facets[other].alive || self.facets[other].outside.is_empty() {
+            if other == id.index()
+                || !self.facets[other].alive
+                || self.facets[other].outside.is_empty()
+            {
                 continue;
             }
             let mut outside = std::mem::take(&mut self.facets[other].outside);
@@ -199,7 +202,10 @@ impl<const D: usize> Hull<D> {
         for pair in self.scratch.ridges.chunks_exact(2) {
             let (ka, a, ja) = pair[0];
             let (kb, b, jb) = pair[1];
-            debug_assert_eq!(ka, kb, "every cone ridge is shared by exactly two new facets");
+            debug_assert_eq!(
+                ka, kb,
+                "every cone ridge is shared by exactly two new facets"
+            );
             self.facets[a.index()].neighbors[ja] = b;
             self.facets[b.index()].neighbors[jb] = a;
         }

@@ -32,6 +32,11 @@ fn robust_safe(points: &[&[f64]]) -> bool {
         .all(|&x| x == 0.0 || (x.abs() >= lo && x.abs() <= hi))
 }
 
+/// The exponent of the lowest set bit of a finite non-zero `x` (`x` is an odd multiple of 2^e).
+pub(crate) fn lowest_bit_exponent(x: f64) -> i32 {
+    decompose(x).1
+}
+
 /// Converts a finite `f64` into `(m, e)` with `x = m · 2^e`, `m` odd (or `m = 0`).
 ///
 /// # Panics
@@ -90,6 +95,19 @@ fn scale(points: &[&[f64]]) -> Scaled {
 /// Exact sign of `det[v1 − v0; …; v(D−1) − v0; p − v0]`, using `robust` for D = 2, 3 when the
 /// coordinates are in its safe range, integer Bareiss elimination otherwise.
 pub(crate) fn orientation<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> Sign {
+    // Repeated points make the determinant vanish; this is the most common reason the filter
+    // fails (a hull vertex tested against its own facets, duplicates), and costs D² comparisons.
+    if vertices.iter().any(|v| v == p)
+        || (0..D).any(|i| (i + 1..D).any(|j| vertices[i] == vertices[j]))
+    {
+        for x in p.iter() {
+            assert!(
+                x.is_finite(),
+                "pqhull::predicates: non-finite coordinate {x} given to orientation"
+            );
+        }
+        return Sign::Zero;
+    }
     if D == 2 || D == 3 {
         let mut all: Vec<&[f64]> = vertices.iter().map(|v| &v[..]).collect();
         all.push(&p[..]);
@@ -168,11 +186,13 @@ pub(crate) fn orientation_bareiss<const D: usize>(vertices: &[[f64; D]; D], p: &
                 i128::from(m) << (e - s.emin)
             }
         };
-        let matrix: Vec<Vec<i128>> = rows
-            .clone()
-            .map(|r| (0..D).map(|j| int(r[j]) - int(v0[j])).collect())
-            .collect();
-        if let Some(sign) = bareiss_i128(matrix) {
+        let mut matrix = [[0i128; 8]; 8];
+        for (row, r) in matrix.iter_mut().zip(rows.clone()) {
+            for j in 0..D {
+                row[j] = int(r[j]) - int(v0[j]);
+            }
+        }
+        if let Some(sign) = bareiss_i128(&mut matrix, D) {
             return sign;
         }
     }
@@ -193,8 +213,7 @@ pub(crate) fn orientation_bareiss<const D: usize>(vertices: &[[f64; D]; D], p: &
 ///
 /// After step k every remaining entry is a (k+1)×(k+1) minor of the input, and the division by the
 /// previous pivot is exact (Sylvester's identity), so integer division loses nothing.
-fn bareiss_i128(mut a: Vec<Vec<i128>>) -> Option<Sign> {
-    let n = a.len();
+fn bareiss_i128(a: &mut [[i128; 8]; 8], n: usize) -> Option<Sign> {
     let mut negate = false;
     let mut prev: i128 = 1;
     for k in 0..n {

@@ -14,6 +14,29 @@ const U: f64 = f64::EPSILON / 2.0;
 /// itself far below any meaningful determinant.
 const UNDERFLOW_SLACK: f64 = 9.332636185032189e-302; // 2^-1000
 
+/// 2^52: below it (with a factor-2 margin for the rounded permanent) integers are exact in f64.
+const TWO_52: f64 = 4_503_599_627_370_496.0;
+
+/// The exponent of the coarsest power-of-two grid holding all the (non-zero) values: the smallest
+/// exponent of their lowest set bits. `i32::MAX` if all are zero.
+fn grid_exponent<'a>(values: impl Iterator<Item = &'a f64>) -> i32 {
+    values
+        .filter(|x| **x != 0.0 && x.is_finite())
+        .map(|&x| exact::lowest_bit_exponent(x))
+        .min()
+        .unwrap_or(i32::MAX)
+}
+
+fn sign_of(x: f64) -> Sign {
+    if x > 0.0 {
+        Sign::Positive
+    } else if x < 0.0 {
+        Sign::Negative
+    } else {
+        Sign::Zero
+    }
+}
+
 /// Relative inflation covering the roundings of the bound computation itself (at most ~30
 /// operations on non-negative numbers, each with relative error `u = 2^-53`: `30u < 2^-40`).
 const BOUND_INFLATION: f64 = 1.0 + 1.0 / (1u64 << 40) as f64;
@@ -29,6 +52,10 @@ pub struct FacetPlane<const D: usize> {
     base: [f64; D],
     cofactors: [f64; D],
     error: [f64; D],
+    /// Permanents of |minor| behind each cofactor (for the exact-arithmetic test of `side`).
+    permanents: [f64; D],
+    /// Exponent of the coarsest power-of-two grid holding every vertex coordinate.
+    grid: i32,
     /// `UNDERFLOW_SLACK` if every vertex coordinate is in `[−1, 1]`, `+∞` otherwise (filter off).
     slack: f64,
 }
@@ -103,6 +130,7 @@ impl<const D: usize> FacetPlane<D> {
         let c_cof = (d + 3.0) * U;
         let mut cofactors = [0.0; D];
         let mut error = [0.0; D];
+        let mut permanents = [0.0; D];
         for j in 0..D {
             let sub = full & !(1 << j);
             let c = if (D - 1 + j) % 2 == 1 {
@@ -111,12 +139,15 @@ impl<const D: usize> FacetPlane<D> {
                 minor[sub]
             };
             cofactors[j] = c;
+            permanents[j] = perm[sub];
             error[j] = c_perm * perm[sub] + c_cof * c.abs();
         }
         FacetPlane {
             base,
             cofactors,
             error,
+            permanents,
+            grid: grid_exponent(vertices.iter().flatten()),
             slack: if in_range {
                 UNDERFLOW_SLACK
             } else {
@@ -167,9 +198,46 @@ impl<const D: usize> FacetPlane<D> {
             Sign::Positive
         } else if -value > bound {
             Sign::Negative
+        } else if self.value_is_exact(p) {
+            sign_of(value)
         } else {
             exact::orientation(&vertices(), p)
         }
+    }
+
+    /// Whether `evaluate(p)`'s value is exactly the determinant: true when every coordinate lies on
+    /// a power-of-two grid 2^g and the determinant's permanent is below 2^52 grid units^D (integer
+    /// lattices, cube corners, dyadic input — exactly the inputs whose determinants vanish).
+    ///
+    /// Why it suffices: in units of the grid every entry is an integer; every product and partial
+    /// sum that contributes to the value is bounded by the permanent (a sub-minor only contributes
+    /// multiplied by non-zero entries, each at least one unit, so its permanent is no larger), hence
+    /// is an integer below 2^52, exactly representable, so no operation rounds. Non-contributing
+    /// sub-minors are multiplied by exact zeros. Underflow is excluded by `g·D ≥ −1000`.
+    fn value_is_exact(&self, p: &[f64; D]) -> bool {
+        if !p.iter().all(|x| x.is_finite()) {
+            return false;
+        }
+        let g = self.grid.min(grid_exponent(p.iter()));
+        if g == i32::MAX {
+            return true; // every entry is zero
+        }
+        let Some(units) = g
+            .checked_mul(D as i32)
+            .filter(|u| (-1000..=1000).contains(u))
+        else {
+            return false;
+        };
+        let permanent: f64 = p
+            .iter()
+            .zip(&self.base)
+            .zip(&self.permanents)
+            .map(|((&x, &b), &q)| q * (x - b).abs())
+            .sum();
+        // Units of 2^(g·D): scale in two steps so that neither factor overflows.
+        let half = -units / 2;
+        let in_units = permanent * 2f64.powi(half) * 2f64.powi(-units - half);
+        in_units < TWO_52 / 2.0
     }
 
     /// Per-component error coefficients: `|Ĉ_j − C_j| ≤ cofactor_errors()[j]` for the computed
