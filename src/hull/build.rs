@@ -77,8 +77,8 @@ impl<const D: usize> Hull<D> {
         for &s in &simplex {
             is_vertex[s] = true;
         }
-        for p in 0..hull.points.len() {
-            if !is_vertex[p] {
+        for (p, &vertex) in is_vertex.iter().enumerate() {
+            if !vertex {
                 hull.assign(p as u32, &all);
             }
         }

@@ -54,8 +54,6 @@ pub struct FacetPlane<const D: usize> {
     error: [f64; D],
     /// Permanents of |minor| behind each cofactor (for the exact-arithmetic test of `side`).
     permanents: [f64; D],
-    /// Exponent of the coarsest power-of-two grid holding every vertex coordinate.
-    grid: i32,
     /// `UNDERFLOW_SLACK` if every vertex coordinate is in `[−1, 1]`, `+∞` otherwise (filter off).
     slack: f64,
 }
@@ -147,7 +145,6 @@ impl<const D: usize> FacetPlane<D> {
             cofactors,
             error,
             permanents,
-            grid: grid_exponent(vertices.iter().flatten()),
             slack: if in_range {
                 UNDERFLOW_SLACK
             } else {
@@ -198,10 +195,13 @@ impl<const D: usize> FacetPlane<D> {
             Sign::Positive
         } else if -value > bound {
             Sign::Negative
-        } else if self.value_is_exact(p) {
-            sign_of(value)
         } else {
-            exact::orientation(&vertices(), p)
+            let vertices = vertices();
+            if self.value_is_exact(&vertices, p) {
+                sign_of(value)
+            } else {
+                exact::orientation(&vertices, p)
+            }
         }
     }
 
@@ -214,11 +214,12 @@ impl<const D: usize> FacetPlane<D> {
     /// multiplied by non-zero entries, each at least one unit, so its permanent is no larger), hence
     /// is an integer below 2^52, exactly representable, so no operation rounds. Non-contributing
     /// sub-minors are multiplied by exact zeros. Underflow is excluded by `g·D ≥ −1000`.
-    fn value_is_exact(&self, p: &[f64; D]) -> bool {
+    fn value_is_exact(&self, vertices: &[[f64; D]; D], p: &[f64; D]) -> bool {
         if !p.iter().all(|x| x.is_finite()) {
             return false;
         }
-        let g = self.grid.min(grid_exponent(p.iter()));
+        // Computed here, on the slow path, rather than cached per facet: it costs D² bit scans.
+        let g = grid_exponent(vertices.iter().flatten().chain(p.iter()));
         if g == i32::MAX {
             return true; // every entry is zero
         }

@@ -19,10 +19,10 @@ pub(crate) fn nearest_in_simplex<const D: usize>(
     }
     let mut best: Option<([f64; D], f64)> = None;
     for mask in 1..full {
-        if let Some((x, d)) = project_onto_face(vertices, mask, query) {
-            if best.is_none_or(|(_, b)| d < b) {
-                best = Some((x, d));
-            }
+        if let Some((x, d)) = project_onto_face(vertices, mask, query)
+            && best.is_none_or(|(_, b)| d < b)
+        {
+            best = Some((x, d));
         }
     }
     best.expect("single vertices always project onto themselves")
@@ -65,10 +65,11 @@ fn project_onto_face<const D: usize>(
             return None; // degenerate face: its lower faces are tried separately
         }
         a.swap(col, pivot);
-        for r in col + 1..k {
-            let factor = a[r][col] / a[col][col];
-            for c in col..=k {
-                a[r][c] -= factor * a[col][c];
+        let pivot_row = a[col];
+        for row in a.iter_mut().take(k).skip(col + 1) {
+            let factor = row[col] / pivot_row[col];
+            for (x, y) in row[col..=k].iter_mut().zip(&pivot_row[col..=k]) {
+                *x -= factor * y;
             }
         }
     }

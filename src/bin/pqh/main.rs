@@ -2,6 +2,7 @@
 //!
 //! Parsing, I/O and output only; every computation is a call into the `pqhull` library.
 
+mod demo_cmd;
 mod error;
 mod hull_cmd;
 mod input;
@@ -47,12 +48,16 @@ enum Command {
     /// Convex hull of a points file (full, or partial toward a query point)
     #[command(long_about = hull_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
     Hull(hull_cmd::HullArgs),
+    /// Full vs partial hull on built-in seeded point sets: agreement and speed-up
+    #[command(long_about = demo_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
+    Demo(demo_cmd::DemoArgs),
 }
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Hull(args) => hull_cmd::run(&args),
+        Command::Demo(args) => demo_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
