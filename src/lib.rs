@@ -34,6 +34,11 @@ pub mod rbox;
 pub mod strategy;
 
 pub use hull::{Facet, FacetId, Hull, HullError, InvariantViolation};
-pub use strategy::{ClosestToOrigin, FarthestPoint, Stats, Strategy};
+pub use strategy::{ClosestToOrigin, FarthestPoint, Stats, Step, Strategy};
+
+/// The README's examples, compiled and run as doctests so they cannot rot.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+struct ReadmeDoctests;
 #[cfg(feature = "qhull")]
 pub mod qhull_baseline;

@@ -348,3 +348,31 @@ fn help_explains_the_tool_and_exit_status() {
         assert!(out.contains(word), "missing {word}: {out}");
     }
 }
+
+#[test]
+fn demo_full_and_partial_hull_agree() {
+    let o = pqh(
+        &["demo", "--points", "200", "--dimension", "4", "--json"],
+        None,
+    );
+    let v = json(&o);
+    assert_eq!(v["dimension"], 4);
+    assert_eq!(v["agree"], true);
+    let sets = v["sets"].as_array().expect("sets");
+    assert!(sets.len() >= 2, "{v}");
+    for set in sets {
+        let name = set["name"].as_str().expect("name");
+        // The sphere and cube sets are centred on the origin: it is inside.
+        assert_eq!(set["origin_inside"], true, "{name}");
+        let full = set["full"]["signed_distance"].as_f64().expect("full");
+        let partial = set["partial"]["signed_distance"].as_f64().expect("partial");
+        assert!(full > 0.0 && partial > 0.0, "{name}: {full} {partial}");
+        assert!(
+            (full - partial).abs() <= 1e-9,
+            "{name}: {full} vs {partial}"
+        );
+        assert!(set["difference"].as_f64().expect("difference") <= 1e-9);
+        let created = |s: &str| set[s]["facets_created"].as_u64().expect("facets_created");
+        assert!(created("partial") <= created("full"), "{name}: {set}");
+    }
+}

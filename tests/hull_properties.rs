@@ -11,8 +11,8 @@ use proptest::prelude::*;
 use support::min_norm::min_norm_point;
 use support::points_as_vecs;
 
-/// Cases per dimension; debug builds are slow, so the default is modest. Set PROPTEST_CASES to
-/// run more (CI's release job does).
+/// Cases per dimension; the default keeps the suite to a few minutes in release on 2 cores. Set
+/// PROPTEST_CASES to run more.
 fn cases() -> u32 {
     std::env::var("PROPTEST_CASES")
         .ok()

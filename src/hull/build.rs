@@ -111,7 +111,7 @@ impl<const D: usize> Hull<D> {
         };
         let offset = dot(&normal, &coords[0]) / self.scale;
         let serial = self.next_serial;
-        self.next_serial = self.next_serial.wrapping_add(1);
+        self.next_serial += 1;
         self.stats.facets_created += 1;
         self.live += 1;
         let fresh = |outside: Vec<u32>| Facet {

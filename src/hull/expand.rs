@@ -15,9 +15,9 @@ pub(crate) struct Scratch<const D: usize> {
     horizon: Vec<(FacetId, usize)>,
     /// Ridges of the cone to pair up: (sorted vertex key, new facet, its neighbour slot).
     ridges: Vec<([u32; D], FacetId, usize)>,
-    /// Points of removed outside sets awaiting reassignment.
     /// Open-addressing table of indices into `ridges`, for pairing.
     table: Vec<u32>,
+    /// Points of removed outside sets awaiting reassignment.
     orphans: Vec<u32>,
     stack: Vec<FacetId>,
 }

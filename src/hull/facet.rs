@@ -43,7 +43,7 @@ pub struct Facet<const D: usize> {
     /// Position in `outside` of the point farthest beyond, with its orientation value.
     pub(crate) farthest: Option<(u32, f64)>,
     pub(crate) alive: bool,
-    pub(crate) serial: u32,
+    pub(crate) serial: u64,
     /// Visit epoch and verdict of the last horizon search that looked at this facet.
     pub(crate) mark: u32,
     pub(crate) visible: bool,
@@ -92,7 +92,7 @@ impl<const D: usize> Facet<D> {
     }
 
     /// Creation number, unique over the life of the hull (ids are reused, serials are not).
-    pub fn serial(&self) -> u32 {
+    pub fn serial(&self) -> u64 {
         self.serial
     }
 

@@ -56,7 +56,7 @@ pub struct Hull<const D: usize> {
     /// Tombstoned slots, reusable by later expansions.
     free: Vec<FacetId>,
     live: usize,
-    next_serial: u32,
+    next_serial: u64,
     epoch: u32,
     /// A point inside the initial simplex (internal coordinates), reference for volumes.
     interior: [f64; D],
@@ -148,7 +148,7 @@ impl<const D: usize> Hull<D> {
     }
 
     /// Whether `id` still names the facet created with `serial`.
-    pub fn is_current(&self, id: FacetId, serial: u32) -> bool {
+    pub fn is_current(&self, id: FacetId, serial: u64) -> bool {
         self.facets
             .get(id.index())
             .is_some_and(|f| f.alive && f.serial == serial)

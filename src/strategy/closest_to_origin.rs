@@ -63,7 +63,10 @@ enum Phase {
 #[derive(Clone, Debug, PartialEq)]
 pub struct DistanceResult<const D: usize> {
     /// Signed Euclidean distance from the query point to the boundary of the full hull: positive
-    /// inside, negative outside, zero on the boundary (zero is decided exactly).
+    /// inside, negative outside, zero on the boundary. The sign is decided exactly (a point
+    /// strictly inside but within rounding of a facet gets `f64::MIN_POSITIVE`); the magnitude is
+    /// floating point. Outside, the nearest-point certificate is floating point too (see the type's
+    /// docs).
     pub signed_distance: f64,
     /// The deciding facet: its plane is nearest the query point (inside) or it holds the nearest
     /// point (outside). A facet of the partial hull, and (up to the triangulation of coplanar
@@ -161,7 +164,9 @@ impl<const D: usize> ClosestToOrigin<D> {
             let distance = if hull.side_of(id, &self.query) == Sign::Zero {
                 0.0
             } else {
-                (-facet.signed_distance(&self.query)).max(0.0)
+                // Strictly inside by the exact test; keep the sign even when the query is closer
+                // to the plane than the rounding of the floating-point distance can resolve.
+                (-facet.signed_distance(&self.query)).max(f64::MIN_POSITIVE)
             };
             let normal = facet.normal();
             let foot = std::array::from_fn(|c| self.query[c] + distance * normal[c]);
@@ -271,7 +276,7 @@ impl<const D: usize> Strategy<D> for ClosestToOrigin<D> {
 struct Entry {
     beyond: f64,
     id: FacetId,
-    serial: u32,
+    serial: u64,
 }
 
 impl PartialEq for Entry {

@@ -1,6 +1,43 @@
 //! Expansion strategies: what to expand next, and when to stop.
 //!
-//! STUB — API under construction.
+//! A [`Strategy`] is a stateful value the engine consults: [`start`](Strategy::start) once the
+//! initial simplex exists, then [`step`](Strategy::step) until it returns [`Step::Stop`] — each
+//! step typically names a facet to [`Hull::expand`] and reads [`Hull::last_removed`] /
+//! [`Hull::last_created`] to update its own queue — and finally [`finish`](Strategy::finish) to
+//! produce its result. The engine never knows a strategy's goal.
+//!
+//! ```
+//! use pqhull::{Hull, Strategy};
+//! use pqhull::strategy::Step;
+//!
+//! /// Expands at most `budget` times, always the facet with the largest outside set.
+//! struct Budget(usize);
+//!
+//! impl<const D: usize> Strategy<D> for Budget {
+//!     type Output = usize; // facets in the partial hull
+//!     fn start(&mut self, _hull: &Hull<D>) {}
+//!     fn step(&mut self, hull: &mut Hull<D>) -> Step {
+//!         let busiest = hull.facets().max_by_key(|(_, f)| f.outside_len()).map(|(id, _)| id);
+//!         match busiest {
+//!             Some(id) if self.0 > 0 && hull.expand(id) => {
+//!                 self.0 -= 1;
+//!                 Step::Continue
+//!             }
+//!             _ => Step::Stop,
+//!         }
+//!     }
+//!     fn finish(self, hull: &Hull<D>) -> usize {
+//!         hull.facet_count()
+//!     }
+//! }
+//!
+//! let points = pqhull::rbox::generate::<3>(&pqhull::rbox::Family::SphereSurface, 200, 1);
+//! let (partial, facets) = Hull::try_with_strategy(&points, Budget(10))?;
+//! assert_eq!(partial.stats().expansions, 10);
+//! assert_eq!(facets, partial.facet_count());
+//! partial.check()?; // partial hulls keep every invariant too
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
 
 use crate::hull::Hull;
 use std::time::Duration;

@@ -388,8 +388,8 @@ fn write_human(out: &mut impl Write, args: &DemoArgs, table: &[Row]) -> std::io:
     writeln!(out)?;
     writeln!(
         out,
-        "{:<9} {:>17} {:>19} {:>19}   {:<24}",
-        "", "points processed", "facets created", "time ms", "speed-up (full/partial)"
+        "{:<9} {:>17} {:>19} {:>19}   speed-up (full/partial)",
+        "", "points processed", "facets created", "time ms"
     )?;
     writeln!(
         out,
