@@ -28,7 +28,7 @@ pub use facet::{Facet, FacetId};
 
 use crate::predicates::Sign;
 use crate::strategy::{FarthestPoint, Stats, Step, Strategy};
-use facet::dot;
+pub(crate) use facet::dot;
 use std::time::Instant;
 
 /// A convex hull in dimension `D` (2 ≤ D ≤ 8), full or partial depending on the strategy that grew

@@ -149,7 +149,7 @@ fn orientation_robust3(pts: &[&[f64]]) -> Sign {
     sign_of(-s)
 }
 
-fn sign_of(x: f64) -> Sign {
+pub(crate) fn sign_of(x: f64) -> Sign {
     if x > 0.0 {
         Sign::Positive
     } else if x < 0.0 {
@@ -245,34 +245,8 @@ fn bareiss_i128(a: &mut [[i128; 8]; 8], n: usize) -> Option<Sign> {
 }
 
 /// Bareiss elimination in `BigInt` (see [`bareiss_i128`]).
-fn bareiss_big(mut a: Vec<Vec<BigInt>>) -> Sign {
-    let n = a.len();
-    let mut negate = false;
-    let mut prev = BigInt::one();
-    for k in 0..n {
-        if a[k][k].is_zero() {
-            match (k + 1..n).find(|&r| !a[r][k].is_zero()) {
-                Some(r) => {
-                    a.swap(k, r);
-                    negate = !negate;
-                }
-                None => return Sign::Zero,
-            }
-        }
-        for i in k + 1..n {
-            for j in k + 1..n {
-                let x = &a[i][j] * &a[k][k] - &a[i][k] * &a[k][j];
-                a[i][j] = x / &prev;
-            }
-        }
-        prev = a[k][k].clone();
-    }
-    let s = if n == 0 {
-        Sign::Positive
-    } else {
-        sign_of_int(&a[n - 1][n - 1])
-    };
-    if negate { flip(s) } else { s }
+fn bareiss_big(a: Vec<Vec<BigInt>>) -> Sign {
+    sign_of_int(&bareiss_value(a))
 }
 
 pub(crate) fn flip(s: Sign) -> Sign {
@@ -370,7 +344,9 @@ pub(crate) fn exact_cofactor_direction<const D: usize>(vertices: &[[f64; D]; D])
     out
 }
 
-/// The exact determinant of a square integer matrix (Bareiss elimination with row swaps).
+/// The exact determinant of a square integer matrix (Bareiss elimination with row swaps: after
+/// step k every remaining entry is a (k+1)×(k+1) minor, so the division by the previous pivot is
+/// exact).
 fn bareiss_value(mut a: Vec<Vec<BigInt>>) -> BigInt {
     let n = a.len();
     if n == 0 {

@@ -27,16 +27,6 @@ fn grid_exponent<'a>(values: impl Iterator<Item = &'a f64>) -> i32 {
         .unwrap_or(i32::MAX)
 }
 
-fn sign_of(x: f64) -> Sign {
-    if x > 0.0 {
-        Sign::Positive
-    } else if x < 0.0 {
-        Sign::Negative
-    } else {
-        Sign::Zero
-    }
-}
-
 /// Relative inflation covering the roundings of the bound computation itself (at most ~30
 /// operations on non-negative numbers, each with relative error `u = 2^-53`: `30u < 2^-40`).
 const BOUND_INFLATION: f64 = 1.0 + 1.0 / (1u64 << 40) as f64;
@@ -198,7 +188,7 @@ impl<const D: usize> FacetPlane<D> {
         } else {
             let vertices = vertices();
             if self.value_is_exact(&vertices, p) {
-                sign_of(value)
+                exact::sign_of(value)
             } else {
                 exact::orientation(&vertices, p)
             }

@@ -2,7 +2,7 @@
 
 use super::nearest::nearest_in_simplex;
 use super::{Stats, Step, Strategy};
-use crate::hull::{FacetId, Hull};
+use crate::hull::{FacetId, Hull, dot};
 use crate::predicates::Sign;
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
@@ -296,8 +296,4 @@ impl Ord for Entry {
             .total_cmp(&other.beyond)
             .then(other.serial.cmp(&self.serial))
     }
-}
-
-fn dot<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }

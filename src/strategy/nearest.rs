@@ -5,6 +5,8 @@
 //! easy to trust — which matters more here than speed: it only runs for query points outside the
 //! hull, on the few facets that can be nearest.
 
+use crate::hull::dot;
+
 /// Nearest point of the simplex spanned by `vertices[..count]` to `query`, and its distance.
 pub(crate) fn nearest_in_simplex<const D: usize>(
     vertices: &[[f64; D]],
@@ -94,10 +96,6 @@ fn project_onto_face<const D: usize>(
     )
     .sqrt();
     Some((x, d))
-}
-
-fn dot<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
 #[cfg(test)]
