@@ -27,6 +27,7 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+pub mod grasp;
 pub mod hull;
 pub mod points_file;
 pub mod predicates;

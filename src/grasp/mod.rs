@@ -1,0 +1,179 @@
+//! The grasp model: contacts, friction cones and contact wrenches.
+//!
+//! This module turns a grasp — a few fingertip contacts on an object with Coulomb friction — into
+//! the 6-D wrench point sets whose convex hulls define the Ferrari–Canny grasp quality metrics.
+//! (The metrics themselves, Q1 and Q∞, are built on these sets and [`Hull`](crate::Hull).)
+//!
+//! # Grasp conventions
+//!
+//! * Contact i: position p_i, unit **inward** normal n_i (the direction the finger pushes),
+//!   optional unit tangent t_i. Friction coefficient μ, k cone edges.
+//! * Edge j of contact i: f_ij = n_i + μ (cos(2πj/k) t_i + sin(2πj/k) (n_i × t_i)) — normal
+//!   component 1 (Ferrari–Canny, GraspIt!, Dex-Net). When t_i is not given, a documented
+//!   deterministic default ([`Contact::default_tangent`]: the normalised cross product of n_i with
+//!   the coordinate axis least aligned with it).
+//! * Wrench: w_ij = [f_ij ; (p_i − c) × f_ij / ρ] with torque reference c (default origin; with a
+//!   mesh, its centre of mass) and torque scale ρ (default 1; with a mesh, the largest distance
+//!   from c to a mesh vertex, as GraspIt! does).
+//! * Q1 is computed over the union ∪_ij w_ij ([`Grasp::wrenches`], m·k points, contact-major);
+//!   Q∞ over the Minkowski sum ⊕_i {w_i1 … w_ik}, which has k^m points
+//!   ([`Grasp::minkowski_count`]) and is never materialised here.
+//!
+//! Input is validated once, when a [`Contact`], [`FrictionModel`] or [`Grasp`] is built
+//! ([`GraspError`] says what was wrong and, for contacts, which one); a built value always holds
+//! finite coordinates, unit normals and unit tangents orthogonal to them.
+//!
+//! # Example
+//!
+//! A two-finger grasp on the unit cube [−½, ½]³, pinching it along x:
+//!
+//! ```
+//! use pqhull::grasp::{Contact, FrictionModel, Grasp};
+//!
+//! let contacts = vec![
+//!     // On the face x = −½ the finger pushes in +x; on x = +½ it pushes in −x.
+//!     Contact::try_new([-0.5, 0.0, 0.0], [1.0, 0.0, 0.0], None)?,
+//!     Contact::try_new([0.5, 0.0, 0.0], [-1.0, 0.0, 0.0], None)?,
+//! ];
+//! let friction = FrictionModel::try_new(0.5, 8)?; // μ = 0.5, k = 8
+//! let grasp = Grasp::builder(contacts, friction)
+//!     .torque_reference([0.0, 0.0, 0.0]) // the cube's centre of mass
+//!     .torque_scale(0.75_f64.sqrt())     // the distance from it to a corner
+//!     .build()?;
+//!
+//! let wrenches = grasp.wrenches(); // the Q1 point set: 2 contacts × 8 edges
+//! assert_eq!(wrenches.len(), 16);
+//! assert_eq!(grasp.minkowski_count(), Some(64)); // the Q∞ set would have 8² points
+//!
+//! // Every edge pushes with normal component 1.
+//! assert!(wrenches[..8].iter().all(|w| (w[0] - 1.0).abs() < 1e-15));
+//! assert!(wrenches[8..].iter().all(|w| (w[0] + 1.0).abs() < 1e-15));
+//!
+//! // Batch evaluation reuses one buffer per worker instead of allocating per grasp.
+//! let mut buffer = Vec::new();
+//! grasp.wrenches_into(&mut buffer);
+//! assert_eq!(buffer, wrenches);
+//! # Ok::<(), pqhull::grasp::GraspError>(())
+//! ```
+
+mod contact;
+mod error;
+mod friction;
+mod vec3;
+mod wrench;
+
+pub use contact::{Contact, TANGENT_PARALLEL_TOLERANCE};
+pub use error::GraspError;
+pub use friction::FrictionModel;
+
+use vec3::is_finite;
+
+/// A grasp: m ≥ 1 contacts sharing one friction model, a torque reference point c and a torque
+/// scale ρ (see the [module docs](self) for the conventions).
+///
+/// Build it with [`Grasp::try_new`] (c = origin, ρ = 1) or [`Grasp::builder`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct Grasp {
+    contacts: Vec<Contact>,
+    friction: FrictionModel,
+    torque_reference: [f64; 3],
+    torque_scale: f64,
+}
+
+impl Grasp {
+    /// A grasp with the default torque reference c = origin and torque scale ρ = 1.
+    ///
+    /// # Errors
+    ///
+    /// [`GraspError::NoContacts`] when `contacts` is empty.
+    pub fn try_new(contacts: Vec<Contact>, friction: FrictionModel) -> Result<Grasp, GraspError> {
+        Grasp::builder(contacts, friction).build()
+    }
+
+    /// A builder starting from the defaults c = origin, ρ = 1.
+    pub fn builder(contacts: Vec<Contact>, friction: FrictionModel) -> GraspBuilder {
+        GraspBuilder {
+            contacts,
+            friction,
+            torque_reference: [0.0; 3],
+            torque_scale: 1.0,
+        }
+    }
+
+    /// The contacts, in the order given.
+    pub fn contacts(&self) -> &[Contact] {
+        &self.contacts
+    }
+
+    /// The number of contacts m (≥ 1).
+    pub fn contact_count(&self) -> usize {
+        self.contacts.len()
+    }
+
+    /// The friction model shared by all contacts.
+    pub fn friction(&self) -> FrictionModel {
+        self.friction
+    }
+
+    /// The torque reference point c.
+    pub fn torque_reference(&self) -> [f64; 3] {
+        self.torque_reference
+    }
+
+    /// The torque scale ρ (finite, > 0).
+    pub fn torque_scale(&self) -> f64 {
+        self.torque_scale
+    }
+}
+
+/// Builds a [`Grasp`], from [`Grasp::builder`].
+#[derive(Clone, Debug)]
+#[must_use = "a builder does nothing until `build` is called"]
+pub struct GraspBuilder {
+    contacts: Vec<Contact>,
+    friction: FrictionModel,
+    torque_reference: [f64; 3],
+    torque_scale: f64,
+}
+
+impl GraspBuilder {
+    /// Sets the torque reference point c (default: the origin; with a mesh, its centre of mass).
+    pub fn torque_reference(mut self, c: [f64; 3]) -> Self {
+        self.torque_reference = c;
+        self
+    }
+
+    /// Sets the torque scale ρ (default 1; with a mesh, the largest distance from c to a mesh
+    /// vertex, as GraspIt! does). Torques are divided by ρ.
+    pub fn torque_scale(mut self, rho: f64) -> Self {
+        self.torque_scale = rho;
+        self
+    }
+
+    /// The grasp.
+    ///
+    /// # Errors
+    ///
+    /// [`GraspError::NoContacts`] when there are no contacts,
+    /// [`GraspError::NonFiniteTorqueReference`] when c has a NaN or infinite coordinate,
+    /// [`GraspError::InvalidTorqueScale`] when ρ is not finite or not greater than 0.
+    pub fn build(self) -> Result<Grasp, GraspError> {
+        if self.contacts.is_empty() {
+            return Err(GraspError::NoContacts);
+        }
+        if !is_finite(self.torque_reference) {
+            return Err(GraspError::NonFiniteTorqueReference);
+        }
+        if !(self.torque_scale.is_finite() && self.torque_scale > 0.0) {
+            return Err(GraspError::InvalidTorqueScale {
+                torque_scale: self.torque_scale,
+            });
+        }
+        Ok(Grasp {
+            contacts: self.contacts,
+            friction: self.friction,
+            torque_reference: self.torque_reference,
+            torque_scale: self.torque_scale,
+        })
+    }
+}
