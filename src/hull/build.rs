@@ -3,7 +3,7 @@
 use super::expand::Scratch;
 use super::facet::{Facet, FacetId, dot};
 use super::{Hull, HullError};
-use crate::predicates::{FacetPlane, Sign, affinely_independent_subset};
+use crate::predicates::{FacetPlane, Sign, affinely_independent_subset, orientation};
 use crate::strategy::Stats;
 use std::time::Instant;
 
@@ -64,7 +64,7 @@ impl<const D: usize> Hull<D> {
                 neighbors[slot] = FacetId(j as u32);
             }
             let coords = hull.coords(&vertices);
-            if orientation_of(&coords, &hull.points[simplex[k]]) == Sign::Positive {
+            if orientation(&coords, &hull.points[simplex[k]]) == Sign::Positive {
                 vertices.swap(0, 1);
                 neighbors.swap(0, 1);
             }
@@ -193,10 +193,6 @@ impl<const D: usize> Hull<D> {
     }
 }
 
-fn orientation_of<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> Sign {
-    crate::predicates::orientation(vertices, p)
-}
-
 fn first_non_finite<const D: usize>(points: &[[f64; D]]) -> Option<(usize, usize)> {
     points
         .iter()
@@ -249,7 +245,7 @@ fn initial_simplex<const D: usize>(points: &[[f64; D]]) -> Result<Vec<usize>, Hu
         for (v, &s) in vertices.iter_mut().zip(&simplex) {
             *v = points[s];
         }
-        if crate::predicates::orientation(&vertices, &points[simplex[D]]) != Sign::Zero {
+        if orientation(&vertices, &points[simplex[D]]) != Sign::Zero {
             return Ok(simplex);
         }
     }

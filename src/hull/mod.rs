@@ -204,7 +204,6 @@ impl<const D: usize> Hull<D> {
 
     /// Signed distance of `x` (caller's units) beyond facet `id`'s plane, positive outside.
     pub fn signed_distance(&self, id: FacetId, x: &[f64; D]) -> f64 {
-        let facet = self.facet(id);
-        dot(&facet.normal, x) - facet.offset
+        self.facet(id).signed_distance(x)
     }
 }

@@ -142,7 +142,8 @@ impl<const D: usize> ClosestToOrigin<D> {
                 return Step::Continue;
             }
             // Nothing lies beyond `id`: its plane supports the full hull.
-            if hull.side_of(id, &self.query) == Sign::Positive {
+            let query_side = hull.side_of(id, &self.query);
+            if query_side == Sign::Positive {
                 self.phase = Phase::Outside;
                 return Step::Continue;
             }
@@ -161,7 +162,7 @@ impl<const D: usize> ClosestToOrigin<D> {
                 return Step::Continue;
             }
             let facet = hull.facet(id);
-            let distance = if hull.side_of(id, &self.query) == Sign::Zero {
+            let distance = if query_side == Sign::Zero {
                 0.0
             } else {
                 // Strictly inside by the exact test; keep the sign even when the query is closer
