@@ -59,6 +59,8 @@
 mod contact;
 mod error;
 mod friction;
+pub mod quality;
+mod snap;
 mod vec3;
 mod wrench;
 

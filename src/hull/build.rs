@@ -89,6 +89,29 @@ impl<const D: usize> Hull<D> {
         vertices.map(|v| self.points[v as usize])
     }
 
+    /// Makes facet `id`'s normal and offset precise (exact cofactor direction) if they are not.
+    pub(crate) fn refine_normal(&mut self, id: FacetId) {
+        let facet = &self.facets[id.index()];
+        if facet.precise {
+            return;
+        }
+        let normal = self.exact_normal(id);
+        let offset = dot(&normal, &self.points[facet.vertices[0] as usize]) / self.scale;
+        let facet = &mut self.facets[id.index()];
+        facet.normal = normal;
+        facet.offset = offset;
+        facet.precise = true;
+    }
+
+    /// The unit normal of facet `id` from its exact cofactors.
+    pub(crate) fn exact_normal(&self, id: FacetId) -> [f64; D] {
+        let facet = &self.facets[id.index()];
+        let coords = self.coords(&facet.vertices);
+        let exact = facet.plane.exact_normal_direction(&coords);
+        let length = dot(&exact, &exact).sqrt();
+        exact.map(|c| c / length)
+    }
+
     /// Creates a facet (plane and normal computed here), reusing a tombstoned slot when possible.
     pub(crate) fn push_facet(&mut self, vertices: [u32; D], neighbors: [FacetId; D]) -> FacetId {
         let coords = self.coords(&vertices);
@@ -100,15 +123,11 @@ impl<const D: usize> Hull<D> {
             .cofactor_errors()
             .iter()
             .fold(0.0f64, |m, e| m.max(*e));
-        let normal = if error <= 1e-11 * largest {
-            plane.cofactors().map(|c| c * inv_norm)
-        } else {
-            // The floating-point cofactors cancelled (a sliver or a tiny facet far from the
-            // origin): take the direction from the exact cofactors instead.
-            let exact = FacetPlane::exact_normal_direction(&coords);
-            let length = dot(&exact, &exact).sqrt();
-            exact.map(|c| c / length)
-        };
+        // When the floating-point cofactors cancel (a thin facet), the normal is refined from the
+        // exact cofactors only when someone needs it precise (`refine_normal`): most such facets
+        // are transient, and the queue orders of the strategies only need approximate distances.
+        let precise = error <= 1e-11 * largest;
+        let normal = plane.cofactors().map(|c| c * inv_norm);
         let offset = dot(&normal, &coords[0]) / self.scale;
         let serial = self.next_serial;
         self.next_serial += 1;
@@ -120,6 +139,7 @@ impl<const D: usize> Hull<D> {
             plane,
             inv_norm,
             normal,
+            precise,
             offset,
             outside,
             farthest: None,

@@ -10,7 +10,9 @@ impl<const D: usize> Hull<D> {
     /// * live facets have live neighbours, links are symmetric, and neighbours across the ridge
     ///   opposite vertex `i` share exactly the other D − 1 vertices;
     /// * each facet's unit normal and offset match its vertices (to a relative 1e−9 of the point
-    ///   set's extent — the only floating-point check; the exact plane *is* the vertices');
+    ///   set's extent — the only floating-point check; the exact plane *is* the vertices'); for a
+    ///   facet whose normal is not [precise](super::Facet::normal_is_precise), the exact normal
+    ///   [`Hull::refine_normals`] would install;
     /// * every input point lies weakly inside every live facet (exact predicate), except the points
     ///   in outside sets, which must lie strictly beyond their own facet (partial hulls);
     /// * the arena's live count matches.
@@ -53,12 +55,21 @@ impl<const D: usize> Hull<D> {
                     return fail(format!("facets {} and {} share all vertices", id.0, n.0));
                 }
             }
-            let length = dot(&f.normal, &f.normal).sqrt();
+            // A thin facet's floating-point normal is only a hint (see `Facet::normal`): check the
+            // exact one, which is what `refine_normals` installs.
+            let (normal, offset) = if f.precise {
+                (f.normal, f.offset)
+            } else {
+                let exact = self.exact_normal(id);
+                let offset = dot(&exact, &self.point(f.vertices[0] as usize));
+                (exact, offset)
+            };
+            let length = dot(&normal, &normal).sqrt();
             if (length - 1.0).abs() > 1e-9 {
                 return fail(format!("facet {} normal has length {length}", id.0));
             }
             for &v in &f.vertices {
-                let gap = dot(&f.normal, &self.point(v as usize)) - f.offset;
+                let gap = dot(&normal, &self.point(v as usize)) - offset;
                 if gap.abs() > 1e-9 * extent {
                     return fail(format!("vertex {v} is {gap} off facet {}'s plane", id.0));
                 }

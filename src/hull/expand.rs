@@ -71,6 +71,28 @@ impl<const D: usize> Hull<D> {
         true
     }
 
+    /// Adds a point that was not part of the input — from an implicit point set, such as a
+    /// Minkowski sum answered through its support function — to the hull, if it lies strictly
+    /// beyond facet `id` (exact test). Returns its new input index, or `None` (nothing changed)
+    /// when it is not beyond `id`, `id` is not live, or the point falls outside the coordinate
+    /// range the hull's exact filter was scaled for (every coordinate must be within the input's
+    /// largest magnitude, rounded up to a power of two: seed the input with the set's extreme
+    /// points along every axis).
+    pub fn insert_beyond(&mut self, id: FacetId, point: [f64; D]) -> Option<usize> {
+        if !self.facets.get(id.index()).is_some_and(|f| f.alive) {
+            return None;
+        }
+        let scaled = point.map(|x| x * self.scale);
+        if !scaled.iter().all(|x| x.abs() <= 1.0) || self.side(id, &scaled) != Sign::Positive {
+            return None;
+        }
+        let index = u32::try_from(self.points.len()).ok()?;
+        self.points.push(scaled);
+        self.facets[id.index()].outside.push(index);
+        self.expand_with(id, index as usize);
+        Some(index as usize)
+    }
+
     /// Facets removed by the last expansion (their slots are tombstoned).
     pub fn last_removed(&self) -> &[FacetId] {
         &self.scratch.removed

@@ -36,6 +36,9 @@ pub struct Facet<const D: usize> {
     pub(crate) inv_norm: f64,
     /// Unit outward normal.
     pub(crate) normal: [f64; D],
+    /// Whether `normal` is certified to a relative 1e−11 (else it is the floating-point normal of
+    /// a facet whose cofactors cancelled, refined on demand by [`Hull::refine_normal`]).
+    pub(crate) precise: bool,
     /// Offset in the caller's coordinates.
     pub(crate) offset: f64,
     /// Input indices of the points assigned to this facet (each strictly beyond it).
@@ -60,9 +63,21 @@ impl<const D: usize> Facet<D> {
         self.neighbors
     }
 
-    /// Unit outward normal (computed in floating point from the exact vertex coordinates).
+    /// Unit outward normal, computed in floating point from the exact vertex coordinates.
+    ///
+    /// Accurate to a relative 1e−11 when [`normal_is_precise`](Self::normal_is_precise) — always
+    /// for hulls built with [`FarthestPoint`](crate::FarthestPoint) and after
+    /// [`Hull::refine_normals`]. A partial strategy refines only the facets it reports, so other
+    /// facets of a partial hull may carry the plain floating-point normal of a thin facet (whose
+    /// cofactors cancel), which can be off by more.
     pub fn normal(&self) -> [f64; D] {
         self.normal
+    }
+
+    /// Whether [`normal`](Self::normal) and [`offset`](Self::offset) are certified to a relative
+    /// 1e−11 (see [`Hull::refine_normals`]).
+    pub fn normal_is_precise(&self) -> bool {
+        self.precise
     }
 
     /// Offset: points inside satisfy `normal · x <= offset` (up to rounding of the normal).

@@ -88,9 +88,22 @@ impl<const D: usize> Hull<D> {
         let mut hull = Self::try_initial(points)?;
         strategy.start(&hull);
         while strategy.step(&mut hull) == Step::Continue {}
+        if strategy.refines_all_normals() {
+            hull.refine_normals();
+        }
         hull.stats.elapsed = hull.started.elapsed();
         let output = strategy.finish(&hull);
         Ok((hull, output))
+    }
+
+    /// Makes every live facet's normal precise (see [`Facet::normal_is_precise`]): an exact
+    /// cofactor computation for each thin facet a partial strategy left unrefined.
+    pub fn refine_normals(&mut self) {
+        for i in 0..self.facets.len() {
+            if self.facets[i].alive {
+                self.refine_normal(FacetId(i as u32));
+            }
+        }
     }
 
     /// The dimension D.
@@ -200,6 +213,33 @@ impl<const D: usize> Hull<D> {
                 _ => Sign::Zero,
             }
         }
+    }
+
+    /// An upper bound on the exact signed distance of `x` beyond facet `id`'s plane: the
+    /// floating-point distance when the facet's normal is precise, else a certified bound from the
+    /// plane's error analysis (`+∞` when the floating-point cofactors say nothing).
+    pub(crate) fn distance_upper_bound(&self, id: FacetId, x: &[f64; D]) -> f64 {
+        let facet = self.facet(id);
+        if facet.precise {
+            return facet.signed_distance(x);
+        }
+        let scaled = x.map(|c| c * self.scale);
+        let (value, bound) = facet.plane.evaluate(&scaled);
+        let cofactors = facet.plane.cofactors();
+        let errors = facet.plane.cofactor_errors();
+        let length = dot(cofactors, cofactors).sqrt();
+        let error = dot(errors, errors).sqrt();
+        if !(length > error) || !bound.is_finite() {
+            return f64::INFINITY;
+        }
+        let top = value + bound;
+        let distance = if top >= 0.0 {
+            top / (length - error)
+        } else {
+            top / (length + error)
+        };
+        // Cover the rounding of this very computation.
+        (distance + distance.abs() * 1e-12) / self.scale
     }
 
     /// Signed distance of `x` (caller's units) beyond facet `id`'s plane, positive outside.

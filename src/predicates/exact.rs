@@ -41,7 +41,7 @@ pub(crate) fn lowest_bit_exponent(x: f64) -> i32 {
 ///
 /// # Panics
 /// If `x` is not finite.
-fn decompose(x: f64) -> (i64, i32) {
+pub(crate) fn decompose(x: f64) -> (i64, i32) {
     assert!(
         x.is_finite(),
         "pqhull::predicates: non-finite coordinate {x} given to an exact predicate"
@@ -196,6 +196,19 @@ pub(crate) fn orientation_bareiss<const D: usize>(vertices: &[[f64; D]; D], p: &
             return sign;
         }
     }
+    if let Some(sign) = super::wide::orientation(vertices, p) {
+        return sign;
+    }
+    orientation_big(vertices, p)
+}
+
+/// The `BigInt` path of [`orientation_bareiss`], valid for every input.
+pub(crate) fn orientation_big<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> Sign {
+    let mut all: Vec<&[f64]> = vertices.iter().map(|v| &v[..]).collect();
+    all.push(&p[..]);
+    let s = scale(&all);
+    let (v0, rest) = s.parts.split_at(D);
+    let rows = rest.chunks_exact(D);
     let int = |(m, e): (i64, i32)| -> BigInt {
         if m == 0 {
             BigInt::zero()
@@ -308,6 +321,12 @@ pub(crate) fn affinely_independent_subset<const D: usize>(points: &[[f64; D]]) -
 /// Used when the floating-point cofactors of a facet cancel too much to give an accurate normal
 /// (slivers, tiny clusters): each component is then within a few ulps of the exact direction's.
 pub(crate) fn exact_cofactor_direction<const D: usize>(vertices: &[[f64; D]; D]) -> [f64; D] {
+    super::wide::cofactor_direction(vertices)
+        .unwrap_or_else(|| exact_cofactor_direction_big(vertices))
+}
+
+/// The `BigInt` path of [`exact_cofactor_direction`], valid for every input.
+pub(crate) fn exact_cofactor_direction_big<const D: usize>(vertices: &[[f64; D]; D]) -> [f64; D] {
     let all: Vec<&[f64]> = vertices.iter().map(|v| &v[..]).collect();
     let s = scale(&all);
     let int = |(m, e): (i64, i32)| -> BigInt {

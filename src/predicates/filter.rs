@@ -1,6 +1,7 @@
 //! The floating-point filter: a cached hyperplane with a certified error bound.
 
-use super::{Sign, exact};
+use super::{Sign, exact, wide::ExactPlane};
+use std::sync::OnceLock;
 
 /// Unit roundoff of `f64` (round to nearest).
 const U: f64 = f64::EPSILON / 2.0;
@@ -46,6 +47,10 @@ pub struct FacetPlane<const D: usize> {
     permanents: [f64; D],
     /// `UNDERFLOW_SLACK` if every vertex coordinate is in `[−1, 1]`, `+∞` otherwise (filter off).
     slack: f64,
+    /// Exact integer cofactors, built the first time the filter fails on this plane (D ≥ 4; for
+    /// D ≤ 3 `robust` is faster); `None` inside when the vertices do not fit (then every slow-path
+    /// test computes a full determinant).
+    exact: OnceLock<Option<Box<ExactPlane<D>>>>,
 }
 
 impl<const D: usize> FacetPlane<D> {
@@ -140,6 +145,7 @@ impl<const D: usize> FacetPlane<D> {
             } else {
                 f64::INFINITY
             },
+            exact: OnceLock::new(),
         }
     }
 
@@ -188,10 +194,14 @@ impl<const D: usize> FacetPlane<D> {
         } else {
             let vertices = vertices();
             if self.value_is_exact(&vertices, p) {
-                exact::sign_of(value)
-            } else {
-                exact::orientation(&vertices, p)
+                return exact::sign_of(value);
             }
+            if D >= 4 && p.iter().all(|x| x.is_finite()) {
+                if let Some(sign) = self.exact_plane(&vertices).and_then(|plane| plane.side(p)) {
+                    return sign;
+                }
+            }
+            exact::orientation(&vertices, p)
         }
     }
 
@@ -243,8 +253,20 @@ impl<const D: usize> FacetPlane<D> {
     ///
     /// Costs D exact (D−1)×(D−1) determinants: use it only when
     /// [`cofactor_errors`](Self::cofactor_errors) says the floating-point cofactors are poor.
-    pub fn exact_normal_direction(vertices: &[[f64; D]; D]) -> [f64; D] {
-        exact::exact_cofactor_direction(vertices)
+    ///
+    /// The exact cofactors are kept for this plane's later exact side tests.
+    pub fn exact_normal_direction(&self, vertices: &[[f64; D]; D]) -> [f64; D] {
+        match self.exact_plane(vertices) {
+            Some(plane) => plane.normal_direction(),
+            None => exact::exact_cofactor_direction(vertices),
+        }
+    }
+
+    /// The cached exact plane, built on first use.
+    fn exact_plane(&self, vertices: &[[f64; D]; D]) -> Option<&ExactPlane<D>> {
+        self.exact
+            .get_or_init(|| ExactPlane::new(vertices).map(Box::new))
+            .as_deref()
     }
 
     /// The cofactor vector `C`: `det[v1 − v0; …; v(D−1) − v0; p − v0] = Σ_j C_j·(p_j − v0_j)`

@@ -63,6 +63,7 @@
 
 mod exact;
 mod filter;
+mod wide;
 #[cfg(test)]
 mod tests;
 

@@ -1,6 +1,6 @@
 //! `ClosestToOrigin`: the PQHGWS algorithm (Liu & Carpin, Algorithm 1), made exact.
 
-use super::nearest::nearest_in_simplex;
+use super::nearest::{min_norm_point, nearest_in_simplex};
 use super::{Stats, Step, Strategy};
 use crate::hull::{FacetId, Hull, dot};
 use crate::predicates::Sign;
@@ -43,11 +43,15 @@ use std::collections::BinaryHeap;
 /// # Ok::<(), pqhull::HullError>(())
 /// ```
 #[derive(Clone, Debug)]
-pub struct ClosestToOrigin<const D: usize> {
+pub struct ClosestToOrigin<const D: usize, S: PointSource<D> = NoSource> {
     query: [f64; D],
+    source: S,
     queue: BinaryHeap<Entry>,
     phase: Phase,
     answer: Option<(f64, FacetId, [f64; D])>,
+    /// Scratch for the outside phase: facets the query sees, and their vertices.
+    seen: Vec<FacetId>,
+    seen_vertices: Vec<usize>,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -87,6 +91,58 @@ impl<const D: usize> DistanceResult<D> {
     }
 }
 
+/// Points that are not in the hull's input but belong to the set whose hull is sought — an
+/// implicit set, such as the Q∞ Minkowski sum, answered through its support function.
+///
+/// [`ClosestToOrigin::with_source`] asks it before declaring a facet certain, so "nothing
+/// beyond" covers the implicit points too. The hull's input must contain the set's extreme points
+/// along every coordinate axis (see [`Hull::insert_beyond`]).
+///
+/// ```
+/// use pqhull::strategy::PointSource;
+/// use pqhull::{ClosestToOrigin, FacetId, Hull};
+///
+/// /// The square [−1, 1]² given by its corners, of which the input holds only three.
+/// struct Corners;
+/// impl PointSource<2> for Corners {
+///     fn beyond(&mut self, hull: &Hull<2>, id: FacetId) -> Option<[f64; 2]> {
+///         let n = hull.facet(id).normal();
+///         let corner = [n[0].signum(), n[1].signum()];
+///         (hull.facet(id).signed_distance(&corner) > 1e-12).then_some(corner)
+///     }
+///     fn support(&mut self, d: &[f64; 2]) -> Option<[f64; 2]> {
+///         Some([d[0].signum(), d[1].signum()])
+///     }
+/// }
+/// let input = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0]];
+/// let strategy = ClosestToOrigin::with_source([0.5, 0.0], Corners);
+/// let (_, result) = Hull::try_with_strategy(&input, strategy)?;
+/// // The triangle alone would give 0.25/√2 ≈ 0.18; the square gives 0.5.
+/// assert!((result.signed_distance - 0.5).abs() < 1e-12);
+/// # Ok::<(), pqhull::HullError>(())
+/// ```
+pub trait PointSource<const D: usize> {
+    /// A point of the implicit set strictly beyond facet `id` of `hull` (by the exact
+    /// [`Hull::side_of`]), or `None` only when there is none.
+    fn beyond(&mut self, hull: &Hull<D>, id: FacetId) -> Option<[f64; D]>;
+    /// A point of the implicit set maximising `direction · p` (floating point is enough: the
+    /// strategy checks it), or `None` for an empty set.
+    fn support(&mut self, direction: &[f64; D]) -> Option<[f64; D]>;
+}
+
+/// No implicit points: the hull's input is the whole set.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct NoSource;
+
+impl<const D: usize> PointSource<D> for NoSource {
+    fn beyond(&mut self, _: &Hull<D>, _: FacetId) -> Option<[f64; D]> {
+        None
+    }
+    fn support(&mut self, _: &[f64; D]) -> Option<[f64; D]> {
+        None
+    }
+}
+
 impl<const D: usize> Default for ClosestToOrigin<D> {
     fn default() -> Self {
         Self::towards([0.0; D])
@@ -101,20 +157,32 @@ impl<const D: usize> ClosestToOrigin<D> {
 
     /// Toward `query` (caller's units).
     pub fn towards(query: [f64; D]) -> Self {
+        Self::with_source(query, NoSource)
+    }
+}
+
+impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
+    /// Toward `query`, over the hull's input *and* the implicit points of `source`.
+    pub fn with_source(query: [f64; D], source: S) -> Self {
         Self {
             query,
+            source,
             queue: BinaryHeap::new(),
             phase: Phase::Nearest,
             answer: None,
+            seen: Vec::new(),
+            seen_vertices: Vec::new(),
         }
     }
 
+    /// Queues facet `id` keyed by how far the query lies beyond it — for a facet whose normal is
+    /// not precise, a certified upper bound, so that no facet is popped later than it should be;
+    /// its exact key is computed when it reaches the top.
     fn enqueue(&mut self, hull: &Hull<D>, id: FacetId) {
-        let facet = hull.facet(id);
         self.queue.push(Entry {
-            beyond: facet.signed_distance(&self.query),
+            beyond: hull.distance_upper_bound(id, &self.query),
             id,
-            serial: facet.serial(),
+            serial: hull.facet(id).serial(),
         });
     }
 
@@ -124,6 +192,10 @@ impl<const D: usize> ClosestToOrigin<D> {
             None => hull.expand(id),
         };
         debug_assert!(expanded, "only facets with outside points are expanded");
+        self.enqueue_created(hull);
+    }
+
+    fn enqueue_created(&mut self, hull: &Hull<D>) {
         for i in 0..hull.last_created().len() {
             let created = hull.last_created()[i];
             self.enqueue(hull, created);
@@ -137,8 +209,23 @@ impl<const D: usize> ClosestToOrigin<D> {
                 continue;
             }
             let id = entry.id;
+            if !hull.facet(id).normal_is_precise() {
+                hull.refine_normal(id);
+                self.enqueue(hull, id);
+                continue;
+            }
             if hull.facet(id).outside_len() > 0 || hull.claim_beyond(id) {
                 self.expand(hull, id, None);
+                return Step::Continue;
+            }
+            if let Some(point) = self.source.beyond(hull, id) {
+                let inserted = hull.insert_beyond(id, point);
+                assert!(
+                    inserted.is_some(),
+                    "PointSource::beyond returned a point not strictly beyond the facet, or out of \
+                     the hull's coordinate range"
+                );
+                self.enqueue_created(hull);
                 return Step::Continue;
             }
             // Nothing lies beyond `id`: its plane supports the full hull.
@@ -192,6 +279,23 @@ impl<const D: usize> ClosestToOrigin<D> {
                 }
             }
         }
+        if best.is_none()
+            && let Some(s) = self.source.support(&direction)
+            && dot(&direction, &s) > level
+        {
+            // An implicit point beyond the certificate plane: it is outside the partial hull, so
+            // some facet sees it.
+            let seen = hull
+                .facets()
+                .map(|(g, _)| g)
+                .find(|&g| hull.side_of(g, &s) == Sign::Positive);
+            if let Some(g) = seen
+                && hull.insert_beyond(g, s).is_some()
+            {
+                self.enqueue_created(hull);
+                return Step::Continue;
+            }
+        }
         match best {
             Some((_, g, p)) => {
                 self.expand(hull, g, Some(p));
@@ -205,40 +309,69 @@ impl<const D: usize> ClosestToOrigin<D> {
         }
     }
 
-    /// The point of the partial hull nearest the (outside) query point.
-    fn nearest_point(&self, hull: &Hull<D>) -> ([f64; D], FacetId, f64) {
-        let mut candidates: Vec<(f64, FacetId)> = hull
-            .facets()
-            .map(|(id, f)| (f.signed_distance(&self.query), id))
-            .filter(|&(beyond, _)| beyond > 0.0)
-            .collect();
-        if candidates.is_empty() {
-            // Rounding hid every facet the query sees: it is within rounding of the boundary.
-            let (beyond, id) = hull
-                .facets()
-                .map(|(id, f)| (f.signed_distance(&self.query), id))
-                .max_by(|a, b| a.0.total_cmp(&b.0))
-                .expect("a hull has facets");
-            candidates.push((beyond, id));
-        }
-        // Distance to a facet's plane bounds the distance to the facet from below.
-        candidates.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
-        let mut best: Option<([f64; D], FacetId, f64)> = None;
-        for (plane_distance, id) in candidates {
-            if best.is_some_and(|(_, _, d)| plane_distance >= d) {
-                break;
+    /// The point of the partial hull nearest the (outside) query point, and a facet holding it.
+    ///
+    /// The nearest point lies on a facet the query sees, so it is the nearest point of the convex
+    /// hull of those facets' vertices: Wolfe's algorithm on a few dozen points.
+    fn nearest_point(&mut self, hull: &Hull<D>) -> ([f64; D], FacetId, f64) {
+        self.seen.clear();
+        self.seen_vertices.clear();
+        let mut farthest_plane: Option<(f64, FacetId)> = None;
+        for (id, facet) in hull.facets() {
+            let beyond = facet.signed_distance(&self.query);
+            if farthest_plane.is_none_or(|(b, _)| beyond > b) {
+                farthest_plane = Some((beyond, id));
             }
-            let vertices = hull.facet(id).vertices().map(|v| hull.point(v));
-            let (x, d) = nearest_in_simplex(&vertices, &self.query);
+            if beyond > 0.0 {
+                self.seen.push(id);
+                self.seen_vertices.extend(facet.vertices());
+            }
+        }
+        let (_, fallback) = farthest_plane.expect("a hull has facets");
+        if self.seen.is_empty() {
+            // Rounding hid every facet the query sees: it is within rounding of the boundary.
+            self.seen.push(fallback);
+            self.seen_vertices.extend(hull.facet(fallback).vertices());
+        }
+        self.seen_vertices.sort_unstable();
+        self.seen_vertices.dedup();
+        let vertices = &self.seen_vertices;
+        let nearest = min_norm_point(vertices.len(), |i| hull.point(vertices[i]), &self.query);
+        // Wolfe's optimality test, redone here with a tolerance: no vertex may lie beyond the
+        // plane through the answer normal to q − x. Nearly coincident points can make its linear
+        // algebra fail; then try every face of every facet the query sees instead.
+        let x = nearest.point;
+        let direction: [f64; D] = std::array::from_fn(|c| self.query[c] - x[c]);
+        let level = dot(&direction, &x);
+        let extent = vertices
+            .iter()
+            .map(|&v| dot(&hull.point(v), &hull.point(v)).sqrt())
+            .fold(0.0, f64::max);
+        let slack = 1e-12 * extent * dot(&direction, &direction).sqrt();
+        let optimal = vertices
+            .iter()
+            .all(|&v| dot(&direction, &hull.point(v)) <= level + slack);
+        if optimal {
+            let support = nearest.support().iter().map(|&i| vertices[i]);
+            let holder = self.seen.iter().copied().find(|&id| {
+                let facet_vertices = hull.facet(id).vertices();
+                support.clone().all(|v| facet_vertices.contains(&v))
+            });
+            return (x, holder.unwrap_or(fallback), nearest.distance);
+        }
+        let mut best: Option<([f64; D], FacetId, f64)> = None;
+        for &id in &self.seen {
+            let simplex = hull.facet(id).vertices().map(|v| hull.point(v));
+            let (x, d) = nearest_in_simplex(&simplex, &self.query);
             if best.is_none_or(|(_, _, b)| d < b) {
                 best = Some((x, id, d));
             }
         }
-        best.expect("at least one candidate facet")
+        best.expect("at least one facet is seen")
     }
 }
 
-impl<const D: usize> Strategy<D> for ClosestToOrigin<D> {
+impl<const D: usize, S: PointSource<D>> Strategy<D> for ClosestToOrigin<D, S> {
     type Output = DistanceResult<D>;
 
     fn start(&mut self, hull: &Hull<D>) {
@@ -257,6 +390,10 @@ impl<const D: usize> Strategy<D> for ClosestToOrigin<D> {
             Phase::Outside => self.step_outside(hull),
             Phase::Done => Step::Stop,
         }
+    }
+
+    fn refines_all_normals(&self) -> bool {
+        false // only the deciding facet's normal is reported, and it is refined before use
     }
 
     fn finish(self, hull: &Hull<D>) -> Self::Output {

@@ -44,9 +44,9 @@ use std::time::Duration;
 
 mod closest_to_origin;
 mod farthest_point;
-mod nearest;
+pub(crate) mod nearest;
 
-pub use closest_to_origin::{ClosestToOrigin, DistanceResult};
+pub use closest_to_origin::{ClosestToOrigin, DistanceResult, NoSource, PointSource};
 pub use farthest_point::FarthestPoint;
 
 /// Work counters every strategy reports (the seed paper's evaluation measures).
@@ -81,4 +81,10 @@ pub trait Strategy<const D: usize> {
     fn step(&mut self, hull: &mut Hull<D>) -> Step;
     /// Produce the result.
     fn finish(self, hull: &Hull<D>) -> Self::Output;
+    /// Whether the engine should make every live facet's normal precise before
+    /// [`finish`](Self::finish) ([`Hull::refine_normals`]). Default `true`; a partial strategy
+    /// that refines the facets it reports (through its `&mut Hull`) can skip the rest.
+    fn refines_all_normals(&self) -> bool {
+        true
+    }
 }

@@ -1,0 +1,426 @@
+//! Grasp quality: the Ferrari–Canny metrics Q1 and Q∞, exactly, by a partial hull.
+//!
+//! # Definitions (the crate's grasp conventions)
+//!
+//! * **Q1**: the signed distance from the origin to the boundary of CH(∪ w_ij), the union of every
+//!   contact's cone-edge wrenches. Positive ⇔ force closure. A grasp that is not force closure
+//!   gets −(distance from the origin to the hull), 0 on the boundary — also when the wrenches do
+//!   not span 6-D (two hard-finger contacts: rank 5), which is never an error.
+//! * **Q∞**: the same over the Minkowski sum ⊕_i {w_i1 … w_ik} (k^m points, never materialised by
+//!   the partial method: "is anything beyond this facet?" is answered from the support function —
+//!   the support point of a Minkowski sum is the sum of each contact's support point). GraspIt!'s
+//!   variant adds the zero wrench to every contact's set ([`Metric::QInf`] `with_zero_wrench`).
+//!
+//! # Exactness
+//!
+//! The metrics are evaluated on the wrenches *snapped* to a grid on which every friction pyramid
+//! is exactly planar ([`Grasp::snapped_wrenches_into`]; relative change < 6·10⁻⁸ of the largest
+//! coordinate). On that set, every inside/outside decision is an exact predicate, so
+//! `force_closure` is exact and the partial method returns the full hull's answer (the same
+//! facet's plane distance when force closure; the nearest point of the hull otherwise). Values
+//! are floating point: the distance to an exactly chosen facet (relative error ~1e−15), or the
+//! nearest point by Wolfe's algorithm (~1e−13) when the grasp is not force closure.
+//!
+//! ```
+//! use pqhull::grasp::quality::{Evaluator, Method, Metric};
+//! use pqhull::grasp::{Contact, FrictionModel, Grasp};
+//!
+//! // Four fingers on the unit cube [−½, ½]³, two pairs of opposite faces.
+//! let contacts = vec![
+//!     Contact::try_new([-0.5, 0.1, 0.0], [1.0, 0.0, 0.0], None)?,
+//!     Contact::try_new([0.5, -0.1, 0.0], [-1.0, 0.0, 0.0], None)?,
+//!     Contact::try_new([0.0, -0.5, 0.2], [0.0, 1.0, 0.0], None)?,
+//!     Contact::try_new([0.1, 0.5, -0.2], [0.0, -1.0, 0.0], None)?,
+//! ];
+//! let grasp = Grasp::builder(contacts, FrictionModel::try_new(0.5, 8)?)
+//!     .torque_scale(0.75_f64.sqrt())
+//!     .build()?;
+//!
+//! let mut partial = Evaluator::new(Metric::Q1, Method::Partial);
+//! let mut full = Evaluator::new(Metric::Q1, Method::Full);
+//! let (a, b) = (partial.evaluate(&grasp)?, full.evaluate(&grasp)?);
+//! assert!(a.force_closure && a.value > 0.0);
+//! assert!((a.value - b.value).abs() <= 1e-12 * b.value);
+//! assert!(a.stats.facets_created < b.stats.facets_created);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use super::Grasp;
+use super::snap::{SnappedCones, snapped_union};
+use crate::strategy::nearest::{min_norm_point, nearest_in_simplex};
+use crate::strategy::{ClosestToOrigin, Stats};
+use crate::{Hull, HullError};
+use std::fmt;
+use std::time::Instant;
+
+mod minkowski;
+pub use minkowski::MINKOWSKI_MATERIALISE_LIMIT;
+
+/// Which metric to evaluate.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Metric {
+    /// Ferrari–Canny Q1 over the union of the contact wrenches.
+    #[default]
+    Q1,
+    /// Ferrari–Canny Q∞ over the Minkowski sum of the contacts' wrench sets.
+    QInf {
+        /// GraspIt!'s variant: the zero wrench joins every contact's set.
+        with_zero_wrench: bool,
+    },
+}
+
+/// How to evaluate it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Method {
+    /// The partial hull (`ClosestToOrigin`, PQHGWS): stops as soon as the answer is certain.
+    #[default]
+    Partial,
+    /// The full hull with this crate's engine, then the answer from all its facets.
+    Full,
+    /// The full hull by Qhull (feature `qhull`), for comparison.
+    #[cfg(feature = "qhull")]
+    Qhull,
+}
+
+/// Up to seven wrenches: a facet's six, or the points spanning a nearest face.
+const MAX_DECIDING: usize = 7;
+
+/// The result of one evaluation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Quality {
+    /// Whether the origin lies strictly inside the wrench hull (decided exactly).
+    pub force_closure: bool,
+    /// The metric: positive distance to the nearest facet when force closure, else −(distance
+    /// from the origin to the hull), 0 on the boundary.
+    pub value: f64,
+    deciding: [[f64; 6]; MAX_DECIDING],
+    deciding_len: usize,
+    /// Work done (for the full methods: the whole hull).
+    pub stats: Stats,
+}
+
+impl Quality {
+    /// The wrenches that decide the value: the vertices of the nearest facet when force closure;
+    /// otherwise the wrenches spanning the face that holds the hull's point nearest the origin.
+    pub fn deciding_wrenches(&self) -> &[[f64; 6]] {
+        &self.deciding[..self.deciding_len]
+    }
+
+    fn new(value: f64, deciding: impl Iterator<Item = [f64; 6]>, stats: Stats) -> Self {
+        let mut quality = Quality {
+            force_closure: value > 0.0,
+            value,
+            deciding: [[0.0; 6]; MAX_DECIDING],
+            deciding_len: 0,
+            stats,
+        };
+        for w in deciding.take(MAX_DECIDING) {
+            quality.deciding[quality.deciding_len] = w;
+            quality.deciding_len += 1;
+        }
+        quality
+    }
+}
+
+/// Why a grasp could not be evaluated.
+#[derive(Clone, Debug, PartialEq)]
+pub enum QualityError {
+    /// A wrench overflowed (a torque scale tiny next to the lever arms).
+    NonFiniteWrench,
+    /// The full or Qhull method would have to materialise more Minkowski points than
+    /// [`MINKOWSKI_MATERIALISE_LIMIT`] (`None`: more than `usize::MAX`).
+    MinkowskiTooLarge {
+        /// k^m (or (k+1)^m with the zero wrench).
+        points: Option<usize>,
+    },
+    /// Qhull failed (feature `qhull`).
+    Qhull(String),
+}
+
+impl fmt::Display for QualityError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            QualityError::NonFiniteWrench => write!(
+                f,
+                "a wrench is not finite: the torque scale is too small for the lever arms"
+            ),
+            QualityError::MinkowskiTooLarge { points } => {
+                let count = points.map_or("more than usize::MAX".to_string(), |p| p.to_string());
+                write!(
+                    f,
+                    "the Minkowski sum has {count} points, more than the {MINKOWSKI_MATERIALISE_LIMIT} \
+                     the full and qhull methods materialise; use the partial method"
+                )
+            }
+            QualityError::Qhull(message) => write!(f, "qhull failed: {message}"),
+        }
+    }
+}
+
+impl std::error::Error for QualityError {}
+
+/// Evaluates one metric by one method over many grasps, reusing its buffers: after the first
+/// grasps, only the hull itself allocates.
+#[derive(Clone, Debug)]
+pub struct Evaluator {
+    metric: Metric,
+    method: Method,
+    cones: SnappedCones,
+    wrenches: Vec<[f64; 6]>,
+}
+
+impl Evaluator {
+    /// An evaluator for `metric` by `method`.
+    pub fn new(metric: Metric, method: Method) -> Self {
+        Evaluator {
+            metric,
+            method,
+            cones: SnappedCones::default(),
+            wrenches: Vec::new(),
+        }
+    }
+
+    /// The metric evaluated.
+    pub fn metric(&self) -> Metric {
+        self.metric
+    }
+
+    /// The method used.
+    pub fn method(&self) -> Method {
+        self.method
+    }
+
+    /// Evaluates `grasp`.
+    ///
+    /// # Errors
+    /// [`QualityError::NonFiniteWrench`] when the torque scale overflows the wrenches;
+    /// [`QualityError::MinkowskiTooLarge`] for Q∞ by a full method with too many points;
+    /// [`QualityError::Qhull`] when Qhull fails.
+    pub fn evaluate(&mut self, grasp: &Grasp) -> Result<Quality, QualityError> {
+        let started = Instant::now();
+        self.cones.fill(grasp);
+        if !self.cones.is_finite() {
+            return Err(QualityError::NonFiniteWrench);
+        }
+        let mut quality = match self.metric {
+            Metric::Q1 => {
+                snapped_union(&self.cones, &mut self.wrenches);
+                self.explicit(started)?
+            }
+            Metric::QInf { with_zero_wrench } => match self.method {
+                Method::Partial => minkowski::partial(&self.cones, with_zero_wrench)?,
+                _ => {
+                    minkowski::materialise(&self.cones, with_zero_wrench, &mut self.wrenches)?;
+                    self.explicit(started)?
+                }
+            },
+        };
+        quality.stats.elapsed = started.elapsed();
+        Ok(quality)
+    }
+
+    /// The metric over the explicit point set in `self.wrenches`.
+    fn explicit(&self, started: Instant) -> Result<Quality, QualityError> {
+        let w = &self.wrenches;
+        match self.method {
+            Method::Partial => Ok(partial_q1(w, started)),
+            Method::Full => Ok(full_q1(w, started)),
+            #[cfg(feature = "qhull")]
+            Method::Qhull => qhull_q1(w, started),
+        }
+    }
+}
+
+/// Q1 of `grasp` by the partial hull.
+///
+/// # Errors
+/// As [`Evaluator::evaluate`].
+pub fn q1(grasp: &Grasp) -> Result<Quality, QualityError> {
+    Evaluator::new(Metric::Q1, Method::Partial).evaluate(grasp)
+}
+
+/// Q∞ of `grasp` (without the zero wrench) by the partial hull over the implicit Minkowski sum.
+///
+/// # Errors
+/// As [`Evaluator::evaluate`].
+pub fn q_inf(grasp: &Grasp) -> Result<Quality, QualityError> {
+    Evaluator::new(
+        Metric::QInf {
+            with_zero_wrench: false,
+        },
+        Method::Partial,
+    )
+    .evaluate(grasp)
+}
+
+/// Q1 of an explicit wrench set (not snapped: exact on exactly these numbers), by `method`.
+///
+/// ```
+/// use pqhull::grasp::quality::{q1_of_wrenches, Method};
+/// // ±e_i in 6-D: the cross-polytope, whose facets lie at distance 1/√6.
+/// let mut w = Vec::new();
+/// for i in 0..6 {
+///     for s in [1.0, -1.0] {
+///         let mut e = [0.0; 6];
+///         e[i] = s;
+///         w.push(e);
+///     }
+/// }
+/// let q = q1_of_wrenches(&w, Method::Partial)?;
+/// assert!(q.force_closure && (q.value - 1.0 / 6f64.sqrt()).abs() < 1e-15);
+/// # Ok::<(), pqhull::grasp::quality::QualityError>(())
+/// ```
+///
+/// # Errors
+/// [`QualityError::NonFiniteWrench`] for a NaN or infinite coordinate; [`QualityError::Qhull`].
+pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Quality, QualityError> {
+    if wrenches.iter().flatten().any(|x| !x.is_finite()) {
+        return Err(QualityError::NonFiniteWrench);
+    }
+    if wrenches.is_empty() {
+        return Ok(Quality::new(f64::NEG_INFINITY, std::iter::empty(), Stats::default()));
+    }
+    let started = Instant::now();
+    let mut quality = match method {
+        Method::Partial => partial_q1(wrenches, started),
+        Method::Full => full_q1(wrenches, started),
+        #[cfg(feature = "qhull")]
+        Method::Qhull => qhull_q1(wrenches, started)?,
+    };
+    quality.stats.elapsed = started.elapsed();
+    Ok(quality)
+}
+
+/// Evaluates every grasp on all cores (rayon's global pool), results in input order. Each worker
+/// reuses one [`Evaluator`].
+pub fn evaluate_batch(
+    grasps: &[Grasp],
+    metric: Metric,
+    method: Method,
+) -> Vec<Result<Quality, QualityError>> {
+    use rayon::prelude::*;
+    grasps
+        .par_iter()
+        .map_init(
+            || Evaluator::new(metric, method),
+            |evaluator, grasp| evaluator.evaluate(grasp),
+        )
+        .collect()
+}
+
+/// Stats of work that built no hull (a degenerate wrench set).
+fn no_hull_stats(points: usize, started: Instant) -> Stats {
+    Stats {
+        points_processed: points,
+        facets_created: 0,
+        expansions: 0,
+        elapsed: started.elapsed(),
+    }
+}
+
+/// −(distance from the origin to CH(w)) for a set too degenerate for a hull: never force closure.
+fn degenerate(w: &[[f64; 6]], started: Instant) -> Quality {
+    let nearest = min_norm_point(w.len(), |i| w[i], &[0.0; 6]);
+    let support = nearest.support().iter().map(|&i| w[i]);
+    Quality::new(-nearest.distance, support, no_hull_stats(w.len(), started))
+}
+
+pub(crate) fn partial_q1(w: &[[f64; 6]], started: Instant) -> Quality {
+    match Hull::try_with_strategy(w, ClosestToOrigin::new()) {
+        Ok((_, result)) => Quality::new(
+            result.signed_distance,
+            result.closest_facet_vertices.iter().map(|&v| w[v]),
+            result.stats,
+        ),
+        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
+            degenerate(w, started)
+        }
+        Err(e) => unreachable!("snapped wrenches are finite and few: {e}"),
+    }
+}
+
+fn full_q1(w: &[[f64; 6]], started: Instant) -> Quality {
+    let hull = match Hull::try_new(w) {
+        Ok(hull) => hull,
+        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
+            return degenerate(w, started);
+        }
+        Err(e) => unreachable!("snapped wrenches are finite and few: {e}"),
+    };
+    let origin = [0.0; 6];
+    let stats = hull.stats();
+    let mut beyond = false;
+    let mut on_boundary = false;
+    let mut nearest: Option<(f64, crate::FacetId)> = None;
+    for (id, facet) in hull.facets() {
+        match hull.side_of(id, &origin) {
+            crate::predicates::Sign::Positive => beyond = true,
+            crate::predicates::Sign::Zero => on_boundary = true,
+            crate::predicates::Sign::Negative => {}
+        }
+        let distance = -facet.signed_distance(&origin);
+        if nearest.is_none_or(|(d, _)| distance < d) {
+            nearest = Some((distance, id));
+        }
+    }
+    if !beyond {
+        let (distance, id) = nearest.expect("a hull has facets");
+        let value = if on_boundary {
+            0.0
+        } else {
+            distance.max(f64::MIN_POSITIVE)
+        };
+        let deciding = hull.facet(id).vertices().map(|v| w[v]);
+        return Quality::new(value, deciding.into_iter(), stats);
+    }
+    // Outside: the nearest point over every facet the origin sees (exhaustive).
+    let mut best: Option<(f64, [usize; 6])> = None;
+    for (id, facet) in hull.facets() {
+        if hull.side_of(id, &origin) != crate::predicates::Sign::Positive {
+            continue;
+        }
+        if best.is_some_and(|(d, _)| facet.signed_distance(&origin) >= d) {
+            continue; // the plane is already farther than the best point
+        }
+        let simplex = facet.vertices().map(|v| w[v]);
+        let (_, d) = nearest_in_simplex(&simplex, &origin);
+        if best.is_none_or(|(b, _)| d < b) {
+            best = Some((d, facet.vertices()));
+        }
+    }
+    let (distance, vertices) = best.expect("the origin sees a facet");
+    Quality::new(-distance, vertices.iter().map(|&v| w[v]), stats)
+}
+
+#[cfg(feature = "qhull")]
+fn qhull_q1(w: &[[f64; 6]], started: Instant) -> Result<Quality, QualityError> {
+    use crate::qhull_baseline::{QhullError, qhull_full_hull};
+    let hull = match qhull_full_hull(w) {
+        Ok(hull) => hull,
+        // Too few points, or flat input (QH6154): no hull, a distance all the same.
+        Err(QhullError::TooFewPoints { .. } | QhullError::Qhull { code: 6154, .. }) => {
+            return Ok(degenerate(w, started));
+        }
+        Err(e) => return Err(QualityError::Qhull(e.to_string())),
+    };
+    let stats = Stats {
+        points_processed: hull.vertices.len(),
+        facets_created: hull.facets.len(),
+        expansions: 0,
+        elapsed: started.elapsed(),
+    };
+    // Qhull's planes are floating point: the origin is inside when every offset is negative.
+    let nearest = hull
+        .facets
+        .iter()
+        .min_by(|a, b| (-a.offset).total_cmp(&-b.offset))
+        .expect("a hull has facets");
+    if nearest.offset < 0.0 && hull.facets.iter().all(|f| f.offset < 0.0) {
+        let deciding = nearest.vertices.iter().map(|&v| w[v]);
+        return Ok(Quality::new(-nearest.offset, deciding, stats));
+    }
+    let vertices = &hull.vertices;
+    let point = min_norm_point(vertices.len(), |i| w[vertices[i]], &[0.0; 6]);
+    let support = point.support().iter().map(|&i| w[vertices[i]]);
+    Ok(Quality::new(-point.distance, support, stats))
+}

@@ -1,0 +1,152 @@
+//! Wrenches snapped to a grid on which the friction pyramids are exactly planar.
+//!
+//! Contact i's wrenches are w_ij = u_i + cos θ_j · v_i + sin θ_j · s_i with u_i = A_i n_i,
+//! v_i = μ A_i t_i, s_i = μ A_i (n_i × t_i) and A_i f = [f ; (p_i − c) × f / ρ]: all k of them lie in
+//! one 2-D plane of wrench space. Computed naively in floating point they do not, quite, and an
+//! exact hull then sees thousands of sliver facets that exist only in the rounding (and spends
+//! its time in exact arithmetic deciding them). Snapping u, v, s to a grid of 2^−24 of each
+//! coordinate's largest magnitude, and cos θ, sin θ to 2^−24, makes every product and sum below
+//! exact in `f64` (24 + 25 bits per product, three terms, < 2^50 grid units), so the snapped
+//! wrenches are *exactly* u + cos·v + sin·s, exactly coplanar per contact, and any sum of one
+//! wrench per contact (the Q∞ Minkowski points) is exact too for up to 10 contacts
+//! (< 3m·2^48 < 2^53 units). The change is below 2^−24 ≈ 6·10^−8 relative to the largest
+//! coordinate — far below the error of the k-edge friction pyramid itself.
+
+use super::Grasp;
+use super::vec3::sub;
+use std::f64::consts::PI;
+
+/// Bits kept by the snapping (see the module docs for why 24).
+const BITS: i32 = 24;
+
+/// The snapped generators of every contact: `[u, v, s]` per contact, and the snapped (cos, sin)
+/// of every edge angle.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct SnappedCones {
+    pub(crate) generators: Vec<[[f64; 6]; 3]>,
+    pub(crate) angles: Vec<(f64, f64)>,
+}
+
+fn snap(x: f64, grid: f64) -> f64 {
+    (x / grid).round() * grid
+}
+
+impl SnappedCones {
+    /// Recomputes the generators for `grasp`, reusing this value's buffers.
+    pub(crate) fn fill(&mut self, grasp: &Grasp) {
+        let mu = grasp.friction.friction();
+        let k = grasp.friction.cone_edges();
+        self.generators.clear();
+        for contact in &grasp.contacts {
+            let r = sub(contact.position(), grasp.torque_reference);
+            let scaled = |v: [f64; 3]| v.map(|x| x * mu);
+            self.generators.push([
+                grasp.wrench(r, contact.normal()),
+                grasp.wrench(r, scaled(contact.tangent())),
+                grasp.wrench(r, scaled(contact.bitangent())),
+            ]);
+        }
+        let mut grid = [1.0f64; 6];
+        for (c, g) in grid.iter_mut().enumerate() {
+            let largest = self
+                .generators
+                .iter()
+                .flat_map(|generator| generator.iter().map(|w| w[c].abs()))
+                .fold(0.0f64, f64::max);
+            if largest > 0.0 {
+                // 2^e > largest, so snapped values are integers below 2^24 in units of the grid.
+                let e = largest.log2().floor() as i32 + 1;
+                *g = 2f64.powi(e - BITS);
+            }
+        }
+        for generator in &mut self.generators {
+            for w in generator.iter_mut() {
+                for (x, &g) in w.iter_mut().zip(&grid) {
+                    *x = snap(*x, g);
+                }
+            }
+        }
+        let unit = 2f64.powi(-BITS);
+        self.angles.clear();
+        self.angles.extend((0..k).map(|j| {
+            let (sin, cos) = (2.0 * PI * j as f64 / k as f64).sin_cos();
+            (snap(cos, unit), snap(sin, unit))
+        }));
+    }
+
+    /// Wrench j of contact i: u + cos·v + sin·s, exact in `f64`.
+    pub(crate) fn wrench(&self, i: usize, j: usize) -> [f64; 6] {
+        let [u, v, s] = &self.generators[i];
+        let (cos, sin) = self.angles[j];
+        std::array::from_fn(|c| u[c] + cos * v[c] + sin * s[c])
+    }
+
+    /// Whether every generator is finite (a tiny torque scale can overflow).
+    pub(crate) fn is_finite(&self) -> bool {
+        self.generators.iter().flatten().flatten().all(|x| x.is_finite())
+    }
+}
+
+impl Grasp {
+    /// The Q1 wrench set as the metrics evaluate it: [`Grasp::wrenches`] snapped to a grid on
+    /// which each contact's friction pyramid is exactly planar (relative change below 6·10⁻⁸ of
+    /// the largest coordinate; see the [quality module](crate::grasp::quality)). Contact-major,
+    /// written into `out` (cleared first).
+    pub fn snapped_wrenches_into(&self, out: &mut Vec<[f64; 6]>) {
+        let mut cones = SnappedCones::default();
+        cones.fill(self);
+        snapped_union(&cones, out);
+    }
+}
+
+/// The union of the snapped wrenches, contact-major.
+pub(crate) fn snapped_union(cones: &SnappedCones, out: &mut Vec<[f64; 6]>) {
+    out.clear();
+    for i in 0..cones.generators.len() {
+        out.extend((0..cones.angles.len()).map(|j| cones.wrench(i, j)));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::Hull;
+    use crate::HullError;
+    use crate::grasp::{Contact, FrictionModel, Grasp};
+
+    fn grasp(k: usize) -> Grasp {
+        let contacts = vec![
+            Contact::try_new([0.31, -0.2, 0.17], [-0.3, 1.0, 0.2], None).unwrap(),
+            Contact::try_new([-0.4, 0.25, -0.1], [1.0, -0.1, 0.3], None).unwrap(),
+        ];
+        Grasp::builder(contacts, FrictionModel::try_new(0.7, k).unwrap())
+            .torque_reference([0.01, 0.02, -0.03])
+            .torque_scale(0.6)
+            .build()
+            .unwrap()
+    }
+
+    #[test]
+    fn snapped_wrenches_are_close_and_exactly_planar_per_contact() {
+        let g = grasp(16);
+        let raw = g.wrenches();
+        let mut snapped = Vec::new();
+        g.snapped_wrenches_into(&mut snapped);
+        assert_eq!(raw.len(), snapped.len());
+        let largest = raw.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+        for (a, b) in raw.iter().zip(&snapped) {
+            for c in 0..6 {
+                assert!((a[c] - b[c]).abs() <= 1e-6 * largest, "{a:?} vs {b:?}");
+            }
+        }
+        // One contact's 16 wrenches span exactly a 2-flat (exact rank), where the raw ones,
+        // rounded independently, span 6-D.
+        let planar = Hull::try_new(&snapped[..16]).unwrap_err();
+        assert_eq!(planar, HullError::AffinelyDependent { rank: 2, dimension: 6 });
+        let raw_rank = match Hull::try_new(&raw[..16]) {
+            Ok(_) => 6,
+            Err(HullError::AffinelyDependent { rank, .. }) => rank,
+            Err(e) => panic!("{e}"),
+        };
+        assert!(raw_rank > 2, "raw rank {raw_rank}");
+    }
+}

@@ -1,0 +1,383 @@
+//! Allocation-free exact determinants of matrices whose column-scaled entries fit in `i64`.
+//!
+//! The exact path's usual inputs — degenerate configurations built on a grid, such as the friction
+//! pyramids of [`crate::grasp`], whose edges lie exactly in one plane per contact — have entries
+//! that are small integers once each *column* is scaled by its own power of two (which multiplies
+//! the determinant by a positive power of two, so its sign and the direction of the cofactor
+//! vector, after undoing the scaling, are unchanged). Their determinants then fit in a few hundred
+//! bits, and a Laplace expansion over column subsets (the same minors-of-minors scheme the filter
+//! uses) in fixed-width two's-complement integers is an order of magnitude faster than `BigInt`
+//! Bareiss, which allocates for every operation. No maintained crate offers fixed-width signed
+//! integers of ~600 bits with `i64` scaling and no allocation, hence the small type below.
+
+use super::Sign;
+use super::exact::decompose;
+
+/// 640 bits: a minor of order r ≤ 8 with |entries| < 2^63 is below r!·2^(63·r) ≤ 2^520, and so is
+/// every partial sum of its expansion (bounded by the permanent).
+const LIMBS: usize = 10;
+
+/// A fixed-width two's-complement integer of which only the low `len` limbs are used: arithmetic
+/// is modulo 2^(64·len), exact whenever every value fits (the caller sizes `len` from its entries'
+/// bit lengths), and costs O(len) instead of O(LIMBS).
+#[derive(Clone, Copy, Debug)]
+struct Wide([u64; LIMBS]);
+
+impl Wide {
+    const ZERO: Wide = Wide([0; LIMBS]);
+    const ONE: Wide = {
+        let mut limbs = [0; LIMBS];
+        limbs[0] = 1;
+        Wide(limbs)
+    };
+
+    fn is_negative(&self, len: usize) -> bool {
+        self.0[len - 1] >> 63 == 1
+    }
+
+    fn sign(&self, len: usize) -> Sign {
+        if self.is_negative(len) {
+            Sign::Negative
+        } else if self.0[..len].iter().all(|&l| l == 0) {
+            Sign::Zero
+        } else {
+            Sign::Positive
+        }
+    }
+
+    fn negate(&mut self, len: usize) {
+        let mut carry = 1u64;
+        for limb in &mut self.0[..len] {
+            let (v, c) = (!*limb).overflowing_add(carry);
+            *limb = v;
+            carry = u64::from(c);
+        }
+    }
+
+    /// `self += a · m`, or `self -= a · m` when `subtract`.
+    fn add_product(&mut self, a: i64, subtract: bool, m: &Wide, len: usize) {
+        if a == 0 {
+            return;
+        }
+        let mut product = Wide::ZERO;
+        let factor = u128::from(a.unsigned_abs());
+        let mut carry = 0u128;
+        for (out, &limb) in product.0[..len].iter_mut().zip(&m.0) {
+            let t = u128::from(limb) * factor + carry;
+            *out = t as u64;
+            carry = t >> 64;
+        }
+        if (a < 0) != subtract {
+            product.negate(len);
+        }
+        let mut carry = 0u64;
+        for (limb, &p) in self.0[..len].iter_mut().zip(&product.0) {
+            let (s1, c1) = limb.overflowing_add(p);
+            let (s2, c2) = s1.overflowing_add(carry);
+            *limb = s2;
+            carry = u64::from(c1) + u64::from(c2);
+        }
+    }
+
+    /// `(mantissa, exponent)` with `self ≈ mantissa · 2^exponent`, the mantissa holding the top 64
+    /// significant bits (truncated, then rounded to `f64`: a relative error below 2^-52).
+    fn to_f64_parts(self, len: usize) -> (f64, i32) {
+        let negative = self.is_negative(len);
+        let mut magnitude = self;
+        if negative {
+            magnitude.negate(len);
+        }
+        let Some(top) = (0..len).rev().find(|&i| magnitude.0[i] != 0) else {
+            return (0.0, 0);
+        };
+        let lead = magnitude.0[top].leading_zeros();
+        let high = u128::from(magnitude.0[top]) << 64
+            | u128::from(if top > 0 { magnitude.0[top - 1] } else { 0 });
+        let bits = (high << lead >> 64) as u64;
+        let exponent = 64 * top as i32 - lead as i32;
+        let value = bits as f64;
+        (if negative { -value } else { value }, exponent)
+    }
+}
+
+/// The difference matrix `[p1 − p0; p2 − p0; …]` of `points` (rows beyond `points.len() − 1` stay
+/// zero) with every column scaled to integers, the scaling exponent of each column, and the sum
+/// over columns of the bit length of the column's largest entry (a minor over any set of columns
+/// is below 8!·2^bits < 2^(bits + 16)); `None` when some scaled coordinate does not fit in 62 bits
+/// (the caller then uses `BigInt`).
+///
+/// # Panics
+/// If a coordinate is not finite.
+fn integer_rows<const D: usize>(
+    points: &[&[f64; D]],
+) -> Option<([[i64; D]; D], [i32; D], u32)> {
+    let mut matrix = [[0i64; D]; D];
+    let mut exponents = [0i32; D];
+    let mut bits = 0u32;
+    for c in 0..D {
+        let emin = points
+            .iter()
+            .map(|p| decompose(p[c]))
+            .filter(|&(m, _)| m != 0)
+            .map(|(_, e)| e)
+            .min()
+            .unwrap_or(0);
+        exponents[c] = emin;
+        let base = column_integer(points[0][c], emin)?;
+        let mut largest = 0u64;
+        for r in 1..points.len() {
+            let entry = column_integer(points[r][c], emin)? - base;
+            matrix[r - 1][c] = entry;
+            largest = largest.max(entry.unsigned_abs());
+        }
+        bits += 64 - largest.leading_zeros();
+    }
+    Some((matrix, exponents, bits))
+}
+
+/// Limbs for values below 2^bits, plus a sign bit.
+fn limbs_for(bits: u32) -> usize {
+    ((bits + 1) as usize).div_ceil(64).clamp(1, LIMBS)
+}
+
+thread_local! {
+    /// Scratch for [`subset_minors`]: 20 KB that would otherwise be zeroed on every call.
+    static MINORS: std::cell::RefCell<Vec<Wide>> = std::cell::RefCell::new(vec![Wide::ZERO; 256]);
+}
+
+/// Minors of the first `rows` rows over every column subset of size `rows`, by Laplace expansion
+/// along each new row (`minors[mask]` for `mask.count_ones() == rows`), handed to `read`.
+fn subset_minors<const D: usize, T>(
+    matrix: &[[i64; D]; D],
+    rows: usize,
+    len: usize,
+    read: impl FnOnce(&[Wide]) -> T,
+) -> T {
+    MINORS.with_borrow_mut(|minors| {
+        minors[0] = Wide::ONE;
+        for (r, row) in matrix.iter().enumerate().take(rows) {
+            // Masks of size r + 1 from the minors of size r written by the previous pass.
+            for mask in 1usize..1 << D {
+                if mask.count_ones() as usize != r + 1 {
+                    continue;
+                }
+                let mut sum = Wide::ZERO;
+                let mut subtract = r % 2 == 1;
+                let mut bits = mask;
+                while bits != 0 {
+                    let c = bits.trailing_zeros() as usize;
+                    bits &= bits - 1;
+                    let sub = minors[mask & !(1 << c)];
+                    sum.add_product(row[c], subtract, &sub, len);
+                    subtract = !subtract;
+                }
+                minors[mask] = sum;
+            }
+        }
+        read(minors)
+    })
+}
+
+/// A facet's hyperplane with exact integer cofactors, for repeated exact side tests against the
+/// same facet (a point of a planar friction pyramid is tested against every facet through three of
+/// its neighbours, and the determinant is exactly zero each time): one test then costs D products
+/// instead of a full determinant.
+#[derive(Clone, Debug)]
+pub(crate) struct ExactPlane<const D: usize> {
+    /// Signed cofactors `C_j` of the column-scaled difference matrix.
+    cofactors: [Wide; D],
+    /// Limbs in use: enough for every cofactor times a coordinate difference of up to 63 bits.
+    len: usize,
+    /// Column scaling: column j holds multiples of 2^exponents[j].
+    exponents: [i32; D],
+    /// The base vertex `v0` in column units.
+    base: [i64; D],
+}
+
+impl<const D: usize> ExactPlane<D> {
+    /// `None` when the column-scaled vertex coordinates do not fit in `i64`.
+    pub(crate) fn new(vertices: &[[f64; D]; D]) -> Option<Self> {
+        let points: [&[f64; D]; D] = std::array::from_fn(|i| &vertices[i]);
+        let (matrix, exponents, bits) = integer_rows(&points)?;
+        // A side test sums D ≤ 8 products of a cofactor (< 2^(bits + 16)) by a difference of two
+        // column integers (< 2^63).
+        let len = limbs_for(bits + 16 + 63 + 3);
+        let full = (1usize << D) - 1;
+        let cofactors = subset_minors(&matrix, D - 1, len, |minors| {
+            std::array::from_fn(|j| {
+                let mut c = minors[full & !(1 << j)];
+                if (D - 1 + j) % 2 == 1 {
+                    c.negate(len);
+                }
+                c
+            })
+        });
+        let base = std::array::from_fn(|j| column_integer(vertices[0][j], exponents[j]))
+            .map(|b: Option<i64>| b.expect("integer_rows checked every vertex coordinate"));
+        Some(ExactPlane {
+            cofactors,
+            len,
+            exponents,
+            base,
+        })
+    }
+
+    /// The direction of the exact cofactor vector (the facet's outward normal), rounded to `f64`.
+    pub(crate) fn normal_direction(&self) -> [f64; D] {
+        scaled_direction(
+            self.cofactors.map(|c| c.to_f64_parts(self.len)),
+            &self.exponents,
+        )
+    }
+
+    /// Exact sign of `det[v1 − v0; …; v(D−1) − v0; p − v0] = Σ_j C_j·(p_j − v0_j)`, or `None` when
+    /// a coordinate of `p` is off this plane's column grid or too large for `i64`.
+    ///
+    /// # Panics
+    /// If a coordinate of `p` is not finite.
+    pub(crate) fn side(&self, p: &[f64; D]) -> Option<Sign> {
+        let mut sum = Wide::ZERO;
+        for j in 0..D {
+            let x = column_integer(p[j], self.exponents[j])?;
+            sum.add_product(x - self.base[j], false, &self.cofactors[j], self.len);
+        }
+        Some(sum.sign(self.len))
+    }
+}
+
+/// `x / 2^exponent` when it is an integer of magnitude below 2^62 (so that a difference of two fits
+/// in `i64`).
+///
+/// # Panics
+/// If `x` is not finite.
+fn column_integer(x: f64, exponent: i32) -> Option<i64> {
+    let (m, e) = decompose(x);
+    if m == 0 {
+        return Some(0);
+    }
+    let shift = u32::try_from(e - exponent).ok()?;
+    let bits = 64 - m.unsigned_abs().leading_zeros();
+    (bits + shift <= 62).then(|| m << shift)
+}
+
+/// Exact sign of `det[v1 − v0; …; v(D−1) − v0; p − v0]`, or `None` when the column-scaled entries
+/// do not fit in `i64`.
+pub(crate) fn orientation<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> Option<Sign> {
+    let mut points: [&[f64; D]; 9] = [p; 9];
+    for (slot, v) in points.iter_mut().zip(vertices) {
+        *slot = v;
+    }
+    let (matrix, _, bits) = integer_rows(&points[..=D])?;
+    let len = limbs_for(bits + 16);
+    Some(subset_minors(&matrix, D, len, |minors| {
+        minors[(1 << D) - 1].sign(len)
+    }))
+}
+
+/// The exact cofactor vector of `[v1 − v0; …; v(D−1) − v0; ·]`, rounded to `f64` after a common
+/// power-of-two scaling (only its direction is meaningful), or `None` when the column-scaled
+/// entries do not fit in `i64`.
+pub(crate) fn cofactor_direction<const D: usize>(vertices: &[[f64; D]; D]) -> Option<[f64; D]> {
+    ExactPlane::new(vertices).map(|plane| plane.normal_direction())
+}
+
+/// Undo the column scaling of exact cofactors given as `(mantissa, exponent)` pairs: column c was
+/// scaled by 2^(−e_c), so cofactor j (which omits column j) by 2^(e_j − S), S = Σ e_c; the common
+/// factor 2^(−S) does not change the direction. The result is scaled so that its largest
+/// component is below 1 in magnitude.
+fn scaled_direction<const D: usize>(parts: [(f64, i32); D], exponents: &[i32; D]) -> [f64; D] {
+    let parts: [(f64, i32); D] = std::array::from_fn(|j| (parts[j].0, parts[j].1 - exponents[j]));
+    let top = parts
+        .iter()
+        .filter(|(m, _)| *m != 0.0)
+        .map(|&(_, e)| e)
+        .max()
+        .unwrap_or(0);
+    parts.map(|(m, e)| {
+        // 2^(e − top) ≤ 1; split the power so that neither factor underflows prematurely.
+        let shift = e - top;
+        m * 2f64.powi(shift / 2) * 2f64.powi(shift - shift / 2) * 2f64.powi(-64)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::predicates::exact::{exact_cofactor_direction_big, orientation_big};
+    use crate::rbox::Rng;
+
+    /// Random points on a coarse grid (many exact zeros) or with full mantissas, with columns of
+    /// very different magnitudes.
+    fn points<const D: usize>(rng: &mut Rng, grid: bool) -> [[f64; D]; 9] {
+        let column_scale: [f64; D] = std::array::from_fn(|_| 2f64.powi(rng.below(40) as i32 - 20));
+        let value = |rng: &mut Rng, c: usize| {
+            let x = if grid {
+                rng.below(5) as f64 - 2.0
+            } else {
+                rng.uniform_in(-1.0, 1.0)
+            };
+            x * column_scale[c]
+        };
+        std::array::from_fn(|_| std::array::from_fn(|c| value(rng, c)))
+    }
+
+    fn check<const D: usize>() {
+        let mut rng = Rng::new(11 + D as u64);
+        for case in 0..400 {
+            let grid = case % 2 == 0;
+            let pts = points::<D>(&mut rng, grid);
+            let vertices: [[f64; D]; D] = std::array::from_fn(|i| pts[i]);
+            let p = pts[D];
+            let fast = orientation(&vertices, &p).expect("small entries fit");
+            assert_eq!(fast, orientation_big(&vertices, &p), "D = {D}, case {case}");
+            let direction = cofactor_direction(&vertices).expect("small entries fit");
+            let reference = exact_cofactor_direction_big(&vertices);
+            let norm = |v: &[f64; D]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
+            let (a, b) = (norm(&direction), norm(&reference));
+            assert_eq!(a == 0.0, b == 0.0, "D = {D}, case {case}");
+            for c in 0..D {
+                let (x, y) = (direction[c] / a.max(f64::MIN_POSITIVE), reference[c] / b.max(f64::MIN_POSITIVE));
+                assert!((x - y).abs() <= 1e-14, "D = {D}, case {case}: {direction:?} vs {reference:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn agrees_with_bigint_in_every_dimension() {
+        check::<2>();
+        check::<3>();
+        check::<4>();
+        check::<5>();
+        check::<6>();
+        check::<7>();
+        check::<8>();
+    }
+
+    #[test]
+    fn cached_plane_agrees_with_bigint() {
+        fn run<const D: usize>() {
+            let mut rng = Rng::new(5 + D as u64);
+            for case in 0..300 {
+                let pts = points::<D>(&mut rng, case % 2 == 0);
+                let vertices: [[f64; D]; D] = std::array::from_fn(|i| pts[i]);
+                let plane = ExactPlane::new(&vertices).expect("small entries fit");
+                for p in &pts {
+                    if let Some(sign) = plane.side(p) {
+                        assert_eq!(sign, orientation_big(&vertices, p), "D = {D}, case {case}");
+                    }
+                }
+            }
+        }
+        run::<2>();
+        run::<4>();
+        run::<6>();
+        run::<8>();
+    }
+
+    #[test]
+    fn refuses_entries_beyond_i64() {
+        let vertices = [[1.0, 0.0], [1e-30, 1.0]];
+        assert!(orientation(&vertices, &[0.5, 0.5]).is_none());
+        assert!(cofactor_direction(&vertices).is_none());
+    }
+}

@@ -1,0 +1,211 @@
+//! Grasp quality metrics: known answers, invariances, partial = full on many random grasps, Q∞
+//! implicit = materialised, batch order.
+
+use pqhull::grasp::quality::{
+    Evaluator, Method, Metric, Quality, evaluate_batch, q1_of_wrenches,
+};
+use pqhull::grasp::{Contact, FrictionModel, Grasp};
+use pqhull::rbox::Rng;
+
+fn axis_wrenches() -> Vec<[f64; 6]> {
+    let mut w = Vec::new();
+    for i in 0..6 {
+        for s in [1.0, -1.0] {
+            let mut e = [0.0; 6];
+            e[i] = s;
+            w.push(e);
+        }
+    }
+    w
+}
+
+fn methods() -> Vec<Method> {
+    vec![
+        Method::Partial,
+        Method::Full,
+        #[cfg(feature = "qhull")]
+        Method::Qhull,
+    ]
+}
+
+#[test]
+fn cross_polytope_cube_and_a_missing_direction() {
+    for method in methods() {
+        let q = q1_of_wrenches(&axis_wrenches(), method).unwrap();
+        assert!(q.force_closure, "{method:?}");
+        assert!((q.value - 1.0 / 6f64.sqrt()).abs() < 1e-14, "{method:?}: {}", q.value);
+        assert_eq!(q.deciding_wrenches().len(), 6);
+
+        let cube: Vec<[f64; 6]> = (0..64)
+            .map(|b| std::array::from_fn(|c| if b >> c & 1 == 1 { 1.0 } else { -1.0 }))
+            .collect();
+        let q = q1_of_wrenches(&cube, method).unwrap();
+        assert!(q.force_closure && (q.value - 1.0).abs() < 1e-14, "{method:?}: {}", q.value);
+
+        // Without −e_6 the origin lies on the facet x_6 = 0: zero, not force closure.
+        let mut w = axis_wrenches();
+        w.retain(|e| e[5] != -1.0);
+        let q = q1_of_wrenches(&w, method).unwrap();
+        assert!(!q.force_closure, "{method:?}");
+        assert_eq!(q.value, 0.0, "{method:?}");
+    }
+}
+
+fn box_contact(rng: &mut Rng, half: [f64; 3]) -> Contact {
+    let axis = rng.index(3);
+    let sign = if rng.uniform() < 0.5 { -1.0 } else { 1.0 };
+    let mut p: [f64; 3] = std::array::from_fn(|c| rng.uniform_in(-half[c], half[c]));
+    p[axis] = sign * half[axis];
+    let mut n = [0.0; 3];
+    n[axis] = -sign;
+    Contact::try_new(p, n, None).unwrap()
+}
+
+fn random_grasp(rng: &mut Rng, m: usize, k: usize) -> Grasp {
+    let half = [0.5, 0.2, 0.1];
+    let contacts = (0..m).map(|_| box_contact(rng, half)).collect();
+    let mu = rng.uniform_in(0.2, 1.0);
+    Grasp::builder(contacts, FrictionModel::try_new(mu, k).unwrap())
+        .torque_scale((0.25f64 + 0.04 + 0.01).sqrt())
+        .build()
+        .unwrap()
+}
+
+fn agree(a: &Quality, b: &Quality, what: &str) {
+    assert_eq!(a.force_closure, b.force_closure, "{what}: {a:?} vs {b:?}");
+    let scale = a.value.abs().max(b.value.abs()).max(1e-300);
+    assert!(
+        (a.value - b.value).abs() <= 1e-12 * scale.max(1e-3),
+        "{what}: {} vs {}",
+        a.value,
+        b.value
+    );
+}
+
+#[test]
+fn two_antipodal_hard_fingers_are_not_force_closure() {
+    // Frictionless-ish pinch: rank 5 at most; a finite negative value, no error.
+    let contacts = vec![
+        Contact::try_new([-0.5, 0.0, 0.0], [1.0, 0.0, 0.0], None).unwrap(),
+        Contact::try_new([0.5, 0.0, 0.0], [-1.0, 0.0, 0.0], None).unwrap(),
+    ];
+    let grasp = Grasp::try_new(contacts, FrictionModel::try_new(0.5, 8).unwrap()).unwrap();
+    for method in methods() {
+        let q = Evaluator::new(Metric::Q1, method).evaluate(&grasp).unwrap();
+        assert!(!q.force_closure, "{method:?}");
+        assert!(q.value.is_finite() && q.value <= 0.0, "{method:?}: {}", q.value);
+    }
+}
+
+#[test]
+fn rotation_about_the_reference_point_and_torque_scale() {
+    let mut rng = Rng::new(3);
+    let mut checked = 0;
+    while checked < 20 {
+        let grasp = random_grasp(&mut rng, 4, 8);
+        let q = Evaluator::new(Metric::Q1, Method::Partial).evaluate(&grasp).unwrap();
+        if !q.force_closure {
+            continue;
+        }
+        checked += 1;
+        // Rotate every contact by 90° about z (an exact rotation) around the reference (origin).
+        let rot = |v: [f64; 3]| [-v[1], v[0], v[2]];
+        let contacts: Vec<Contact> = grasp
+            .contacts()
+            .iter()
+            .map(|c| Contact::try_new(rot(c.position()), rot(c.normal()), Some(rot(c.tangent()))).unwrap())
+            .collect();
+        let rotated = Grasp::builder(contacts, grasp.friction())
+            .torque_scale(grasp.torque_scale())
+            .build()
+            .unwrap();
+        let r = Evaluator::new(Metric::Q1, Method::Partial).evaluate(&rotated).unwrap();
+        assert!((q.value - r.value).abs() <= 1e-6 * q.value, "{} vs {}", q.value, r.value);
+
+        // Scaling positions and ρ together leaves every wrench, hence Q1, unchanged (exactly for
+        // a power of two).
+        let scaled_contacts: Vec<Contact> = grasp
+            .contacts()
+            .iter()
+            .map(|c| Contact::try_new(c.position().map(|x| x * 4.0), c.normal(), Some(c.tangent())).unwrap())
+            .collect();
+        let scaled = Grasp::builder(scaled_contacts, grasp.friction())
+            .torque_scale(grasp.torque_scale() * 4.0)
+            .build()
+            .unwrap();
+        let s = Evaluator::new(Metric::Q1, Method::Partial).evaluate(&scaled).unwrap();
+        assert_eq!(s.value, q.value);
+
+        // Doubling ρ halves every torque coordinate: Q1 is that of the mapped wrench set.
+        let doubled = Grasp::builder(grasp.contacts().to_vec(), grasp.friction())
+            .torque_scale(grasp.torque_scale() * 2.0)
+            .build()
+            .unwrap();
+        let mut w = Vec::new();
+        grasp.snapped_wrenches_into(&mut w);
+        let mapped: Vec<[f64; 6]> = w
+            .iter()
+            .map(|x| std::array::from_fn(|c| if c < 3 { x[c] } else { x[c] / 2.0 }))
+            .collect();
+        let d = Evaluator::new(Metric::Q1, Method::Partial).evaluate(&doubled).unwrap();
+        let expected = q1_of_wrenches(&mapped, Method::Full).unwrap();
+        assert!((d.value - expected.value).abs() <= 1e-12 * expected.value.abs());
+        // A pure force along the grasp's weakest direction is unaffected by ρ, so the value is
+        // bounded by the force-only hull's: never above the (ρ-free) force-space value.
+        let forces: Vec<[f64; 6]> = w.iter().map(|x| [x[0], x[1], x[2], 0.0, 0.0, 0.0]).collect();
+        assert!(q1_of_wrenches(&forces, Method::Full).unwrap().value <= 0.0);
+    }
+}
+
+#[test]
+fn partial_equals_full_on_ten_thousand_random_grasps() {
+    let cases: usize = std::env::var("PQHULL_GRASP_CASES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(10_000);
+    let mut rng = Rng::new(20261122);
+    let mut partial = Evaluator::new(Metric::Q1, Method::Partial);
+    let mut full = Evaluator::new(Metric::Q1, Method::Full);
+    let mut force_closure = 0;
+    for case in 0..cases {
+        let m = 2 + rng.index(3);
+        let k = 3 + rng.index(4);
+        let grasp = random_grasp(&mut rng, m, k);
+        let a = partial.evaluate(&grasp).unwrap();
+        let b = full.evaluate(&grasp).unwrap();
+        agree(&a, &b, &format!("case {case} (m = {m}, k = {k})"));
+        force_closure += usize::from(a.force_closure);
+    }
+    // Both kinds are exercised.
+    assert!(force_closure > cases / 20 && force_closure < cases - cases / 20, "{force_closure}");
+}
+
+#[test]
+fn q_inf_implicit_equals_materialised() {
+    let mut rng = Rng::new(77);
+    let mut force_closure = 0;
+    for case in 0..16 {
+        let (m, k) = [(3, 4), (3, 6), (4, 4), (3, 8)][case % 4];
+        let grasp = random_grasp(&mut rng, m, k);
+        for with_zero_wrench in [false, true] {
+            let metric = Metric::QInf { with_zero_wrench };
+            let a = Evaluator::new(metric, Method::Partial).evaluate(&grasp).unwrap();
+            let b = Evaluator::new(metric, Method::Full).evaluate(&grasp).unwrap();
+            agree(&a, &b, &format!("case {case} (m = {m}, k = {k}, zero {with_zero_wrench})"));
+            force_closure += usize::from(a.force_closure);
+        }
+    }
+    assert!(force_closure > 0);
+}
+
+#[test]
+fn batch_keeps_input_order() {
+    let mut rng = Rng::new(9);
+    let grasps: Vec<Grasp> = (0..64).map(|_| random_grasp(&mut rng, 4, 6)).collect();
+    let batch = evaluate_batch(&grasps, Metric::Q1, Method::Partial);
+    let mut one = Evaluator::new(Metric::Q1, Method::Partial);
+    for (grasp, result) in grasps.iter().zip(&batch) {
+        let expected = one.evaluate(grasp).unwrap();
+        assert_eq!(result.as_ref().unwrap().value, expected.value);
+    }
+}
