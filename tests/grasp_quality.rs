@@ -149,11 +149,7 @@ fn rotation_about_the_reference_point_and_torque_scale() {
             .collect();
         let d = Evaluator::new(Metric::Q1, Method::Partial).evaluate(&doubled).unwrap();
         let expected = q1_of_wrenches(&mapped, Method::Full).unwrap();
-        assert!((d.value - expected.value).abs() <= 1e-12 * expected.value.abs());
-        // A pure force along the grasp's weakest direction is unaffected by ρ, so the value is
-        // bounded by the force-only hull's: never above the (ρ-free) force-space value.
-        let forces: Vec<[f64; 6]> = w.iter().map(|x| [x[0], x[1], x[2], 0.0, 0.0, 0.0]).collect();
-        assert!(q1_of_wrenches(&forces, Method::Full).unwrap().value <= 0.0);
+        assert!((d.value - expected.value).abs() <= 1e-12 * expected.value.abs().max(1e-3), "{} vs {}", d.value, expected.value);
     }
 }
 
