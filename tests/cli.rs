@@ -376,3 +376,80 @@ fn demo_full_and_partial_hull_agree() {
         assert!(created("partial") <= created("full"), "{name}: {set}");
     }
 }
+
+const GRASPS: &str = r#"{"contacts":[{"position":[-0.5,0.1,0],"normal":[1,0,0]},{"position":[0.5,-0.1,0],"normal":[-1,0,0]},{"position":[0,-0.2,0.05],"normal":[0,1,0]},{"position":[0.1,0.2,-0.05],"normal":[0,-1,0]}],"friction":0.5,"cone_edges":8,"torque_scale":0.55}
+{"contacts":[{"position":[0,0,0],"normal":[0,0,0]}],"friction":0.5,"cone_edges":8}
+not json
+{"contacts":[{"position":[-0.5,0,0],"normal":[1,0,0]},{"position":[0.5,0,0],"normal":[-1,0,0]}],"friction":0.5,"cone_edges":8}"#;
+
+#[test]
+fn grasp_lines_in_input_order_with_errors_named() {
+    for method in ["partial", "full"] {
+        let out = pqh(
+            &["grasp", "--method", method, "--threads", "2", "-"],
+            Some(GRASPS),
+        );
+        assert!(out.status.success(), "{}", stderr(&out));
+        let lines: Vec<Value> = stdout(&out)
+            .lines()
+            .map(|l| serde_json::from_str(l).unwrap())
+            .collect();
+        assert_eq!(lines.len(), 4);
+        for (i, line) in lines.iter().enumerate() {
+            assert_eq!(line["index"], i);
+        }
+        assert_eq!(lines[0]["force_closure"], true);
+        assert!(lines[0]["quality"].as_f64().unwrap() > 0.0);
+        assert!(lines[0]["stats"]["facets_created"].as_u64().unwrap() > 0);
+        assert!(lines[1]["error"].as_str().unwrap().contains("contact 0"));
+        assert!(lines[2]["error"].as_str().unwrap().contains("line 3"));
+        assert_eq!(lines[3]["force_closure"], false);
+        assert!(lines[3]["quality"].as_f64().unwrap() <= 0.0);
+    }
+    // Partial and full agree on the force-closure grasp; so does Q∞ by both.
+    let small = GRASPS.replace("\"cone_edges\":8", "\"cone_edges\":4");
+    let value = |args: &[&str]| -> f64 {
+        let out = pqh(args, Some(&small));
+        let first: Value = serde_json::from_str(stdout(&out).lines().next().unwrap()).unwrap();
+        first["quality"].as_f64().unwrap()
+    };
+    let (a, b) = (
+        value(&["grasp", "-"]),
+        value(&["grasp", "--method", "full", "-"]),
+    );
+    assert!((a - b).abs() <= 1e-12 * b);
+    let (a, b) = (
+        value(&["grasp", "--metric", "qinf", "-"]),
+        value(&["grasp", "--metric", "qinf", "--method", "full", "-"]),
+    );
+    assert!((a - b).abs() <= 1e-12 * b);
+}
+
+#[test]
+fn bench_gws_json_reports_ratios_and_agreement() {
+    let out = pqh(
+        &[
+            "bench",
+            "gws",
+            "--grasps",
+            "6",
+            "--full-grasps",
+            "3",
+            "--edges",
+            "4,6",
+            "--json",
+        ],
+        None,
+    );
+    assert!(out.status.success(), "{}", stderr(&out));
+    let report = json(&out);
+    let results = report["results"].as_array().unwrap();
+    assert_eq!(results.len(), 2);
+    for r in results {
+        assert_eq!(r["disagreements"], 0);
+        let methods = r["methods"].as_array().unwrap();
+        assert_eq!(methods[0]["method"], "partial");
+        assert_eq!(methods[1]["method"], "full");
+        assert!(methods[1]["facets_ratio_vs_partial"].as_f64().unwrap() >= 1.0);
+    }
+}

@@ -1,9 +1,7 @@
 //! Grasp quality metrics: known answers, invariances, partial = full on many random grasps, Q∞
 //! implicit = materialised, batch order.
 
-use pqhull::grasp::quality::{
-    Evaluator, Method, Metric, Quality, evaluate_batch, q1_of_wrenches,
-};
+use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, evaluate_batch, q1_of_wrenches};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
 use pqhull::rbox::Rng;
 
@@ -33,14 +31,22 @@ fn cross_polytope_cube_and_a_missing_direction() {
     for method in methods() {
         let q = q1_of_wrenches(&axis_wrenches(), method).unwrap();
         assert!(q.force_closure, "{method:?}");
-        assert!((q.value - 1.0 / 6f64.sqrt()).abs() < 1e-14, "{method:?}: {}", q.value);
+        assert!(
+            (q.value - 1.0 / 6f64.sqrt()).abs() < 1e-14,
+            "{method:?}: {}",
+            q.value
+        );
         assert_eq!(q.deciding_wrenches().len(), 6);
 
         let cube: Vec<[f64; 6]> = (0..64)
             .map(|b| std::array::from_fn(|c| if b >> c & 1 == 1 { 1.0 } else { -1.0 }))
             .collect();
         let q = q1_of_wrenches(&cube, method).unwrap();
-        assert!(q.force_closure && (q.value - 1.0).abs() < 1e-14, "{method:?}: {}", q.value);
+        assert!(
+            q.force_closure && (q.value - 1.0).abs() < 1e-14,
+            "{method:?}: {}",
+            q.value
+        );
 
         // Without −e_6 the origin lies on the facet x_6 = 0: zero, not force closure.
         let mut w = axis_wrenches();
@@ -93,7 +99,11 @@ fn two_antipodal_hard_fingers_are_not_force_closure() {
     for method in methods() {
         let q = Evaluator::new(Metric::Q1, method).evaluate(&grasp).unwrap();
         assert!(!q.force_closure, "{method:?}");
-        assert!(q.value.is_finite() && q.value <= 0.0, "{method:?}: {}", q.value);
+        assert!(
+            q.value.is_finite() && q.value <= 0.0,
+            "{method:?}: {}",
+            q.value
+        );
     }
 }
 
@@ -103,7 +113,9 @@ fn rotation_about_the_reference_point_and_torque_scale() {
     let mut checked = 0;
     while checked < 20 {
         let grasp = random_grasp(&mut rng, 4, 8);
-        let q = Evaluator::new(Metric::Q1, Method::Partial).evaluate(&grasp).unwrap();
+        let q = Evaluator::new(Metric::Q1, Method::Partial)
+            .evaluate(&grasp)
+            .unwrap();
         if !q.force_closure {
             continue;
         }
@@ -113,27 +125,42 @@ fn rotation_about_the_reference_point_and_torque_scale() {
         let contacts: Vec<Contact> = grasp
             .contacts()
             .iter()
-            .map(|c| Contact::try_new(rot(c.position()), rot(c.normal()), Some(rot(c.tangent()))).unwrap())
+            .map(|c| {
+                Contact::try_new(rot(c.position()), rot(c.normal()), Some(rot(c.tangent())))
+                    .unwrap()
+            })
             .collect();
         let rotated = Grasp::builder(contacts, grasp.friction())
             .torque_scale(grasp.torque_scale())
             .build()
             .unwrap();
-        let r = Evaluator::new(Metric::Q1, Method::Partial).evaluate(&rotated).unwrap();
-        assert!((q.value - r.value).abs() <= 1e-6 * q.value, "{} vs {}", q.value, r.value);
+        let r = Evaluator::new(Metric::Q1, Method::Partial)
+            .evaluate(&rotated)
+            .unwrap();
+        assert!(
+            (q.value - r.value).abs() <= 1e-6 * q.value,
+            "{} vs {}",
+            q.value,
+            r.value
+        );
 
         // Scaling positions and ρ together leaves every wrench, hence Q1, unchanged (exactly for
         // a power of two).
         let scaled_contacts: Vec<Contact> = grasp
             .contacts()
             .iter()
-            .map(|c| Contact::try_new(c.position().map(|x| x * 4.0), c.normal(), Some(c.tangent())).unwrap())
+            .map(|c| {
+                Contact::try_new(c.position().map(|x| x * 4.0), c.normal(), Some(c.tangent()))
+                    .unwrap()
+            })
             .collect();
         let scaled = Grasp::builder(scaled_contacts, grasp.friction())
             .torque_scale(grasp.torque_scale() * 4.0)
             .build()
             .unwrap();
-        let s = Evaluator::new(Metric::Q1, Method::Partial).evaluate(&scaled).unwrap();
+        let s = Evaluator::new(Metric::Q1, Method::Partial)
+            .evaluate(&scaled)
+            .unwrap();
         assert_eq!(s.value, q.value);
 
         // Doubling ρ halves every torque coordinate: Q1 is that of the mapped wrench set.
@@ -147,9 +174,16 @@ fn rotation_about_the_reference_point_and_torque_scale() {
             .iter()
             .map(|x| std::array::from_fn(|c| if c < 3 { x[c] } else { x[c] / 2.0 }))
             .collect();
-        let d = Evaluator::new(Metric::Q1, Method::Partial).evaluate(&doubled).unwrap();
+        let d = Evaluator::new(Metric::Q1, Method::Partial)
+            .evaluate(&doubled)
+            .unwrap();
         let expected = q1_of_wrenches(&mapped, Method::Full).unwrap();
-        assert!((d.value - expected.value).abs() <= 1e-12 * expected.value.abs().max(1e-3), "{} vs {}", d.value, expected.value);
+        assert!(
+            (d.value - expected.value).abs() <= 1e-12 * expected.value.abs().max(1e-3),
+            "{} vs {}",
+            d.value,
+            expected.value
+        );
     }
 }
 
@@ -173,7 +207,10 @@ fn partial_equals_full_on_ten_thousand_random_grasps() {
         force_closure += usize::from(a.force_closure);
     }
     // Both kinds are exercised.
-    assert!(force_closure > cases / 20 && force_closure < cases - cases / 20, "{force_closure}");
+    assert!(
+        force_closure > cases / 20 && force_closure < cases - cases / 20,
+        "{force_closure}"
+    );
 }
 
 #[test]
@@ -185,9 +222,17 @@ fn q_inf_implicit_equals_materialised() {
         let grasp = random_grasp(&mut rng, m, k);
         for with_zero_wrench in [false, true] {
             let metric = Metric::QInf { with_zero_wrench };
-            let a = Evaluator::new(metric, Method::Partial).evaluate(&grasp).unwrap();
-            let b = Evaluator::new(metric, Method::Full).evaluate(&grasp).unwrap();
-            agree(&a, &b, &format!("case {case} (m = {m}, k = {k}, zero {with_zero_wrench})"));
+            let a = Evaluator::new(metric, Method::Partial)
+                .evaluate(&grasp)
+                .unwrap();
+            let b = Evaluator::new(metric, Method::Full)
+                .evaluate(&grasp)
+                .unwrap();
+            agree(
+                &a,
+                &b,
+                &format!("case {case} (m = {m}, k = {k}, zero {with_zero_wrench})"),
+            );
             force_closure += usize::from(a.force_closure);
         }
     }

@@ -278,7 +278,11 @@ pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Quality, 
         return Err(QualityError::NonFiniteWrench);
     }
     if wrenches.is_empty() {
-        return Ok(Quality::new(f64::NEG_INFINITY, std::iter::empty(), Stats::default()));
+        return Ok(Quality::new(
+            f64::NEG_INFINITY,
+            std::iter::empty(),
+            Stats::default(),
+        ));
     }
     let started = Instant::now();
     let mut quality = match method {

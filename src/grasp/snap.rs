@@ -83,7 +83,11 @@ impl SnappedCones {
 
     /// Whether every generator is finite (a tiny torque scale can overflow).
     pub(crate) fn is_finite(&self) -> bool {
-        self.generators.iter().flatten().flatten().all(|x| x.is_finite())
+        self.generators
+            .iter()
+            .flatten()
+            .flatten()
+            .all(|x| x.is_finite())
     }
 }
 
@@ -141,7 +145,13 @@ mod tests {
         // One contact's 16 wrenches span exactly a 2-flat (exact rank), where the raw ones,
         // rounded independently, span 6-D.
         let planar = Hull::try_new(&snapped[..16]).unwrap_err();
-        assert_eq!(planar, HullError::AffinelyDependent { rank: 2, dimension: 6 });
+        assert_eq!(
+            planar,
+            HullError::AffinelyDependent {
+                rank: 2,
+                dimension: 6
+            }
+        );
         let raw_rank = match Hull::try_new(&raw[..16]) {
             Ok(_) => 6,
             Err(HullError::AffinelyDependent { rank, .. }) => rank,

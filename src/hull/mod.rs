@@ -229,7 +229,7 @@ impl<const D: usize> Hull<D> {
         let errors = facet.plane.cofactor_errors();
         let length = dot(cofactors, cofactors).sqrt();
         let error = dot(errors, errors).sqrt();
-        if !(length > error) || !bound.is_finite() {
+        if length.partial_cmp(&error) != Some(std::cmp::Ordering::Greater) || !bound.is_finite() {
             return f64::INFINITY;
         }
         let top = value + bound;

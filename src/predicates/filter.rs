@@ -196,10 +196,11 @@ impl<const D: usize> FacetPlane<D> {
             if self.value_is_exact(&vertices, p) {
                 return exact::sign_of(value);
             }
-            if D >= 4 && p.iter().all(|x| x.is_finite()) {
-                if let Some(sign) = self.exact_plane(&vertices).and_then(|plane| plane.side(p)) {
-                    return sign;
-                }
+            if D >= 4
+                && p.iter().all(|x| x.is_finite())
+                && let Some(sign) = self.exact_plane(&vertices).and_then(|plane| plane.side(p))
+            {
+                return sign;
             }
             exact::orientation(&vertices, p)
         }

@@ -63,9 +63,9 @@
 
 mod exact;
 mod filter;
-mod wide;
 #[cfg(test)]
 mod tests;
+mod wide;
 
 pub use filter::FacetPlane;
 

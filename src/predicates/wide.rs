@@ -108,9 +108,7 @@ impl Wide {
 ///
 /// # Panics
 /// If a coordinate is not finite.
-fn integer_rows<const D: usize>(
-    points: &[&[f64; D]],
-) -> Option<([[i64; D]; D], [i32; D], u32)> {
+fn integer_rows<const D: usize>(points: &[&[f64; D]]) -> Option<([[i64; D]; D], [i32; D], u32)> {
     let mut matrix = [[0i64; D]; D];
     let mut exponents = [0i32; D];
     let mut bits = 0u32;
@@ -237,8 +235,8 @@ impl<const D: usize> ExactPlane<D> {
     /// If a coordinate of `p` is not finite.
     pub(crate) fn side(&self, p: &[f64; D]) -> Option<Sign> {
         let mut sum = Wide::ZERO;
-        for j in 0..D {
-            let x = column_integer(p[j], self.exponents[j])?;
+        for (j, &coordinate) in p.iter().enumerate() {
+            let x = column_integer(coordinate, self.exponents[j])?;
             sum.add_product(x - self.base[j], false, &self.cofactors[j], self.len);
         }
         Some(sum.sign(self.len))
@@ -336,8 +334,14 @@ mod tests {
             let (a, b) = (norm(&direction), norm(&reference));
             assert_eq!(a == 0.0, b == 0.0, "D = {D}, case {case}");
             for c in 0..D {
-                let (x, y) = (direction[c] / a.max(f64::MIN_POSITIVE), reference[c] / b.max(f64::MIN_POSITIVE));
-                assert!((x - y).abs() <= 1e-14, "D = {D}, case {case}: {direction:?} vs {reference:?}");
+                let (x, y) = (
+                    direction[c] / a.max(f64::MIN_POSITIVE),
+                    reference[c] / b.max(f64::MIN_POSITIVE),
+                );
+                assert!(
+                    (x - y).abs() <= 1e-14,
+                    "D = {D}, case {case}: {direction:?} vs {reference:?}"
+                );
             }
         }
     }

@@ -211,8 +211,9 @@ fn solve(a: &[[f64; 8]; 8], b: &[f64; 8], k: usize) -> Option<[f64; 8]> {
         for row in col + 1..k {
             let f = m[row][col] / m[col][col];
             if f != 0.0 {
-                for c in col..k {
-                    m[row][c] -= f * m[col][c];
+                let pivot_row = m[col];
+                for (target, &source) in m[row][col..k].iter_mut().zip(&pivot_row[col..k]) {
+                    *target -= f * source;
                 }
                 x[row] -= f * x[col];
             }
@@ -358,7 +359,10 @@ mod tests {
         let (x, d) = nearest_in_simplex(&t, &[2.0, 2.0, 0.0]);
         assert!((x[0] - 1.0).abs() < 1e-15 && (x[1] - 1.0).abs() < 1e-15);
         assert!((d - 2f64.sqrt()).abs() < 1e-15);
-        assert_eq!(nearest_in_simplex(&t, &[-1.0, -1.0, 0.0]).0, [0.0, 0.0, 0.0]);
+        assert_eq!(
+            nearest_in_simplex(&t, &[-1.0, -1.0, 0.0]).0,
+            [0.0, 0.0, 0.0]
+        );
     }
 
     #[test]

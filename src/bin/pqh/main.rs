@@ -2,8 +2,10 @@
 //!
 //! Parsing, I/O and output only; every computation is a call into the `pqhull` library.
 
+mod bench_cmd;
 mod demo_cmd;
 mod error;
+mod grasp_cmd;
 mod hull_cmd;
 mod input;
 
@@ -48,6 +50,12 @@ enum Command {
     /// Convex hull of a points file (full, or partial toward a query point)
     #[command(long_about = hull_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
     Hull(hull_cmd::HullArgs),
+    /// Grasp quality (Q1, Q∞) of grasps given as JSON, one JSON line per grasp
+    #[command(long_about = grasp_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
+    Grasp(grasp_cmd::GraspArgs),
+    /// Benchmarks: `pqh bench gws` compares every method on random grasps
+    #[command(after_help = EXIT_STATUS_HELP)]
+    Bench(bench_cmd::BenchArgs),
     /// Full vs partial hull on built-in seeded point sets: agreement and speed-up
     #[command(long_about = demo_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
     Demo(demo_cmd::DemoArgs),
@@ -58,6 +66,8 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Hull(args) => hull_cmd::run(&args),
         Command::Demo(args) => demo_cmd::run(&args),
+        Command::Grasp(args) => grasp_cmd::run(&args),
+        Command::Bench(args) => bench_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -15,7 +15,9 @@ pub const MINKOWSKI_MATERIALISE_LIMIT: usize = 1 << 20;
 fn contact_sets(cones: &SnappedCones, with_zero_wrench: bool) -> Vec<Vec<[f64; 6]>> {
     (0..cones.generators.len())
         .map(|i| {
-            let mut set: Vec<[f64; 6]> = (0..cones.angles.len()).map(|j| cones.wrench(i, j)).collect();
+            let mut set: Vec<[f64; 6]> = (0..cones.angles.len())
+                .map(|j| cones.wrench(i, j))
+                .collect();
             if with_zero_wrench {
                 set.push([0.0; 6]);
             }
@@ -103,7 +105,10 @@ impl PointSource<6> for MinkowskiSource {
         for (set, candidates) in self.sets.iter().zip(&mut self.candidates) {
             candidates.clear();
             candidates.extend(set.iter().enumerate().map(|(j, w)| (dot(&normal, w), j)));
-            let best = candidates.iter().map(|c| c.0).fold(f64::NEG_INFINITY, f64::max);
+            let best = candidates
+                .iter()
+                .map(|c| c.0)
+                .fold(f64::NEG_INFINITY, f64::max);
             let size = set.iter().map(|w| dot(w, w).sqrt()).fold(0.0, f64::max);
             best_total += best;
             slack += 1e-10 * size;
@@ -114,7 +119,10 @@ impl PointSource<6> for MinkowskiSource {
             return None;
         }
         for candidates in &mut self.candidates {
-            let best = candidates.iter().map(|c| c.0).fold(f64::NEG_INFINITY, f64::max);
+            let best = candidates
+                .iter()
+                .map(|c| c.0)
+                .fold(f64::NEG_INFINITY, f64::max);
             candidates.retain(|c| c.0 >= best - gap);
             candidates.sort_unstable_by(|a, b| b.0.total_cmp(&a.0));
         }
@@ -178,7 +186,10 @@ fn seed_directions() -> Vec<[f64; 6]> {
     directions
 }
 
-pub(super) fn partial(cones: &SnappedCones, with_zero_wrench: bool) -> Result<Quality, QualityError> {
+pub(super) fn partial(
+    cones: &SnappedCones,
+    with_zero_wrench: bool,
+) -> Result<Quality, QualityError> {
     let started = Instant::now();
     let sets = contact_sets(cones, with_zero_wrench);
     let mut source = MinkowskiSource {
