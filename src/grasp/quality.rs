@@ -402,7 +402,8 @@ fn qhull_q1(w: &[[f64; 6]], started: Instant) -> Result<Quality, QualityError> {
     let hull = match qhull_full_hull(w) {
         Ok(hull) => hull,
         // Too few points, or flat input (QH6154): no hull, a distance all the same.
-        Err(QhullError::TooFewPoints { .. } | QhullError::Qhull { code: 6154, .. }) => {
+        Err(QhullError::TooFewPoints { .. }) => return Ok(degenerate(w, started)),
+        Err(QhullError::Qhull { code, message }) if code == 6154 || message.contains("QH6154") => {
             return Ok(degenerate(w, started));
         }
         Err(e) => return Err(QualityError::Qhull(e.to_string())),
