@@ -159,8 +159,8 @@ impl fmt::Display for QualityError {
 
 impl std::error::Error for QualityError {}
 
-/// Evaluates one metric by one method over many grasps, reusing its buffers: after the first
-/// grasps, only the hull itself allocates.
+/// Evaluates one metric by one method over many grasps, reusing its wrench buffers (the hull's
+/// arena, the strategy's queue and, for Q∞, the per-contact sets are still allocated per grasp).
 #[derive(Clone, Debug)]
 pub struct Evaluator {
     metric: Metric,
