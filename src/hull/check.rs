@@ -12,7 +12,7 @@ impl<const D: usize> Hull<D> {
     /// * each facet's unit normal and offset match its vertices (to a relative 1e−9 of the point
     ///   set's extent — the only floating-point check; the exact plane *is* the vertices'); for a
     ///   facet whose normal is not [precise](super::Facet::normal_is_precise), the exact normal
-    ///   [`Hull::refine_normals`] would install;
+    ///   [`Hull::refine_normals`](crate::Hull::refine_normals) would install;
     /// * every input point lies weakly inside every live facet (exact predicate), except the points
     ///   in outside sets, which must lie strictly beyond their own facet (partial hulls);
     /// * the arena's live count matches.

@@ -67,7 +67,7 @@ impl<const D: usize> Facet<D> {
     ///
     /// Accurate to a relative 1e−11 when [`normal_is_precise`](Self::normal_is_precise) — always
     /// for hulls built with [`FarthestPoint`](crate::FarthestPoint) and after
-    /// [`Hull::refine_normals`]. A partial strategy refines only the facets it reports, so other
+    /// [`Hull::refine_normals`](crate::Hull::refine_normals). A partial strategy refines only the facets it reports, so other
     /// facets of a partial hull may carry the plain floating-point normal of a thin facet (whose
     /// cofactors cancel), which can be off by more.
     pub fn normal(&self) -> [f64; D] {
@@ -75,7 +75,7 @@ impl<const D: usize> Facet<D> {
     }
 
     /// Whether [`normal`](Self::normal) and [`offset`](Self::offset) are certified to a relative
-    /// 1e−11 (see [`Hull::refine_normals`]).
+    /// 1e−11 (see [`Hull::refine_normals`](crate::Hull::refine_normals)).
     pub fn normal_is_precise(&self) -> bool {
         self.precise
     }

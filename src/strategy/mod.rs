@@ -82,7 +82,7 @@ pub trait Strategy<const D: usize> {
     /// Produce the result.
     fn finish(self, hull: &Hull<D>) -> Self::Output;
     /// Whether the engine should make every live facet's normal precise before
-    /// [`finish`](Self::finish) ([`Hull::refine_normals`]). Default `true`; a partial strategy
+    /// [`finish`](Self::finish) ([`Hull::refine_normals`](crate::Hull::refine_normals)). Default `true`; a partial strategy
     /// that refines the facets it reports (through its `&mut Hull`) can skip the rest.
     fn refines_all_normals(&self) -> bool {
         true
