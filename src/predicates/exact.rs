@@ -2,9 +2,9 @@
 //!
 //! Every finite `f64` is an integer times a power of two, so a set of coordinates can be scaled by a
 //! single power of two into integers without any rounding. Determinants of those integers are then
-//! computed exactly: in `i128` with checked arithmetic when the numbers are small (the common case
-//! for lattice-like degenerate input, which is exactly when the filter fails), otherwise in
-//! `BigInt`. Both use fraction-free Bareiss elimination, whose divisions are exact.
+//! computed exactly: in the fixed-width integers of [`super::wide`] when every column, scaled by
+//! its own power of two, fits in `i64` (lattices, snapped wrenches: exactly the inputs on which
+//! the filter fails), otherwise by fraction-free Bareiss elimination in `BigInt`.
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
@@ -72,8 +72,6 @@ struct Scaled {
     parts: Vec<(i64, i32)>,
     /// The smallest exponent among the nonzero coordinates (0 if all are zero).
     emin: i32,
-    /// The largest `exponent − emin` among the nonzero coordinates.
-    spread: i32,
 }
 
 fn scale(points: &[&[f64]]) -> Scaled {
@@ -84,12 +82,7 @@ fn scale(points: &[&[f64]]) -> Scaled {
         .collect();
     let nonzero = || parts.iter().filter(|(m, _)| *m != 0);
     let emin = nonzero().map(|&(_, e)| e).min().unwrap_or(0);
-    let emax = nonzero().map(|&(_, e)| e).max().unwrap_or(0);
-    Scaled {
-        parts,
-        emin,
-        spread: emax - emin,
-    }
+    Scaled { parts, emin }
 }
 
 /// Exact sign of `det[v1 − v0; …; v(D−1) − v0; p − v0]`, using `robust` for D = 2, 3 when the
@@ -171,35 +164,9 @@ fn sign_of_int<T: Signed>(x: &T) -> Sign {
 
 /// The exact integer path, valid for every D (also used to cross-check `robust` in tests).
 pub(crate) fn orientation_bareiss<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> Sign {
-    let mut all: Vec<&[f64]> = vertices.iter().map(|v| &v[..]).collect();
-    all.push(&p[..]);
-    let s = scale(&all);
-    let (v0, rest) = s.parts.split_at(D);
-    let rows = rest.chunks_exact(D);
-
-    // Small case: every scaled coordinate fits in i128 with room for one subtraction.
-    if s.spread <= 70 {
-        let int = |(m, e): (i64, i32)| -> i128 {
-            if m == 0 {
-                0
-            } else {
-                i128::from(m) << (e - s.emin)
-            }
-        };
-        let mut matrix = [[0i128; 8]; 8];
-        for (row, r) in matrix.iter_mut().zip(rows.clone()) {
-            for j in 0..D {
-                row[j] = int(r[j]) - int(v0[j]);
-            }
-        }
-        if let Some(sign) = bareiss_i128(&mut matrix, D) {
-            return sign;
-        }
-    }
-    if let Some(sign) = super::wide::orientation(vertices, p) {
-        return sign;
-    }
-    orientation_big(vertices, p)
+    // Fixed-width integers when the column-scaled entries fit in i64 (allocation-free; covers
+    // lattices and snapped wrenches), BigInt otherwise.
+    super::wide::orientation(vertices, p).unwrap_or_else(|| orientation_big(vertices, p))
 }
 
 /// The `BigInt` path of [`orientation_bareiss`], valid for every input.
@@ -222,42 +189,7 @@ pub(crate) fn orientation_big<const D: usize>(vertices: &[[f64; D]; D], p: &[f64
     bareiss_big(matrix)
 }
 
-/// Bareiss elimination in checked `i128`; `None` on overflow.
-///
-/// After step k every remaining entry is a (k+1)×(k+1) minor of the input, and the division by the
-/// previous pivot is exact (Sylvester's identity), so integer division loses nothing.
-fn bareiss_i128(a: &mut [[i128; 8]; 8], n: usize) -> Option<Sign> {
-    let mut negate = false;
-    let mut prev: i128 = 1;
-    for k in 0..n {
-        if a[k][k] == 0 {
-            let r = (k + 1..n).find(|&r| a[r][k] != 0);
-            match r {
-                Some(r) => {
-                    a.swap(k, r);
-                    negate = !negate;
-                }
-                None => return Some(Sign::Zero),
-            }
-        }
-        for i in k + 1..n {
-            for j in k + 1..n {
-                let x = a[i][j].checked_mul(a[k][k])?;
-                let y = a[i][k].checked_mul(a[k][j])?;
-                a[i][j] = x.checked_sub(y)? / prev;
-            }
-        }
-        prev = a[k][k];
-    }
-    let s = if n == 0 {
-        Sign::Positive
-    } else {
-        sign_of_int(&a[n - 1][n - 1])
-    };
-    Some(if negate { flip(s) } else { s })
-}
-
-/// Bareiss elimination in `BigInt` (see [`bareiss_i128`]).
+/// Bareiss elimination in `BigInt` (see [`bareiss_value`]).
 fn bareiss_big(a: Vec<Vec<BigInt>>) -> Sign {
     sign_of_int(&bareiss_value(a))
 }

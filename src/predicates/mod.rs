@@ -19,10 +19,11 @@
 //! * D = 2, 3: Shewchuk's adaptive predicates from the `robust` crate (`orient2d` has our sign,
 //!   `orient3d` the opposite one), used when all coordinates are zero or of magnitude in
 //!   `[2^-250, 2^250]` where its expansion arithmetic cannot underflow or overflow;
-//! * otherwise, and for every D ≥ 4: all coordinates are scaled by one power of two into integers
+//! * otherwise, and for every D ≥ 4: coordinates are scaled by powers of two into integers
 //!   (exactly: every `f64` is an integer times a power of two), and the sign of the integer
-//!   determinant of differences is found with fraction-free Bareiss elimination, in checked `i128`
-//!   when it fits, in `BigInt` otherwise.
+//!   determinant of differences is found by a Laplace expansion in allocation-free fixed-width
+//!   integers when every column fits in `i64` (each column scaled by its own power of two), by
+//!   fraction-free Bareiss elimination in `BigInt` otherwise.
 //!
 //! [`FacetPlane`] is the fast path used by the hull engine: it caches the cofactors of the
 //! facet, so that evaluating the determinant for a new `p` is a D-term dot product, together with
