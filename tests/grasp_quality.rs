@@ -57,24 +57,14 @@ fn cross_polytope_cube_and_a_missing_direction() {
     }
 }
 
-fn box_contact(rng: &mut Rng, half: [f64; 3]) -> Contact {
-    let axis = rng.index(3);
-    let sign = if rng.uniform() < 0.5 { -1.0 } else { 1.0 };
-    let mut p: [f64; 3] = std::array::from_fn(|c| rng.uniform_in(-half[c], half[c]));
-    p[axis] = sign * half[axis];
-    let mut n = [0.0; 3];
-    n[axis] = -sign;
-    Contact::try_new(p, n, None).unwrap()
-}
-
 fn random_grasp(rng: &mut Rng, m: usize, k: usize) -> Grasp {
-    let half = [0.5, 0.2, 0.1];
-    let contacts = (0..m).map(|_| box_contact(rng, half)).collect();
     let mu = rng.uniform_in(0.2, 1.0);
-    Grasp::builder(contacts, FrictionModel::try_new(mu, k).unwrap())
-        .torque_scale((0.25f64 + 0.04 + 0.01).sqrt())
-        .build()
-        .unwrap()
+    Grasp::random_on_box(
+        rng,
+        [0.5, 0.2, 0.1],
+        m,
+        FrictionModel::try_new(mu, k).unwrap(),
+    )
 }
 
 fn agree(a: &Quality, b: &Quality, what: &str) {

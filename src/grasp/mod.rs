@@ -60,6 +60,7 @@ mod contact;
 mod error;
 mod friction;
 pub mod quality;
+mod random;
 mod snap;
 mod vec3;
 mod wrench;

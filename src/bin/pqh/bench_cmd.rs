@@ -4,7 +4,7 @@ use crate::error::CliError;
 use crate::grasp_cmd::{MethodArg, method};
 use clap::{Args, Subcommand};
 use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality};
-use pqhull::grasp::{Contact, FrictionModel, Grasp};
+use pqhull::grasp::{FrictionModel, Grasp};
 use pqhull::rbox::Rng;
 use serde_json::json;
 
@@ -50,33 +50,14 @@ pub struct GwsArgs {
     pub json: bool,
 }
 
-/// A contact on a random face of the box [−a, a] × [−b, b] × [−c, c], pushing inward.
-fn box_contact(rng: &mut Rng, half: [f64; 3]) -> Contact {
-    let axis = rng.index(3);
-    let sign = if rng.uniform() < 0.5 { -1.0 } else { 1.0 };
-    let mut p: [f64; 3] = std::array::from_fn(|c| rng.uniform_in(-half[c], half[c]));
-    p[axis] = sign * half[axis];
-    let mut n = [0.0; 3];
-    n[axis] = -sign;
-    Contact::try_new(p, n, None).expect("unit axis normal")
-}
-
-/// Random grasps on a 1 × 0.4 × 0.2 bar, μ = 0.5, ρ = the half-diagonal (as GraspIt! does).
+/// Random grasps on a 1 × 0.4 × 0.2 bar, μ = 0.5 (`Grasp::random_on_box`).
 fn grasps(seed: u64, count: usize, contacts: usize, k: usize) -> Result<Vec<Grasp>, CliError> {
-    let half = [0.5, 0.2, 0.1];
-    let rho = half.iter().map(|h| h * h).sum::<f64>().sqrt();
     let mut rng = Rng::new(seed);
     let friction =
         FrictionModel::try_new(0.5, k).map_err(|e| CliError::Usage(format!("--edges: {e}")))?;
-    (0..count)
-        .map(|_| {
-            let cs = (0..contacts).map(|_| box_contact(&mut rng, half)).collect();
-            Grasp::builder(cs, friction)
-                .torque_scale(rho)
-                .build()
-                .map_err(|e| CliError::Usage(e.to_string()))
-        })
-        .collect()
+    Ok((0..count)
+        .map(|_| Grasp::random_on_box(&mut rng, [0.5, 0.2, 0.1], contacts, friction))
+        .collect())
 }
 
 struct Row {

@@ -74,6 +74,8 @@ pub(super) fn materialise(
 /// The Minkowski sum answered through its support function.
 struct MinkowskiSource {
     sets: Vec<Vec<[f64; 6]>>,
+    /// Per contact: the largest wrench norm (for the score slack), computed once per grasp.
+    sizes: Vec<f64>,
     /// Per contact: (score, edge) of the candidates for the current facet.
     candidates: Vec<Vec<(f64, usize)>>,
     choice: Vec<usize>,
@@ -193,6 +195,10 @@ pub(super) fn partial(
     let started = Instant::now();
     let sets = contact_sets(cones, with_zero_wrench);
     let mut source = MinkowskiSource {
+        sizes: sets
+            .iter()
+            .map(|set| set.iter().map(|w| dot(w, w).sqrt()).fold(0.0, f64::max))
+            .collect(),
         candidates: vec![Vec::new(); sets.len()],
         choice: Vec::new(),
         sets,

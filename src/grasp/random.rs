@@ -1,0 +1,51 @@
+//! Seeded random grasps on a box, the test object of the seed paper's GWS evaluation.
+
+use super::{Contact, FrictionModel, Grasp};
+use crate::rbox::Rng;
+
+impl Grasp {
+    /// A random grasp with `contacts` fingers on the box [−h₀, h₀] × [−h₁, h₁] × [−h₂, h₂]: each
+    /// on a uniformly chosen face, at a uniform point of it, pushing along the face's inward
+    /// normal (default tangent). Torque reference: the box's centre; torque scale: its
+    /// half-diagonal |h| (as GraspIt! does). Deterministic for a given `rng` state.
+    ///
+    /// ```
+    /// use pqhull::grasp::{FrictionModel, Grasp};
+    /// use pqhull::rbox::Rng;
+    /// let mut rng = Rng::new(1);
+    /// let g = Grasp::random_on_box(&mut rng, [0.5, 0.2, 0.1], 4, FrictionModel::try_new(0.5, 8)?);
+    /// assert_eq!(g.contact_count(), 4);
+    /// assert!(g.contacts().iter().all(|c| c.normal().iter().filter(|x| **x != 0.0).count() == 1));
+    /// # Ok::<(), pqhull::grasp::GraspError>(())
+    /// ```
+    ///
+    /// # Panics
+    /// If `contacts` is 0 or a half extent is not finite and positive.
+    pub fn random_on_box(
+        rng: &mut Rng,
+        half: [f64; 3],
+        contacts: usize,
+        friction: FrictionModel,
+    ) -> Grasp {
+        assert!(
+            half.iter().all(|h| h.is_finite() && *h > 0.0),
+            "random_on_box: half extents must be finite and positive, got {half:?}"
+        );
+        let fingers = (0..contacts)
+            .map(|_| {
+                let axis = rng.index(3);
+                let sign = if rng.uniform() < 0.5 { -1.0 } else { 1.0 };
+                let mut p: [f64; 3] = std::array::from_fn(|c| rng.uniform_in(-half[c], half[c]));
+                p[axis] = sign * half[axis];
+                let mut n = [0.0; 3];
+                n[axis] = -sign;
+                Contact::try_new(p, n, None).expect("an axis is a valid normal")
+            })
+            .collect();
+        let rho = half.iter().map(|h| h * h).sum::<f64>().sqrt();
+        Grasp::builder(fingers, friction)
+            .torque_scale(rho)
+            .build()
+            .expect("random_on_box: at least one contact")
+    }
+}
