@@ -104,14 +104,15 @@ impl PointSource<6> for MinkowskiSource {
         // rounding of the scores, and the same for the offset.
         let mut best_total = 0.0;
         let mut slack = 1e-10 * offset.abs();
-        for (set, candidates) in self.sets.iter().zip(&mut self.candidates) {
+        for ((set, candidates), &size) in
+            self.sets.iter().zip(&mut self.candidates).zip(&self.sizes)
+        {
             candidates.clear();
             candidates.extend(set.iter().enumerate().map(|(j, w)| (dot(&normal, w), j)));
             let best = candidates
                 .iter()
                 .map(|c| c.0)
                 .fold(f64::NEG_INFINITY, f64::max);
-            let size = set.iter().map(|w| dot(w, w).sqrt()).fold(0.0, f64::max);
             best_total += best;
             slack += 1e-10 * size;
         }
