@@ -67,11 +67,15 @@ fn random_grasp(rng: &mut Rng, m: usize, k: usize) -> Grasp {
     )
 }
 
+/// Force closure must match exactly; values to 1e−12 relative. Near zero the floor is 1e−2 of the
+/// wrench size (the wrenches here have norm ≈ 1): a plane distance is a dot product whose rounding
+/// is ~1e−16 of the wrenches, not of the value, and coplanar facets triangulated with different
+/// base vertices round differently (seen: 5.1176912800714e−4 vs …8006e−4, 1.5e−15 apart).
 fn agree(a: &Quality, b: &Quality, what: &str) {
     assert_eq!(a.force_closure, b.force_closure, "{what}: {a:?} vs {b:?}");
     let scale = a.value.abs().max(b.value.abs()).max(1e-300);
     assert!(
-        (a.value - b.value).abs() <= 1e-12 * scale.max(1e-3),
+        (a.value - b.value).abs() <= 1e-12 * scale.max(1e-2),
         "{what}: {} vs {}",
         a.value,
         b.value
