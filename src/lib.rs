@@ -29,6 +29,7 @@
 
 pub mod grasp;
 pub mod hull;
+pub mod mesh;
 pub mod points_file;
 pub mod predicates;
 pub mod rbox;

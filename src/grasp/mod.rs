@@ -57,6 +57,7 @@
 //! ```
 
 mod contact;
+pub mod ellipsoid;
 mod error;
 mod friction;
 pub mod quality;

@@ -1,0 +1,2 @@
+//! Criterion benchmarks of the grasp metrics (placeholder until written).
+fn main() {}

@@ -1,0 +1,1 @@
+//! Triangle meshes: loading (OBJ, STL), mass properties and surface normals.
