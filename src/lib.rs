@@ -36,7 +36,7 @@ pub mod rbox;
 pub mod strategy;
 
 pub use hull::{Facet, FacetId, Hull, HullError, InvariantViolation};
-pub use strategy::{ClosestToOrigin, FarthestPoint, Stats, Step, Strategy};
+pub use strategy::{ClosestToOrigin, FarthestPoint, OwsInflation, Stats, Step, Strategy};
 
 /// The README's examples, compiled and run as doctests so they cannot rot.
 #[cfg(doctest)]

@@ -1,1 +1,640 @@
-//! Minimum-volume enclosing ellipsoids centred at the origin (Borst et al.'s OWS approximation).
+//! Minimum-volume ellipsoids centred at the origin (Borst et al.'s OWS approximation).
+//!
+//! Borst, Fischer & Hirzinger ("Grasp planning: how to choose a suitable task wrench space",
+//! ICRA 2004) approximate a task or object wrench space — a point set P ⊂ R⁶ — by an enclosing
+//! ellipsoid E centred at the origin, map wrench space linearly so that E becomes the unit ball,
+//! and take the Ferrari–Canny Q1 of the mapped grasp wrench space as an approximation of the
+//! object-wrench-space metric. [`CentredEllipsoid`] is the ellipsoid part, in any dimension `D`:
+//! [`CentredEllipsoid::try_enclosing`] computes it, [`CentredEllipsoid::map`] (or the matrix
+//! [`CentredEllipsoid::factor`]) is the linear map. Because E always contains every point of P,
+//! a metric computed on the mapped spaces bounds the exact one from below.
+//!
+//! The linear algebra (Cholesky factorisation and triangular inverse of the weighted second-moment
+//! matrix) uses [`faer`]'s in-place kernels with a workspace allocated once per call.
+
+use std::fmt;
+
+use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::linalg::cholesky::llt::factor::{
+    LltRegularization, cholesky_in_place, cholesky_in_place_scratch,
+};
+use faer::linalg::triangular_inverse::invert_lower_triangular;
+use faer::{Mat, Par, Side};
+
+/// A reasonable default for the `tolerance` of [`CentredEllipsoid::try_enclosing`]: the volume is
+/// then within a factor `(1 + 1e−7)^(D/2)` (about `1 + 3e−7` in 6-D) of the minimum.
+pub const DEFAULT_TOLERANCE: f64 = 1e-7;
+
+/// The most Khachiyan / Todd–Yıldırım steps [`CentredEllipsoid::try_enclosing`] takes before it
+/// gives up with [`EllipsoidError::NoConvergence`].
+pub const MAX_ITERATIONS: usize = 100_000;
+
+/// The numerical-rank threshold: after the points are scaled by a power of two, an eigenvalue of
+/// their mean second-moment matrix `(1/n) Σ x_i x_iᵀ` counts towards the rank only if it exceeds
+/// `RANK_TOLERANCE` times the largest one. In words: a set whose root-mean-square extent in some
+/// direction is below `10⁻⁶` of its extent in another is treated as flat
+/// ([`EllipsoidError::RankDeficient`]).
+pub const RANK_TOLERANCE: f64 = 1e-12;
+
+/// The slack of [`CentredEllipsoid::contains`]: `x` is contained when `xᵀ A x ≤ 1 + CONTAINMENT_SLACK`.
+///
+/// The input points themselves need no slack: each has `gauge ≤ 1` exactly as computed.
+pub const CONTAINMENT_SLACK: f64 = 1e-12;
+
+/// How many rank-one (Sherman–Morrison) updates of `M⁻¹` and of the `x_iᵀ M⁻¹ x_i` are made
+/// between two refactorisations from scratch, which bound the drift of the updates.
+const REFRESH_INTERVAL: usize = 50;
+
+/// Smallest accepted denominator `1 − τ + τ g` of a rank-one update (it is > 0 in exact
+/// arithmetic whenever the updated matrix is positive definite).
+const DENOMINATOR_FLOOR: f64 = 1e-12;
+
+/// An ellipsoid centred at the origin, `E = { x : xᵀ A x ≤ 1 }` with `A = RᵀR` symmetric positive
+/// definite, built by [`CentredEllipsoid::try_enclosing`] as the (approximately) minimum-volume
+/// such ellipsoid enclosing a point set — equivalently, the minimum-volume enclosing ellipsoid of
+/// the symmetric set `±points`.
+///
+/// # Algorithm
+///
+/// The dual problem (Todd, *Minimum-Volume Ellipsoids: Theory and Algorithms*, SIAM 2016, the
+/// central case) maximises `ln det M(u)`, `M(u) = Σ u_i x_i x_iᵀ`, over the unit simplex; at the
+/// optimum `E = { x : xᵀ M(u)⁻¹ x ≤ D }`. Starting from `u_i = 1/n`, each step moves weight along
+/// one vertex of the simplex with an exact line search (Khachiyan 1996): either towards the point
+/// `j` with the largest `g_j = x_jᵀ M⁻¹ x_j`, step `τ = (g_j − D) / (D (g_j − 1))`, or — the
+/// Todd–Yıldırım "away" step (Discrete Appl. Math. 155, 2007), which makes convergence linear
+/// rather than sublinear in practice — away from the weighted point `k` with the smallest `g_k`,
+/// dropping it from the support when the line search would make `u_k` negative. `M⁻¹` and all
+/// `g_i` are updated by Sherman–Morrison in `O(nD)` per step, with no allocation; every
+/// 50 steps, and before stopping, `M` is rebuilt and refactorised (Cholesky) from scratch. The
+/// iteration stops when `max_i g_i ≤ D (1 + tolerance)`.
+///
+/// The result is then `A = M⁻¹ / max_i g_i`, which touches the farthest point; it is finally
+/// shrunk by a few units in the last place if needed so that every input point has
+/// `gauge ≤ 1` as computed by [`CentredEllipsoid::gauge`].
+///
+/// # Guarantee
+///
+/// Every input point is contained (always, whatever the tolerance). The volume is within a
+/// factor `(1 + ε)^(D/2)` of the minimum, `ε = tolerance` (Todd 2016, ε-primal feasibility;
+/// Kumar & Yıldırım, J. Optim. Theory Appl. 126, 2005, for the general case). Proof sketch: for
+/// any enclosing `xᵀ H x ≤ 1` and any `u` in the simplex, `tr(H M(u)) = Σ u_i x_iᵀ H x_i ≤ 1`, so
+/// by the AM–GM inequality `det(H M) ≤ D^−D`, i.e. `vol(E_H) ≥ vol(B) det(D M)^{1/2}`; the returned
+/// ellipsoid has volume `vol(B) det(g_max M)^{1/2}` with `g_max ≤ D (1 + ε)`. The bound actually
+/// reached, `(D/2) ln(g_max / D)`, is [`CentredEllipsoid::log_volume_gap_bound`]. A volume within
+/// `(1 + ε)^(D/2)` does not make the matrix that close: its entries typically differ from the
+/// minimal one's by `O(√ε)`.
+///
+/// Coordinates are first scaled by a power of two (exactly), so the result does not depend on the
+/// units and neither huge nor tiny coordinates overflow.
+///
+/// # Example
+///
+/// ```
+/// use pqhull::grasp::ellipsoid::CentredEllipsoid;
+///
+/// // Two corners of the square [−1, 1]² (with their mirror images, all four) and two points
+/// // inside: the centred minimum-volume ellipsoid is the disc of radius √2, A = I / 2.
+/// let points = [[1.0, 1.0], [1.0, -1.0], [0.3, 0.2], [-0.5, 0.9]];
+/// let e = CentredEllipsoid::try_enclosing(&points, 1e-10)?;
+/// let a = e.matrix();
+/// assert!((a[0][0] - 0.5).abs() < 1e-4 && (a[1][1] - 0.5).abs() < 1e-4 && a[0][1].abs() < 1e-4);
+///
+/// assert!(points.iter().all(|p| e.contains(p) && e.gauge(p) <= 1.0));
+/// assert!((e.gauge(&[1.0, -1.0]) - 1.0).abs() < 1e-12); // a corner is on the boundary
+/// let y = e.map(&[1.0, 1.0]); // R x: the ellipsoid onto the unit disc
+/// assert!((y[0].hypot(y[1]) - 1.0).abs() < 1e-12);
+/// assert!(e.log_volume_gap_bound() <= 1e-10);
+/// # Ok::<(), pqhull::grasp::ellipsoid::EllipsoidError>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct CentredEllipsoid<const D: usize> {
+    /// Lower-triangular `R̃` of the scaled problem: `R = scale · R̃`, `A = RᵀR`.
+    factor: [[f64; D]; D],
+    /// The power of two the coordinates were multiplied by.
+    scale: f64,
+    iterations: usize,
+    log_gap: f64,
+}
+
+impl<const D: usize> CentredEllipsoid<D> {
+    /// The (approximately) minimum-volume ellipsoid centred at the origin enclosing every point of
+    /// `points`, to within a volume factor `(1 + tolerance)^(D/2)` (see the [type docs](Self)).
+    ///
+    /// `tolerance` is the relative excess `max_i x_iᵀ M⁻¹ x_i / D − 1` at which the iteration
+    /// stops; [`DEFAULT_TOLERANCE`] is a good choice, and values below about `1e−13` may not be
+    /// reachable in floating point. Runs in `O(n D)` per iteration; a few thousand iterations
+    /// suffice for thousands of 6-D points.
+    ///
+    /// # Errors
+    ///
+    /// * [`EllipsoidError::InvalidTolerance`] when `tolerance` is not finite and positive;
+    /// * [`EllipsoidError::TooFewPoints`] with fewer than `D` points;
+    /// * [`EllipsoidError::NonFinite`] naming the first point with a NaN or infinite coordinate;
+    /// * [`EllipsoidError::RankDeficient`] when the points do not span `D` dimensions (to within
+    ///   [`RANK_TOLERANCE`]): no centred ellipsoid of finite volume encloses them;
+    /// * [`EllipsoidError::NoConvergence`] after [`MAX_ITERATIONS`] steps;
+    /// * [`EllipsoidError::NumericalFailure`] if the weighted second-moment matrix stops being
+    ///   numerically positive definite (nearly flat inputs just above the rank threshold).
+    pub fn try_enclosing(points: &[[f64; D]], tolerance: f64) -> Result<Self, EllipsoidError> {
+        const { assert!(D >= 1, "the dimension D must be at least 1") };
+        if !(tolerance.is_finite() && tolerance > 0.0) {
+            return Err(EllipsoidError::InvalidTolerance { tolerance });
+        }
+        if points.len() < D {
+            return Err(EllipsoidError::TooFewPoints {
+                points: points.len(),
+                required: D,
+            });
+        }
+        let mut largest = 0.0_f64;
+        for (index, p) in points.iter().enumerate() {
+            if let Some(coordinate) = p.iter().position(|c| !c.is_finite()) {
+                return Err(EllipsoidError::NonFinite { index, coordinate });
+            }
+            largest = p.iter().fold(largest, |m, c| m.max(c.abs()));
+        }
+        if largest == 0.0 {
+            return Err(EllipsoidError::RankDeficient {
+                rank: 0,
+                dimension: D,
+            });
+        }
+        // An exact power of two bringing the largest coordinate into [1, 2).
+        let exponent = (largest.log2().floor() as i32).clamp(-1020, 1020);
+        let scale = 2.0_f64.powi(-exponent);
+        let xs: Vec<[f64; D]> = points.iter().map(|p| p.map(|c| c * scale)).collect();
+
+        let rank = numerical_rank(&xs)?;
+        if rank < D {
+            return Err(EllipsoidError::RankDeficient { rank, dimension: D });
+        }
+
+        let mut solver = Solver::new(&xs);
+        let iterations = solver.run(tolerance)?;
+        let (factor, log_gap) = solver.finish(iterations)?;
+        Ok(CentredEllipsoid {
+            factor,
+            scale,
+            iterations,
+            log_gap,
+        })
+    }
+
+    /// Whether `x` is in the ellipsoid: `xᵀ A x ≤ 1 +` [`CONTAINMENT_SLACK`]. Every point given to
+    /// [`try_enclosing`](Self::try_enclosing) is contained. `false` for a NaN coordinate.
+    pub fn contains(&self, x: &[f64; D]) -> bool {
+        self.gauge_squared(x) <= 1.0 + CONTAINMENT_SLACK
+    }
+
+    /// The gauge (Minkowski functional) `sqrt(xᵀ A x) = |R x|`: below 1 inside, 1 on the
+    /// boundary, `t` for `t` times a boundary point.
+    pub fn gauge(&self, x: &[f64; D]) -> f64 {
+        self.gauge_squared(x).sqrt()
+    }
+
+    /// `R x`, the linear map sending the ellipsoid onto the unit ball (`|R x| = gauge(x)`).
+    /// This is the map Borst et al. apply to both wrench spaces.
+    pub fn map(&self, x: &[f64; D]) -> [f64; D] {
+        lower_times(&self.factor, &x.map(|c| c * self.scale))
+    }
+
+    /// The lower-triangular matrix `R` of [`map`](Self::map), with `A = RᵀR` (a Cholesky-type
+    /// factor of `A⁻¹ = R⁻¹R⁻ᵀ`, not of `A`). Entries overflow to infinity only for inputs
+    /// whose coordinates are all below about `1e−300`.
+    pub fn factor(&self) -> [[f64; D]; D] {
+        self.factor.map(|row| row.map(|r| r * self.scale))
+    }
+
+    /// The matrix `A` of `E = { x : xᵀ A x ≤ 1 }` (symmetric positive definite, `RᵀR` rounded).
+    /// Its entries scale like `1/length²`, so they overflow for coordinates below about `1e−150`;
+    /// [`gauge`](Self::gauge), [`map`](Self::map) and the volumes do not.
+    pub fn matrix(&self) -> [[f64; D]; D] {
+        let s2 = self.scale * self.scale;
+        std::array::from_fn(|a| {
+            std::array::from_fn(|b| {
+                let r = &self.factor;
+                (a.max(b)..D).map(|k| r[k][a] * r[k][b]).sum::<f64>() * s2
+            })
+        })
+    }
+
+    /// `ln(vol E / vol B)`, with `B` the unit ball: `−½ ln det A`.
+    pub fn log_volume_ratio_to_ball(&self) -> f64 {
+        let log_det_r: f64 = (0..D).map(|k| self.factor[k][k].ln()).sum();
+        -log_det_r - D as f64 * self.scale.ln()
+    }
+
+    /// `ln vol E` (natural logarithm, so it neither overflows nor underflows).
+    pub fn log_volume(&self) -> f64 {
+        log_unit_ball_volume(D) + self.log_volume_ratio_to_ball()
+    }
+
+    /// A certified bound on `ln(vol E / vol E_min)`, with `E_min` the exact minimum-volume centred
+    /// ellipsoid: `(D/2) ln(g_max / D)` at the last iteration, so at most
+    /// `(D/2) ln(1 + tolerance)` (plus a few units in the last place for the final shrink).
+    pub fn log_volume_gap_bound(&self) -> f64 {
+        self.log_gap
+    }
+
+    /// The number of Khachiyan / Todd–Yıldırım steps taken (0 if the uniform weights were
+    /// already within the tolerance, as for the cube's corners).
+    pub fn iterations(&self) -> usize {
+        self.iterations
+    }
+
+    fn gauge_squared(&self, x: &[f64; D]) -> f64 {
+        gauge_squared(&self.factor, &x.map(|c| c * self.scale))
+    }
+}
+
+/// Why [`CentredEllipsoid::try_enclosing`] failed.
+#[derive(Clone, Debug, PartialEq)]
+pub enum EllipsoidError {
+    /// Fewer than `D` points cannot span `D` dimensions.
+    TooFewPoints {
+        /// The number of points given.
+        points: usize,
+        /// The number needed at least (the dimension `D`).
+        required: usize,
+    },
+    /// A point has a NaN or infinite coordinate.
+    NonFinite {
+        /// Index of the first such point.
+        index: usize,
+        /// Index of its first non-finite coordinate.
+        coordinate: usize,
+    },
+    /// The points do not span the whole space, so every enclosing centred ellipsoid is unbounded.
+    RankDeficient {
+        /// The numerical rank of the points (see [`RANK_TOLERANCE`]).
+        rank: usize,
+        /// The dimension `D`.
+        dimension: usize,
+    },
+    /// The tolerance is not a finite number greater than zero.
+    InvalidTolerance {
+        /// The tolerance given.
+        tolerance: f64,
+    },
+    /// The tolerance was not reached within [`MAX_ITERATIONS`] steps.
+    NoConvergence {
+        /// The number of steps taken.
+        iterations: usize,
+        /// The excess `max_i x_iᵀ M⁻¹ x_i / D − 1` reached (the tolerance it was compared with).
+        excess: f64,
+    },
+    /// The weighted second-moment matrix lost positive definiteness in floating point.
+    NumericalFailure {
+        /// The step at which it happened.
+        iteration: usize,
+    },
+}
+
+impl fmt::Display for EllipsoidError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            EllipsoidError::TooFewPoints { points, required } => write!(
+                f,
+                "too few points for an enclosing ellipsoid: {points} given, at least {required} \
+                 needed to span {required} dimensions"
+            ),
+            EllipsoidError::NonFinite { index, coordinate } => write!(
+                f,
+                "point {index} has a NaN or infinite coordinate (coordinate {coordinate})"
+            ),
+            EllipsoidError::RankDeficient { rank, dimension } => write!(
+                f,
+                "the points span only {rank} of {dimension} dimensions (numerical rank), so no \
+                 ellipsoid centred at the origin of finite volume encloses them"
+            ),
+            EllipsoidError::InvalidTolerance { tolerance } => write!(
+                f,
+                "the ellipsoid tolerance must be a finite number greater than 0, got {tolerance}"
+            ),
+            EllipsoidError::NoConvergence { iterations, excess } => write!(
+                f,
+                "the minimum-volume ellipsoid iteration did not reach the tolerance in \
+                 {iterations} steps (relative excess still {excess:e})"
+            ),
+            EllipsoidError::NumericalFailure { iteration } => write!(
+                f,
+                "the weighted second-moment matrix became numerically singular at step \
+                 {iteration} (the points are nearly flat)"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for EllipsoidError {}
+
+/// The numerical rank of the (scaled) points: eigenvalues of `(1/n) Σ x xᵀ` above
+/// [`RANK_TOLERANCE`] times the largest.
+fn numerical_rank<const D: usize>(xs: &[[f64; D]]) -> Result<usize, EllipsoidError> {
+    let weight = 1.0 / xs.len() as f64;
+    let m = second_moment(xs, |_| weight);
+    let eigenvalues = Mat::from_fn(D, D, |a, b| m[a.max(b)][a.min(b)])
+        .self_adjoint_eigenvalues(Side::Lower)
+        .map_err(|_| EllipsoidError::NumericalFailure { iteration: 0 })?;
+    let largest = eigenvalues.iter().fold(0.0_f64, |m, &l| m.max(l));
+    Ok(eigenvalues
+        .iter()
+        .filter(|&&l| largest > 0.0 && l > RANK_TOLERANCE * largest)
+        .count())
+}
+
+/// The lower triangle of `Σ w(i) x_i x_iᵀ` (terms with `w(i) = 0` skipped).
+fn second_moment<const D: usize>(xs: &[[f64; D]], w: impl Fn(usize) -> f64) -> [[f64; D]; D] {
+    let mut m = [[0.0; D]; D];
+    for (i, x) in xs.iter().enumerate() {
+        let wi = w(i);
+        if wi > 0.0 {
+            for (a, row) in m.iter_mut().enumerate() {
+                let wx = wi * x[a];
+                for (entry, xb) in row.iter_mut().zip(x).take(a + 1) {
+                    *entry += wx * xb;
+                }
+            }
+        }
+    }
+    m
+}
+
+/// `L y` for lower-triangular `L`.
+fn lower_times<const D: usize>(l: &[[f64; D]; D], y: &[f64; D]) -> [f64; D] {
+    std::array::from_fn(|a| l[a].iter().zip(y).take(a + 1).map(|(l, y)| l * y).sum())
+}
+
+/// `|L y|²` for lower-triangular `L`.
+fn gauge_squared<const D: usize>(l: &[[f64; D]; D], y: &[f64; D]) -> f64 {
+    lower_times(l, y).iter().map(|v| v * v).sum()
+}
+
+fn dot<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
+    a.iter().zip(b).map(|(a, b)| a * b).sum()
+}
+
+/// `ln vol(B_D)` by the recurrence `ω_D = ω_{D−2} · 2π / D` (`ω_0 = 1`, `ω_1 = 2`).
+fn log_unit_ball_volume(d: usize) -> f64 {
+    let mut log = if d % 2 == 0 { 0.0 } else { 2.0_f64.ln() };
+    let mut k = 2 + d % 2;
+    while k <= d {
+        log += (2.0 * std::f64::consts::PI / k as f64).ln();
+        k += 2;
+    }
+    log
+}
+
+/// The iteration state: weights, the `g_i`, `M⁻¹`, and faer workspaces (allocated once).
+struct Solver<'a, const D: usize> {
+    xs: &'a [[f64; D]],
+    u: Vec<f64>,
+    g: Vec<f64>,
+    m_inv: [[f64; D]; D],
+    /// `L⁻¹` (lower triangular) of the last factorisation `M = L Lᵀ`.
+    l_inv: [[f64; D]; D],
+    work: Mat<f64>,
+    inverse: Mat<f64>,
+    memory: MemBuffer,
+}
+
+impl<'a, const D: usize> Solver<'a, D> {
+    fn new(xs: &'a [[f64; D]]) -> Self {
+        let n = xs.len();
+        Solver {
+            xs,
+            u: vec![1.0 / n as f64; n],
+            g: vec![0.0; n],
+            m_inv: [[0.0; D]; D],
+            l_inv: [[0.0; D]; D],
+            work: Mat::zeros(D, D),
+            inverse: Mat::zeros(D, D),
+            memory: MemBuffer::new(cholesky_in_place_scratch::<f64>(
+                D,
+                Par::Seq,
+                Default::default(),
+            )),
+        }
+    }
+
+    /// Renormalises `u`, rebuilds and factorises `M`, and recomputes `M⁻¹` and every `g_i`.
+    /// `false` if `M` is not numerically positive definite.
+    fn refresh(&mut self) -> bool {
+        let total: f64 = self.u.iter().sum();
+        self.u.iter_mut().for_each(|w| *w /= total);
+        let u = &self.u;
+        let m = second_moment(self.xs, |i| u[i]);
+        for (a, row) in m.iter().enumerate() {
+            for (b, &v) in row.iter().enumerate().take(a + 1) {
+                self.work[(a, b)] = v;
+                self.work[(b, a)] = v;
+            }
+        }
+        let stack = MemStack::new(&mut self.memory);
+        let factorised = cholesky_in_place(
+            self.work.as_mut(),
+            LltRegularization::default(),
+            Par::Seq,
+            stack,
+            Default::default(),
+        );
+        if factorised.is_err() {
+            return false;
+        }
+        invert_lower_triangular(self.inverse.as_mut(), self.work.as_ref(), Par::Seq);
+        for (a, row) in self.l_inv.iter_mut().enumerate() {
+            for (b, entry) in row.iter_mut().enumerate() {
+                *entry = if b <= a { self.inverse[(a, b)] } else { 0.0 };
+            }
+        }
+        if !self.l_inv.iter().flatten().all(|v| v.is_finite()) {
+            return false;
+        }
+        let l = &self.l_inv;
+        self.m_inv = std::array::from_fn(|a| {
+            std::array::from_fn(|b| (a.max(b)..D).map(|k| l[k][a] * l[k][b]).sum())
+        });
+        for (g, x) in self.g.iter_mut().zip(self.xs) {
+            *g = gauge_squared(l, x);
+        }
+        true
+    }
+
+    /// The index of the largest `g_i`, and of the smallest among the weighted points.
+    fn scan(&self) -> (usize, usize) {
+        let (mut j, mut k) = (0, 0);
+        let (mut best, mut worst) = (f64::NEG_INFINITY, f64::INFINITY);
+        for (i, (&g, &w)) in self.g.iter().zip(&self.u).enumerate() {
+            if g > best {
+                (j, best) = (i, g);
+            }
+            if w > 0.0 && g < worst {
+                (k, worst) = (i, g);
+            }
+        }
+        (j, k)
+    }
+
+    /// [`refresh`](Self::refresh), then [`scan`](Self::scan).
+    fn reset(&mut self, iteration: usize) -> Result<(usize, usize), EllipsoidError> {
+        if self.refresh() {
+            Ok(self.scan())
+        } else {
+            Err(EllipsoidError::NumericalFailure { iteration })
+        }
+    }
+
+    /// Iterates until `max g ≤ D (1 + tolerance)` on freshly factorised values; returns the
+    /// number of steps. On success, `l_inv` and `g` are fresh.
+    fn run(&mut self, tolerance: f64) -> Result<usize, EllipsoidError> {
+        let d = D as f64;
+        let (mut j, mut k) = self.reset(0)?;
+        let (mut fresh, mut since_refresh, mut iterations) = (true, 0, 0);
+        loop {
+            let excess = self.g[j] / d - 1.0;
+            if excess <= tolerance && fresh {
+                return Ok(iterations);
+            }
+            if excess > tolerance && iterations >= MAX_ITERATIONS {
+                return Err(EllipsoidError::NoConvergence { iterations, excess });
+            }
+            let (uk, gk) = (self.u[k], self.g[k]);
+            let deficit = if uk > 0.0 && uk < 1.0 {
+                1.0 - gk / d
+            } else {
+                0.0
+            };
+            let (index, tau, drop) = if excess >= deficit {
+                let gj = self.g[j];
+                (j, (gj - d) / (d * (gj - 1.0)), false)
+            } else {
+                // Away step: the line search, or removing k from the support if that is nearer.
+                let limit = -uk / (1.0 - uk);
+                let optimum = if gk > 1.0 {
+                    (gk - d) / (d * (gk - 1.0))
+                } else {
+                    f64::NEG_INFINITY
+                };
+                if optimum > limit {
+                    (k, optimum, false)
+                } else {
+                    (k, limit, true)
+                }
+            };
+            let x = &self.xs[index];
+            let v: [f64; D] = std::array::from_fn(|a| dot(&self.m_inv[a], x));
+            let denominator = 1.0 - tau + tau * dot(x, &v);
+            let usable = tau.is_finite() && denominator > DENOMINATOR_FLOOR;
+            if excess <= tolerance || !usable {
+                // Stop or step on drifted values: decide again on fresh ones.
+                if fresh {
+                    return Err(EllipsoidError::NumericalFailure {
+                        iteration: iterations,
+                    });
+                }
+                (j, k) = self.reset(iterations)?;
+                (fresh, since_refresh) = (true, 0);
+                continue;
+            }
+
+            // M ← (1 − τ) M + τ x xᵀ, by Sherman–Morrison on M⁻¹ and on every g_i.
+            iterations += 1;
+            let coefficient = tau / denominator;
+            let (keep, grow) = (1.0 - tau, 1.0 / (1.0 - tau));
+            for (row, va) in self.m_inv.iter_mut().zip(&v) {
+                for (entry, vb) in row.iter_mut().zip(&v) {
+                    *entry = (*entry - coefficient * va * vb) * grow;
+                }
+            }
+            let (mut best, mut worst) = (f64::NEG_INFINITY, f64::INFINITY);
+            let points = self.xs.iter().zip(self.g.iter_mut()).zip(self.u.iter_mut());
+            for (i, ((x, g), w)) in points.enumerate() {
+                let h = dot(x, &v);
+                *g = (*g - coefficient * h * h) * grow;
+                *w *= keep;
+                if i == index {
+                    *w = if drop { 0.0 } else { *w + tau };
+                }
+                if *g > best {
+                    (j, best) = (i, *g);
+                }
+                if *w > 0.0 && *g < worst {
+                    (k, worst) = (i, *g);
+                }
+            }
+            fresh = false;
+            since_refresh += 1;
+            if since_refresh >= REFRESH_INTERVAL {
+                (j, k) = self.reset(iterations)?;
+                (fresh, since_refresh) = (true, 0);
+            }
+        }
+    }
+
+    /// `R̃ = c L⁻¹` with `c = 1/sqrt(max g)`, shrunk until every point has gauge ≤ 1 as computed;
+    /// and the log-volume gap bound `−D ln c − (D/2) ln D`.
+    fn finish(&self, iterations: usize) -> Result<([[f64; D]; D], f64), EllipsoidError> {
+        let g_max = self.g.iter().fold(0.0_f64, |m, &g| m.max(g));
+        let mut c = 1.0 / g_max.sqrt();
+        let mut r = self.l_inv.map(|row| row.map(|v| v * c));
+        for _ in 0..8 {
+            let q = self
+                .xs
+                .iter()
+                .fold(0.0_f64, |m, x| m.max(gauge_squared(&r, x)));
+            if q <= 1.0 {
+                let d = D as f64;
+                return Ok((r, -d * c.ln() - 0.5 * d * d.ln()));
+            }
+            let shrink = q.sqrt().recip() * (1.0 - 4.0 * f64::EPSILON);
+            c *= shrink;
+            r = r.map(|row| row.map(|v| v * shrink));
+        }
+        Err(EllipsoidError::NumericalFailure {
+            iteration: iterations,
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn unit_ball_volumes() {
+        let pi = std::f64::consts::PI;
+        let expected = [
+            1.0,
+            2.0,
+            pi,
+            4.0 * pi / 3.0,
+            pi * pi / 2.0,
+            8.0 * pi * pi / 15.0,
+            pi.powi(3) / 6.0,
+        ];
+        for (d, v) in expected.iter().enumerate() {
+            assert!((log_unit_ball_volume(d) - v.ln()).abs() < 1e-14, "D = {d}");
+        }
+    }
+
+    #[test]
+    fn one_dimensional_interval() {
+        let e = CentredEllipsoid::try_enclosing(&[[2.0], [-3.0], [1.0]], 1e-12).unwrap();
+        assert!((e.matrix()[0][0] - 1.0 / 9.0).abs() < 1e-12);
+        assert!((e.log_volume() - 6.0_f64.ln()).abs() < 1e-12);
+        assert!(e.contains(&[-3.0]) && !e.contains(&[3.001]));
+    }
+
+    #[test]
+    fn power_of_two_scaling_is_exact() {
+        let points = [[1.0, 0.5], [-0.25, 2.0], [0.75, -0.75], [0.1, 0.3]];
+        let big = points.map(|p| p.map(|c| c * 2f64.powi(600)));
+        let e = CentredEllipsoid::try_enclosing(&points, 1e-9).unwrap();
+        let f = CentredEllipsoid::try_enclosing(&big, 1e-9).unwrap();
+        assert_eq!(e.factor, f.factor);
+        for (p, q) in points.iter().zip(&big) {
+            assert_eq!(e.gauge(p), f.gauge(q));
+        }
+        let shift = 2.0 * 600.0 * 2f64.ln();
+        assert!((f.log_volume() - e.log_volume() - shift).abs() < 1e-9);
+    }
+}

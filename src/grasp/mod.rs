@@ -60,6 +60,7 @@ mod contact;
 pub mod ellipsoid;
 mod error;
 mod friction;
+pub mod ows;
 pub mod quality;
 mod random;
 mod snap;

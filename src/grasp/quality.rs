@@ -135,6 +135,17 @@ pub enum QualityError {
     },
     /// Qhull failed (feature `qhull`).
     Qhull(String),
+    /// Q_OWS: the grasp's torque frame is not the object wrench space's (build the grasp with
+    /// [`ObjectWrenchSpace::frame`](crate::grasp::ows::ObjectWrenchSpace::frame)).
+    TorqueFrameMismatch {
+        /// The grasp's (torque reference, torque scale).
+        grasp: ([f64; 3], f64),
+        /// The space's.
+        space: ([f64; 3], f64),
+    },
+    /// Q_OWS by the ellipsoid method: no enclosing ellipsoid (the disturbances span fewer than six
+    /// dimensions).
+    Ellipsoid(String),
 }
 
 impl fmt::Display for QualityError {
@@ -153,6 +164,13 @@ impl fmt::Display for QualityError {
                 )
             }
             QualityError::Qhull(message) => write!(f, "qhull failed: {message}"),
+            QualityError::TorqueFrameMismatch { grasp, space } => write!(
+                f,
+                "the grasp's torque frame (reference {:?}, scale {}) is not the object wrench \
+                 space's (reference {:?}, scale {})",
+                grasp.0, grasp.1, space.0, space.1
+            ),
+            QualityError::Ellipsoid(message) => write!(f, "no enclosing ellipsoid: {message}"),
         }
     }
 }

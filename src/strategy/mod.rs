@@ -44,10 +44,12 @@ use std::time::Duration;
 
 mod closest_to_origin;
 mod farthest_point;
+mod ows_inflation;
 pub(crate) mod nearest;
 
 pub use closest_to_origin::{ClosestToOrigin, DistanceResult, NoSource, PointSource};
 pub use farthest_point::FarthestPoint;
+pub use ows_inflation::{OwsInflation, OwsResult, inflation_factor};
 
 /// Work counters every strategy reports (the seed paper's evaluation measures).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

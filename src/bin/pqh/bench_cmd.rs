@@ -1,12 +1,31 @@
-//! `pqh bench gws`: the seed paper's GWS evaluation, every method side by side in one run.
+//! `pqh bench gws`: the seed paper's GWS evaluation, every method side by side in one run, plus
+//! Q∞ by the partial hull and the batch throughput of `evaluate_batch` on 1, 2, … threads.
 
 use crate::error::CliError;
 use crate::grasp_cmd::{MethodArg, method};
 use clap::{Args, Subcommand};
-use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality};
+use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, evaluate_batch};
 use pqhull::grasp::{FrictionModel, Grasp};
 use pqhull::rbox::Rng;
-use serde_json::json;
+use serde_json::{Value, json};
+use std::time::Instant;
+
+pub const GWS_LONG_ABOUT: &str = "\
+Random 4-contact grasps on a 1 x 0.4 x 0.2 bar (mu = 0.5, torque scale = half-diagonal), for
+each number of cone edges k:
+
+  Q1      every --methods entry on the same grasps (partial on all --grasps, always first; full
+          and qhull on the first --full-grasps), with full/partial ratios of time, points
+          processed and facets created, and a count of grasps where the methods disagree.
+  Q-inf   the partial method over the implicit Minkowski sum (k^m points, never materialised),
+          on all --grasps, for every k <= --qinf-max-edges (default 32; 0 turns it off):
+          median, mean and largest time per grasp.
+  batch   `evaluate_batch` (Q1, partial) of all --grasps inside a rayon pool of each --threads
+          size (default 1 and the available parallelism), rounds interleaved across sizes,
+          median of --batch-rounds (0 turns it off): grasps/s and the speed-up over 1 thread.
+          The batch results must equal the sequential ones (counted in `mismatches`).
+
+Times are wall clock on whatever else the machine is doing: compare rows of one run.";
 
 #[derive(Debug, Args)]
 pub struct BenchArgs {
@@ -16,13 +35,15 @@ pub struct BenchArgs {
 
 #[derive(Debug, Subcommand)]
 pub enum Which {
-    /// Q1 on random 4-contact grasps on a box, k = 4 … 64: partial vs full vs Qhull
+    /// Random 4-contact grasps on a box, k = 4 … 64: Q1 partial vs full vs Qhull, Q∞, batch
+    /// throughput on 1…n threads
+    #[command(long_about = GWS_LONG_ABOUT)]
     Gws(GwsArgs),
 }
 
 #[derive(Debug, Args)]
 pub struct GwsArgs {
-    /// Random grasps per k (partial method)
+    /// Random grasps per k (partial method, Q∞ and batch)
     #[arg(long, default_value_t = 200)]
     pub grasps: usize,
     /// At most this many of them for the full-hull methods (they are slow at large k)
@@ -34,7 +55,7 @@ pub struct GwsArgs {
     /// Contacts per grasp
     #[arg(long, default_value_t = 4)]
     pub contacts: usize,
-    /// Methods, comma separated (qhull needs the `qhull` feature)
+    /// Q1 methods, comma separated (qhull needs the `qhull` feature); partial always runs, first
     #[arg(
         long,
         value_delimiter = ',',
@@ -42,10 +63,22 @@ pub struct GwsArgs {
         default_value = "partial,full"
     )]
     pub methods: Vec<MethodArg>,
+    /// Q∞ (partial, implicit Minkowski sum) for every k up to this; 0: no Q∞
+    #[arg(long, value_name = "K", default_value_t = 32)]
+    pub qinf_max_edges: usize,
+    /// Q∞ with the zero wrench added to every contact (GraspIt!'s variant)
+    #[arg(long)]
+    pub zero_wrench: bool,
+    /// Batch pool sizes, comma separated [default: 1,<available parallelism>]
+    #[arg(long, value_delimiter = ',', value_name = "N,...")]
+    pub threads: Option<Vec<usize>>,
+    /// Timed rounds of each batch measurement (the median is reported); 0: no batch
+    #[arg(long, default_value_t = 3)]
+    pub batch_rounds: usize,
     /// Seed of the random grasps
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
-    /// One JSON document instead of the table
+    /// One JSON document instead of the tables
     #[arg(long)]
     pub json: bool,
 }
@@ -67,6 +100,20 @@ struct Row {
     facets: Vec<usize>,
 }
 
+impl Row {
+    fn new(method: &'static str, results: &[Quality]) -> Row {
+        Row {
+            method,
+            times_us: results
+                .iter()
+                .map(|q| q.stats.elapsed.as_secs_f64() * 1e6)
+                .collect(),
+            points: results.iter().map(|q| q.stats.points_processed).collect(),
+            facets: results.iter().map(|q| q.stats.facets_created).collect(),
+        }
+    }
+}
+
 fn median(values: &mut [f64]) -> f64 {
     values.sort_by(f64::total_cmp);
     values.get(values.len() / 2).copied().unwrap_or(f64::NAN)
@@ -86,6 +133,79 @@ fn name(method: Method) -> &'static str {
     }
 }
 
+/// Evaluates `set` one grasp after another with one evaluator.
+fn evaluate_all(set: &[Grasp], metric: Metric, method: Method) -> Result<Vec<Quality>, CliError> {
+    let mut evaluator = Evaluator::new(metric, method);
+    set.iter()
+        .map(|g| evaluator.evaluate(g))
+        .collect::<Result<_, _>>()
+        .map_err(|e| CliError::Geometry(e.to_string()))
+}
+
+/// The pool sizes: `--threads`, or 1 and the available parallelism.
+fn thread_counts(args: &GwsArgs) -> Result<Vec<usize>, CliError> {
+    let counts = match &args.threads {
+        Some(counts) => counts.clone(),
+        None => {
+            let n = std::thread::available_parallelism().map_or(1, |n| n.get());
+            if n > 1 { vec![1, n] } else { vec![1] }
+        }
+    };
+    if counts.contains(&0) {
+        return Err(CliError::Usage(
+            "--threads: pool sizes must be at least 1".into(),
+        ));
+    }
+    Ok(counts)
+}
+
+/// Batch throughput of Q1 by the partial method in pools of each size; rounds interleaved across
+/// sizes so a change of load hits them alike.
+fn batch(
+    set: &[Grasp],
+    sequential: &[Quality],
+    pools: &[(usize, rayon::ThreadPool)],
+    rounds: usize,
+) -> Vec<Value> {
+    let mut seconds = vec![Vec::with_capacity(rounds); pools.len()];
+    let mut mismatches = vec![0usize; pools.len()];
+    for _ in 0..rounds {
+        for (i, (_, pool)) in pools.iter().enumerate() {
+            let started = Instant::now();
+            let results = pool.install(|| evaluate_batch(set, Metric::Q1, Method::Partial));
+            seconds[i].push(started.elapsed().as_secs_f64());
+            mismatches[i] += results
+                .iter()
+                .zip(sequential)
+                .filter(|(r, s)| {
+                    r.as_ref().map_or(true, |r| {
+                        r.value.to_bits() != s.value.to_bits() || r.force_closure != s.force_closure
+                    })
+                })
+                .count();
+        }
+    }
+    let rate = |i: usize| set.len() as f64 / median(&mut seconds[i].clone());
+    let one_thread = pools.iter().position(|(n, _)| *n == 1).map(rate);
+    pools
+        .iter()
+        .enumerate()
+        .map(|(i, (threads, _))| {
+            let grasps_per_s = rate(i);
+            json!({
+                "threads": threads,
+                "grasps": set.len(),
+                "rounds": rounds,
+                "median_s": median(&mut seconds[i].clone()),
+                "best_s": seconds[i].iter().copied().fold(f64::INFINITY, f64::min),
+                "grasps_per_s": grasps_per_s,
+                "speedup_vs_1_thread": one_thread.map(|one| grasps_per_s / one),
+                "mismatches": mismatches[i],
+            })
+        })
+        .collect()
+}
+
 pub fn run(args: &BenchArgs) -> Result<(), CliError> {
     let Which::Gws(args) = &args.which;
     if args.contacts == 0 || args.grasps == 0 {
@@ -93,38 +213,50 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
             "--grasps and --contacts must be at least 1".into(),
         ));
     }
-    let methods: Vec<Method> = args
-        .methods
+    // Partial first (the ratios are against it), then the others once each.
+    let mut methods = vec![Method::Partial];
+    for &arg in &args.methods {
+        let m = method(arg)?;
+        if !methods.contains(&m) {
+            methods.push(m);
+        }
+    }
+    let threads = if args.batch_rounds == 0 {
+        Vec::new()
+    } else {
+        thread_counts(args)?
+    };
+    let pools = threads
         .iter()
-        .map(|&m| method(m))
-        .collect::<Result<_, _>>()?;
+        .map(|&n| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(n)
+                .build()
+                .map(|pool| (n, pool))
+                .map_err(|e| CliError::Usage(format!("cannot start {n} threads: {e}")))
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let qinf_metric = Metric::QInf {
+        with_zero_wrench: args.zero_wrench,
+    };
     let mut report = Vec::new();
     for &k in &args.edges {
         let set = grasps(args.seed, args.grasps, args.contacts, k)?;
         let mut rows = Vec::new();
         let mut values: Vec<Vec<f64>> = Vec::new();
+        let mut partial_results = Vec::new();
         for &m in &methods {
             let n = if m == Method::Partial {
                 set.len()
             } else {
                 args.full_grasps.min(set.len())
             };
-            let mut evaluator = Evaluator::new(Metric::Q1, m);
-            let results: Vec<Quality> = set[..n]
-                .iter()
-                .map(|g| evaluator.evaluate(g))
-                .collect::<Result<_, _>>()
-                .map_err(|e| CliError::Geometry(e.to_string()))?;
+            let results = evaluate_all(&set[..n], Metric::Q1, m)?;
             values.push(results.iter().map(|q| q.value).collect());
-            rows.push(Row {
-                method: name(m),
-                times_us: results
-                    .iter()
-                    .map(|q| q.stats.elapsed.as_secs_f64() * 1e6)
-                    .collect(),
-                points: results.iter().map(|q| q.stats.points_processed).collect(),
-                facets: results.iter().map(|q| q.stats.facets_created).collect(),
-            });
+            rows.push(Row::new(name(m), &results));
+            if m == Method::Partial {
+                partial_results = results;
+            }
         }
         // Every method must give the same answers on the grasps they share.
         let disagreements = values
@@ -161,15 +293,69 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
                 "facets_ratio_vs_partial": facets_ratio,
             }));
         }
-        report.push(json!({"cone_edges": k, "contacts": args.contacts, "disagreements": disagreements, "methods": entries}));
+        let qinf = if k <= args.qinf_max_edges {
+            // A grasp the library cannot evaluate is counted, not fatal (the timings are over
+            // the others).
+            let mut evaluator = Evaluator::new(qinf_metric, Method::Partial);
+            let mut results = Vec::new();
+            let mut errors = Vec::new();
+            for (i, g) in set.iter().enumerate() {
+                match evaluator.evaluate(g) {
+                    Ok(q) => results.push(q),
+                    Err(e) => errors.push(format!("grasp {i}: {e}")),
+                }
+            }
+            let row = Row::new("partial", &results);
+            json!({
+                "method": row.method,
+                "with_zero_wrench": args.zero_wrench,
+                "grasps": results.len(),
+                "errors": errors.len(),
+                "first_error": errors.first(),
+                "force_closure": results.iter().filter(|q| q.force_closure).count(),
+                "median_us": median(&mut row.times_us.clone()),
+                "mean_us": mean(row.times_us.iter().copied()),
+                "max_us": row.times_us.iter().copied().fold(0.0, f64::max),
+                "mean_points_processed": mean(row.points.iter().map(|&p| p as f64)),
+                "mean_facets_created": mean(row.facets.iter().map(|&p| p as f64)),
+            })
+        } else {
+            Value::Null
+        };
+        let batch = batch(&set, &partial_results, &pools, args.batch_rounds);
+        report.push(json!({
+            "cone_edges": k,
+            "contacts": args.contacts,
+            "disagreements": disagreements,
+            "methods": entries,
+            "qinf": qinf,
+            "batch": batch,
+        }));
     }
     if args.json {
         println!(
             "{}",
-            json!({"benchmark": "gws", "seed": args.seed, "results": report})
+            json!({
+                "benchmark": "gws",
+                "seed": args.seed,
+                "threads": threads,
+                "available_parallelism": std::thread::available_parallelism().map_or(1, |n| n.get()),
+                "batch_rounds": args.batch_rounds,
+                "qinf_max_edges": args.qinf_max_edges,
+                "results": report,
+            })
         );
         return Ok(());
     }
+    print_tables(args, &report);
+    Ok(())
+}
+
+fn num(v: &Value) -> f64 {
+    v.as_f64().unwrap_or(f64::NAN)
+}
+
+fn print_tables(args: &GwsArgs, report: &[Value]) {
     println!(
         "GWS Q1, {} contacts, random grasps on a 1 x 0.4 x 0.2 bar (seed {})",
         args.contacts, args.seed
@@ -187,20 +373,20 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
         "x points",
         "x facets"
     );
-    for entry in &report {
+    for entry in report {
         for m in entry["methods"].as_array().expect("array") {
             println!(
                 "{:>4} {:>8} {:>6} {:>12.1} {:>12.1} {:>10.1} {:>10.1} {:>10.1} {:>10.2} {:>10.1}",
-                entry["cone_edges"],
+                entry["cone_edges"].as_u64().unwrap_or(0),
                 m["method"].as_str().unwrap_or(""),
-                m["grasps"],
-                m["median_us"].as_f64().unwrap_or(f64::NAN),
-                m["mean_us"].as_f64().unwrap_or(f64::NAN),
-                m["mean_points_processed"].as_f64().unwrap_or(f64::NAN),
-                m["mean_facets_created"].as_f64().unwrap_or(f64::NAN),
-                m["time_ratio_vs_partial"].as_f64().unwrap_or(f64::NAN),
-                m["points_ratio_vs_partial"].as_f64().unwrap_or(f64::NAN),
-                m["facets_ratio_vs_partial"].as_f64().unwrap_or(f64::NAN)
+                m["grasps"].as_u64().unwrap_or(0),
+                num(&m["median_us"]),
+                num(&m["mean_us"]),
+                num(&m["mean_points_processed"]),
+                num(&m["mean_facets_created"]),
+                num(&m["time_ratio_vs_partial"]),
+                num(&m["points_ratio_vs_partial"]),
+                num(&m["facets_ratio_vs_partial"])
             );
         }
         if entry["disagreements"] != 0 {
@@ -213,5 +399,73 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
     println!(
         "x = full method / partial, on the grasps both evaluated (time: median of per-grasp ratios)"
     );
-    Ok(())
+    if report.iter().any(|e| !e["qinf"].is_null()) {
+        println!();
+        println!(
+            "Q-inf by the partial hull (implicit Minkowski sum{})",
+            if args.zero_wrench {
+                ", with the zero wrench"
+            } else {
+                ""
+            }
+        );
+        println!(
+            "{:>4} {:>6} {:>6} {:>12} {:>12} {:>12} {:>10} {:>10}",
+            "k", "grasps", "fc", "median_us", "mean_us", "max_us", "points", "facets"
+        );
+        for entry in report.iter().filter(|e| !e["qinf"].is_null()) {
+            let q = &entry["qinf"];
+            println!(
+                "{:>4} {:>6} {:>6} {:>12.1} {:>12.1} {:>12.1} {:>10.1} {:>10.1}",
+                entry["cone_edges"].as_u64().unwrap_or(0),
+                q["grasps"].as_u64().unwrap_or(0),
+                q["force_closure"].as_u64().unwrap_or(0),
+                num(&q["median_us"]),
+                num(&q["mean_us"]),
+                num(&q["max_us"]),
+                num(&q["mean_points_processed"]),
+                num(&q["mean_facets_created"])
+            );
+            if q["errors"] != 0 {
+                println!(
+                    "     !! {} grasps not evaluated, first: {}",
+                    q["errors"],
+                    q["first_error"].as_str().unwrap_or("")
+                );
+            }
+        }
+    }
+    if report
+        .iter()
+        .any(|e| e["batch"].as_array().is_some_and(|b| !b.is_empty()))
+    {
+        println!();
+        println!(
+            "Batch Q1 (partial, evaluate_batch), median of {} rounds",
+            args.batch_rounds
+        );
+        println!(
+            "{:>4} {:>7} {:>6} {:>10} {:>10} {:>10}",
+            "k", "threads", "grasps", "median_s", "grasps/s", "x 1 thread"
+        );
+        for entry in report {
+            for b in entry["batch"].as_array().into_iter().flatten() {
+                println!(
+                    "{:>4} {:>7} {:>6} {:>10.4} {:>10.1} {:>10.2}",
+                    entry["cone_edges"].as_u64().unwrap_or(0),
+                    b["threads"].as_u64().unwrap_or(0),
+                    b["grasps"].as_u64().unwrap_or(0),
+                    num(&b["median_s"]),
+                    num(&b["grasps_per_s"]),
+                    num(&b["speedup_vs_1_thread"])
+                );
+                if b["mismatches"] != 0 {
+                    println!(
+                        "     !! {} batch results differ from sequential",
+                        b["mismatches"]
+                    );
+                }
+            }
+        }
+    }
 }

@@ -1,0 +1,223 @@
+//! Evaluating Q_OWS: the partial hull (PQHOWS), brute force, and Borst et al.'s ellipsoid.
+
+use super::ObjectWrenchSpace;
+use crate::grasp::Grasp;
+use crate::grasp::quality::{Method, QualityError, q1_of_wrenches};
+use crate::hull::{Hull, HullError};
+use crate::predicates::Sign;
+use crate::strategy::{OwsInflation, Stats, inflation_factor};
+use std::time::Instant;
+
+/// How Q_OWS is computed.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum OwsMethod {
+    /// The partial hull grown by [`OwsInflation`] (PQHOWS): exact, the default.
+    #[default]
+    Partial,
+    /// The full grasp hull, then every disturbance against every facet (the seed paper's eq. 8–9):
+    /// exact, the reference.
+    BruteForce,
+    /// Borst et al.'s approximation: map the wrench space so that the disturbances' enclosing
+    /// ellipsoid ([`ObjectWrenchSpace::ellipsoid`]) becomes the unit ball, then take Q1 of the
+    /// mapped grasp. Never larger than the exact value (the ellipsoid contains every
+    /// disturbance), and not exact.
+    Ellipsoid,
+}
+
+/// Q_OWS of one grasp.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct OwsQuality {
+    /// Whether the grasp wrench space holds the origin strictly inside (decided exactly).
+    pub force_closure: bool,
+    /// Q_OWS (the ellipsoid method's approximation of it); `None` when not force closure.
+    pub value: Option<f64>,
+    /// The disturbance whose inflation decides the value (exact methods only).
+    pub deciding_disturbance: Option<usize>,
+    /// Work done by the grasp's hull (the ellipsoid method: by its Q1 hull).
+    pub stats: Stats,
+}
+
+/// `(approximate − exact) / exact`: negative when the approximation underestimates.
+pub fn relative_error(approximate: f64, exact: f64) -> f64 {
+    (approximate - exact) / exact
+}
+
+/// Evaluates Q_OWS by one method over many grasps, reusing its wrench buffer.
+///
+/// ```
+/// use pqhull::grasp::{FrictionModel, Grasp};
+/// use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod};
+/// use pqhull::mesh::Mesh;
+/// use pqhull::rbox::Rng;
+///
+/// let friction = FrictionModel::try_new(0.5, 8)?;
+/// let bar = Mesh::cuboid([0.5, 0.2, 0.1])?;
+/// let ows = ObjectWrenchSpace::from_mesh(&bar, friction)?;
+/// let mut partial = OwsEvaluator::new(OwsMethod::Partial);
+/// let mut brute = OwsEvaluator::new(OwsMethod::BruteForce);
+/// let mut rng = Rng::new(7);
+/// for _ in 0..5 {
+///     // A random 4-contact grasp, put in the object's torque frame.
+///     let grasp = ows.frame(&Grasp::random_on_box(&mut rng, [0.5, 0.2, 0.1], 4, friction))?;
+///     let (a, b) = (partial.evaluate(&grasp, &ows)?, brute.evaluate(&grasp, &ows)?);
+///     assert_eq!(a.force_closure, b.force_closure);
+///     if let (Some(a), Some(b)) = (a.value, b.value) {
+///         assert!((a - b).abs() <= 1e-9 * b);
+///     }
+/// }
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Clone, Debug, Default)]
+pub struct OwsEvaluator {
+    method: OwsMethod,
+    wrenches: Vec<[f64; 6]>,
+}
+
+impl OwsEvaluator {
+    /// An evaluator using `method`.
+    pub fn new(method: OwsMethod) -> Self {
+        OwsEvaluator {
+            method,
+            wrenches: Vec::new(),
+        }
+    }
+
+    /// The method used.
+    pub fn method(&self) -> OwsMethod {
+        self.method
+    }
+
+    /// Q_OWS of `grasp` against `space`. The grasp's wrenches are snapped as for Q1 (see
+    /// [`Grasp::snapped_wrenches_into`]); for a space built from a mesh the grasp must use the
+    /// mesh's torque frame ([`ObjectWrenchSpace::frame`]).
+    ///
+    /// # Errors
+    /// [`QualityError::TorqueFrameMismatch`] when the grasp's torque reference or scale differ
+    /// from the space's; [`QualityError::NonFiniteWrench`]; [`QualityError::Ellipsoid`] when the
+    /// ellipsoid method meets disturbances spanning fewer than six dimensions.
+    pub fn evaluate(
+        &mut self,
+        grasp: &Grasp,
+        space: &ObjectWrenchSpace,
+    ) -> Result<OwsQuality, QualityError> {
+        if let Some((c, rho)) = space.torque_frame()
+            && (grasp.torque_reference() != c || grasp.torque_scale() != rho)
+        {
+            return Err(QualityError::TorqueFrameMismatch {
+                grasp: (grasp.torque_reference(), grasp.torque_scale()),
+                space: (c, rho),
+            });
+        }
+        let started = Instant::now();
+        grasp.snapped_wrenches_into(&mut self.wrenches);
+        let mut quality = ows_with(&self.wrenches, space, self.method)?;
+        quality.stats.elapsed = started.elapsed();
+        Ok(quality)
+    }
+}
+
+/// Q_OWS of an explicit grasp wrench set (exact on exactly these numbers) against `space`.
+///
+/// # Errors
+/// [`QualityError::NonFiniteWrench`] for a NaN or infinite coordinate; [`QualityError::Ellipsoid`].
+pub fn ows_of_wrenches(
+    wrenches: &[[f64; 6]],
+    space: &ObjectWrenchSpace,
+    method: OwsMethod,
+) -> Result<OwsQuality, QualityError> {
+    let started = Instant::now();
+    let mut quality = ows_with(wrenches, space, method)?;
+    quality.stats.elapsed = started.elapsed();
+    Ok(quality)
+}
+
+fn not_force_closure(stats: Stats) -> OwsQuality {
+    OwsQuality {
+        force_closure: false,
+        value: None,
+        deciding_disturbance: None,
+        stats,
+    }
+}
+
+fn ows_with(
+    wrenches: &[[f64; 6]],
+    space: &ObjectWrenchSpace,
+    method: OwsMethod,
+) -> Result<OwsQuality, QualityError> {
+    if wrenches.iter().flatten().any(|x| !x.is_finite()) {
+        return Err(QualityError::NonFiniteWrench);
+    }
+    match method {
+        OwsMethod::Partial => Ok(partial(wrenches, space)),
+        OwsMethod::BruteForce => Ok(brute_force(wrenches, space)),
+        OwsMethod::Ellipsoid => ellipsoid(wrenches, space),
+    }
+}
+
+fn partial(wrenches: &[[f64; 6]], space: &ObjectWrenchSpace) -> OwsQuality {
+    let strategy = OwsInflation::new(space.disturbances());
+    match Hull::try_with_strategy(wrenches, strategy) {
+        Ok((_, result)) => OwsQuality {
+            force_closure: result.is_force_closure(),
+            value: result.value,
+            deciding_disturbance: result.deciding_disturbance,
+            stats: result.stats,
+        },
+        // Wrenches spanning fewer than six dimensions cannot hold the origin in their interior.
+        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
+            not_force_closure(Stats::default())
+        }
+        Err(e) => unreachable!("finite wrenches of a grasp: {e}"),
+    }
+}
+
+fn brute_force(wrenches: &[[f64; 6]], space: &ObjectWrenchSpace) -> OwsQuality {
+    let hull = match Hull::try_new(wrenches) {
+        Ok(hull) => hull,
+        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
+            return not_force_closure(Stats::default());
+        }
+        Err(e) => unreachable!("finite wrenches of a grasp: {e}"),
+    };
+    let stats = hull.stats();
+    let origin = [0.0; 6];
+    if hull
+        .facets()
+        .any(|(id, _)| hull.side_of(id, &origin) != Sign::Negative)
+    {
+        return not_force_closure(stats);
+    }
+    // eq. 8–9: each disturbance's ray leaves through the facet with the smallest factor.
+    let mut best: Option<(f64, usize)> = None;
+    for (i, d) in space.disturbances().iter().enumerate() {
+        let u = d.map(|c| -c);
+        for (_, facet) in hull.facets() {
+            if let Some(r) = inflation_factor(&facet.normal(), facet.offset(), &u)
+                && best.is_none_or(|(b, _)| r < b)
+            {
+                best = Some((r, i));
+            }
+        }
+    }
+    OwsQuality {
+        force_closure: true,
+        value: Some(best.map_or(f64::INFINITY, |(r, _)| r)),
+        deciding_disturbance: best.map(|(_, i)| i),
+        stats,
+    }
+}
+
+fn ellipsoid(wrenches: &[[f64; 6]], space: &ObjectWrenchSpace) -> Result<OwsQuality, QualityError> {
+    let ellipsoid = space
+        .ellipsoid()
+        .map_err(|e| QualityError::Ellipsoid(e.to_string()))?;
+    let mapped: Vec<[f64; 6]> = wrenches.iter().map(|w| ellipsoid.map(w)).collect();
+    let q1 = q1_of_wrenches(&mapped, Method::Partial)?;
+    Ok(OwsQuality {
+        force_closure: q1.force_closure,
+        value: q1.force_closure.then_some(q1.value),
+        deciding_disturbance: None,
+        stats: q1.stats,
+    })
+}

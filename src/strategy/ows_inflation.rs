@@ -1,0 +1,356 @@
+//! `OwsInflation`: the PQHOWS algorithm (Liu & Carpin, Algorithm 2), made exact.
+
+use super::{Stats, Step, Strategy};
+use crate::hull::{FacetId, Hull, dot};
+use crate::predicates::Sign;
+use std::cmp::Ordering;
+use std::collections::BinaryHeap;
+
+/// Grows the hull until it can tell how far a set of *disturbances* can be inflated before the
+/// hull stops resisting them: the largest `r` such that `−r·d` lies in the full hull for every
+/// disturbance `d` — the object-wrench-space grasp metric when the hull's points are a grasp's
+/// wrenches and the disturbances are the object's wrench space (see
+/// [`grasp::ows`](crate::grasp::ows)).
+///
+/// # Sign
+///
+/// A disturbance `d` is a wrench applied *to* the object (a push on its surface); the grasp
+/// resists it by producing the opposite wrench `−d`. So the ray that matters for `d` starts at the
+/// origin and points along `u = −d`, and its *inflation factor* against a facet with unit outward
+/// normal `n` and offset `o > 0` is `r = o / (n·u)` (where `n·u > 0`): `−r·d` lies on that facet's
+/// plane. The answer is the smallest inflation factor over all disturbances, each taken at the
+/// facet its ray leaves the hull through.
+///
+/// # How it decides
+///
+/// 1. Grow the hull until the origin is strictly inside it (exact orientation signs). If a facet
+///    with the origin on or beyond its plane has no point beyond it, its plane supports the full
+///    hull: the origin is not strictly inside, so the set is not force closure and there is no
+///    number ([`OwsResult::value`] is `None`).
+/// 2. Assign every disturbance to the facet its ray leaves through (the facet with the smallest
+///    inflation factor); queue every facet by the smallest factor of its disturbances.
+/// 3. Pop the smallest. If no point lies beyond that facet (after [`Hull::claim_beyond`]), its plane
+///    supports the full hull, so the full hull's factor for that disturbance equals the partial
+///    one; every other disturbance's partial factor is at least as large, and the full hull
+///    contains the partial one, so full factors are larger still: the popped factor is the answer.
+///    Otherwise expand the facet and move the disturbances of the removed facets to the new facets
+///    (the only facets their rays can now leave through).
+///
+/// Inflation factors are floating point (the quotient of a precise normal's dot product and
+/// offset); every combinatorial decision is exact.
+///
+/// ```
+/// use pqhull::Hull;
+/// use pqhull::strategy::OwsInflation;
+///
+/// // The square [−1, 1]² resists the disturbances (1, 0) and (1, 1) up to r = 1.
+/// let square = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0], [0.3, 0.2]];
+/// let disturbances = [[1.0, 0.0], [1.0, 1.0]];
+/// let (_, result) = Hull::try_with_strategy(&square, OwsInflation::new(&disturbances))?;
+/// assert!((result.value.unwrap() - 1.0).abs() < 1e-12);
+/// // Doubling every disturbance halves the answer.
+/// let doubled = [[2.0, 0.0], [2.0, 2.0]];
+/// let (_, result) = Hull::try_with_strategy(&square, OwsInflation::new(&doubled))?;
+/// assert!((result.value.unwrap() - 0.5).abs() < 1e-12);
+/// // A triangle with the origin on its boundary is not force closure: no value.
+/// let triangle = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
+/// let (_, result) = Hull::try_with_strategy(&triangle, OwsInflation::new(&disturbances))?;
+/// assert_eq!(result.value, None);
+/// # Ok::<(), pqhull::HullError>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct OwsInflation<'a, const D: usize> {
+    disturbances: &'a [[f64; D]],
+    phase: Phase,
+    queue: BinaryHeap<Entry>,
+    /// Disturbance indices assigned to each facet slot, valid while `owner[slot]` is the facet's
+    /// serial.
+    assigned: Vec<Vec<u32>>,
+    owner: Vec<u64>,
+    orphans: Vec<u32>,
+    /// Older facets that received disturbances in a fallback search, to queue again.
+    requeue: Vec<FacetId>,
+    answer: Option<(f64, FacetId, usize)>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Phase {
+    /// Growing the hull until the origin is strictly inside.
+    ContainOrigin,
+    /// Inflating the disturbances.
+    Inflate,
+    /// Not force closure.
+    Outside,
+    Done,
+}
+
+/// What [`OwsInflation`] finds.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OwsResult<const D: usize> {
+    /// The largest `r` with `−r·d` in the full hull for every disturbance `d`; `None` when the
+    /// origin is not strictly inside the full hull (not force closure). `f64::INFINITY` when every
+    /// disturbance is the zero vector.
+    pub value: Option<f64>,
+    /// The facet the deciding disturbance's ray leaves through (when there is a finite value).
+    pub deciding_facet: Option<FacetId>,
+    /// That facet's vertices (input indices).
+    pub deciding_facet_vertices: Option<[usize; D]>,
+    /// The index of the deciding disturbance (the first one in input order among exact ties is
+    /// not guaranteed).
+    pub deciding_disturbance: Option<usize>,
+    /// Work done by the partial hull.
+    pub stats: Stats,
+}
+
+impl<const D: usize> OwsResult<D> {
+    /// Whether the origin is strictly inside the hull (force closure).
+    pub fn is_force_closure(&self) -> bool {
+        self.value.is_some()
+    }
+}
+
+/// The inflation factor of ray `u` against a facet plane `normal · x = offset` whose offset is
+/// positive (the origin inside): `offset / (normal · u)`, or `None` when the ray runs parallel to or
+/// away from the plane. A non-positive offset (the origin within rounding of the plane) gives 0.
+pub fn inflation_factor<const D: usize>(normal: &[f64; D], offset: f64, u: &[f64; D]) -> Option<f64> {
+    let rate = dot(normal, u);
+    (rate > 0.0).then(|| offset.max(0.0) / rate)
+}
+
+impl<'a, const D: usize> OwsInflation<'a, D> {
+    /// A strategy inflating `disturbances` (each resisted by its opposite; see the type's docs).
+    pub fn new(disturbances: &'a [[f64; D]]) -> Self {
+        OwsInflation {
+            disturbances,
+            phase: Phase::ContainOrigin,
+            queue: BinaryHeap::new(),
+            assigned: Vec::new(),
+            owner: Vec::new(),
+            orphans: Vec::new(),
+            requeue: Vec::new(),
+            answer: None,
+        }
+    }
+
+    /// The ray of disturbance `i`: `−d_i`.
+    fn ray(&self, i: u32) -> [f64; D] {
+        self.disturbances[i as usize].map(|c| -c)
+    }
+
+    /// Assigns every disturbance in `self.orphans` to the facet among `candidates` its ray leaves
+    /// through, then queues each candidate that received any.
+    fn assign(&mut self, hull: &mut Hull<D>, candidates: &[FacetId]) {
+        for &id in candidates {
+            // Inflation factors need certified normals.
+            hull.refine_normal(id);
+            let slot = id.index();
+            if self.assigned.len() <= slot {
+                self.assigned.resize_with(slot + 1, Vec::new);
+                self.owner.resize(slot + 1, u64::MAX);
+            }
+            self.assigned[slot].clear();
+            self.owner[slot] = hull.facet(id).serial();
+        }
+        for o in 0..self.orphans.len() {
+            let i = self.orphans[o];
+            let u = self.ray(i);
+            let best = candidates
+                .iter()
+                .filter_map(|&id| {
+                    let f = hull.facet(id);
+                    inflation_factor(&f.normal(), f.offset(), &u).map(|r| (r, id))
+                })
+                .min_by(|a, b| a.0.total_cmp(&b.0));
+            let best = best.or_else(|| {
+                // Rounding left the ray parallel to every new facet: it leaves through a facet
+                // that shares the old exit point. Search them all.
+                let live: Vec<FacetId> = hull.facets().map(|(id, _)| id).collect();
+                live.into_iter()
+                    .filter_map(|id| {
+                        hull.refine_normal(id);
+                        let f = hull.facet(id);
+                        inflation_factor(&f.normal(), f.offset(), &u).map(|r| (r, id))
+                    })
+                    .min_by(|a, b| a.0.total_cmp(&b.0))
+            });
+            if let Some((_, id)) = best {
+                if !candidates.contains(&id) {
+                    self.requeue.push(id);
+                }
+                self.assigned[id.index()].push(i);
+            }
+            // No facet at all: the zero disturbance, which constrains nothing.
+        }
+        self.orphans.clear();
+        for &id in candidates {
+            self.enqueue(hull, id);
+        }
+        while let Some(id) = self.requeue.pop() {
+            self.enqueue(hull, id);
+        }
+    }
+
+    /// Queues facet `id` by the smallest inflation factor among its disturbances.
+    fn enqueue(&mut self, hull: &Hull<D>, id: FacetId) {
+        let facet = hull.facet(id);
+        let slot = id.index();
+        if self.owner.get(slot) != Some(&facet.serial()) {
+            return;
+        }
+        let best = self.assigned[slot]
+            .iter()
+            .filter_map(|&i| {
+                inflation_factor(&facet.normal(), facet.offset(), &self.ray(i)).map(|r| (r, i))
+            })
+            .min_by(|a, b| a.0.total_cmp(&b.0));
+        if let Some((factor, disturbance)) = best {
+            self.queue.push(Entry {
+                factor,
+                id,
+                serial: facet.serial(),
+                disturbance,
+            });
+        }
+    }
+
+    fn step_contain_origin(&mut self, hull: &mut Hull<D>) -> Step {
+        let origin = [0.0; D];
+        let mut worst: Option<(f64, FacetId)> = None;
+        for (id, facet) in hull.facets() {
+            if hull.side_of(id, &origin) != Sign::Negative {
+                let beyond = -facet.offset();
+                if worst.is_none_or(|(b, _)| beyond > b) {
+                    worst = Some((beyond, id));
+                }
+            }
+        }
+        let Some((_, id)) = worst else {
+            self.phase = Phase::Inflate;
+            let live: Vec<FacetId> = hull.facets().map(|(id, _)| id).collect();
+            self.orphans.extend(0..self.disturbances.len() as u32);
+            self.assign(hull, &live);
+            return Step::Continue;
+        };
+        if hull.facet(id).outside_len() > 0 || hull.claim_beyond(id) {
+            hull.expand(id);
+            Step::Continue
+        } else {
+            // This facet's plane supports the full hull with the origin on or beyond it.
+            self.phase = Phase::Outside;
+            Step::Stop
+        }
+    }
+
+    fn step_inflate(&mut self, hull: &mut Hull<D>) -> Step {
+        while let Some(entry) = self.queue.pop() {
+            if !hull.is_current(entry.id, entry.serial) {
+                continue;
+            }
+            let id = entry.id;
+            if hull.facet(id).outside_len() > 0 || hull.claim_beyond(id) {
+                hull.expand(id);
+                for k in 0..hull.last_removed().len() {
+                    let removed = hull.last_removed()[k].index();
+                    // A removed facet's slot is not reused within the same expansion, so its
+                    // list still belongs to it when the owner matches its (old) serial; lists of
+                    // facets never assigned anything are empty.
+                    if removed < self.assigned.len() {
+                        self.orphans.append(&mut self.assigned[removed]);
+                        self.owner[removed] = u64::MAX;
+                    }
+                }
+                let created = hull.last_created().to_vec();
+                self.assign(hull, &created);
+                return Step::Continue;
+            }
+            self.answer = Some((entry.factor, id, entry.disturbance as usize));
+            self.phase = Phase::Done;
+            return Step::Stop;
+        }
+        // Every disturbance is zero: nothing to resist.
+        self.phase = Phase::Done;
+        Step::Stop
+    }
+}
+
+impl<const D: usize> Strategy<D> for OwsInflation<'_, D> {
+    type Output = OwsResult<D>;
+
+    fn start(&mut self, _hull: &Hull<D>) {
+        self.phase = Phase::ContainOrigin;
+        self.queue.clear();
+        self.assigned.iter_mut().for_each(Vec::clear);
+        self.owner.iter_mut().for_each(|o| *o = u64::MAX);
+        self.orphans.clear();
+        self.answer = None;
+    }
+
+    fn step(&mut self, hull: &mut Hull<D>) -> Step {
+        match self.phase {
+            Phase::ContainOrigin => self.step_contain_origin(hull),
+            Phase::Inflate => self.step_inflate(hull),
+            Phase::Outside | Phase::Done => Step::Stop,
+        }
+    }
+
+    fn refines_all_normals(&self) -> bool {
+        false // every facet whose factor is used was refined when its disturbances were assigned
+    }
+
+    fn finish(self, hull: &Hull<D>) -> OwsResult<D> {
+        let stats = hull.stats();
+        match (self.phase, self.answer) {
+            (Phase::Done, Some((value, id, disturbance))) => OwsResult {
+                value: Some(value),
+                deciding_facet: Some(id),
+                deciding_facet_vertices: Some(hull.facet(id).vertices()),
+                deciding_disturbance: Some(disturbance),
+                stats,
+            },
+            (Phase::Done, None) => OwsResult {
+                value: Some(f64::INFINITY),
+                deciding_facet: None,
+                deciding_facet_vertices: None,
+                deciding_disturbance: None,
+                stats,
+            },
+            _ => OwsResult {
+                value: None,
+                deciding_facet: None,
+                deciding_facet_vertices: None,
+                deciding_disturbance: None,
+                stats,
+            },
+        }
+    }
+}
+
+/// A queued facet, ordered by its smallest inflation factor (smallest first).
+#[derive(Clone, Copy, Debug)]
+struct Entry {
+    factor: f64,
+    id: FacetId,
+    serial: u64,
+    disturbance: u32,
+}
+
+impl PartialEq for Entry {
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+impl Eq for Entry {}
+impl PartialOrd for Entry {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+impl Ord for Entry {
+    fn cmp(&self, other: &Self) -> Ordering {
+        // BinaryHeap is a max-heap: reverse so the smallest factor is on top.
+        other
+            .factor
+            .total_cmp(&self.factor)
+            .then(other.serial.cmp(&self.serial))
+    }
+}
