@@ -1,9 +1,12 @@
-//! `pqh grasp`: Q1 / Q∞ of grasps given as JSON, one JSON line out per grasp, in input order.
+//! `pqh grasp`: Q1 / Q∞ / Q_OWS of grasps given as JSON, one JSON line out per grasp, in input
+//! order.
 
 use crate::error::CliError;
 use clap::{Args, ValueEnum};
+use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod, OwsQuality, SpaceOrigin};
 use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, QualityError};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
+use pqhull::mesh::{CentreKind, Mesh};
 use serde_json::{Value, json};
 use std::io::{Read, Write};
 use std::path::PathBuf;
@@ -15,7 +18,16 @@ array of grasps, or JSON Lines. A grasp is
    \"friction\":mu, \"cone_edges\":k, \"torque_reference\":[x,y,z]?, \"torque_scale\":rho?}
 with inward unit normals (the direction the finger pushes). Output: one JSON line per grasp, in
 input order: index, force_closure, quality, stats {points_processed, facets_created, elapsed_us}.
-A malformed grasp gets {\"index\":i,\"error\":\"...\"} and the others are still evaluated.";
+A malformed grasp gets {\"index\":i,\"error\":\"...\"} and the others are still evaluated.
+
+--metric ows (the object wrench space metric, Q_OWS = max{r : -r*d in GWS for every disturbance
+d}) needs the disturbances: --mesh FILE (OBJ or STL; unit forces on a friction cone at every vertex,
+about the centre of mass, torques scaled by the mesh's characteristic length; the grasps are put in
+that torque frame, so they must not set torque_reference/torque_scale), or --disturbances FILE (one
+6-D disturbance wrench per line, comma or space separated, already in the grasps' torque units: a
+task wrench space). Methods: partial (PQHOWS, default), brute (full hull x every disturbance),
+ellipsoid (Borst et al.'s approximation; a lower bound). quality is null and force_closure false
+for a grasp that is not force closure.";
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 pub enum MetricArg {
@@ -23,6 +35,8 @@ pub enum MetricArg {
     Q1,
     /// Q∞ over the Minkowski sum (implicit for the partial method)
     Qinf,
+    /// Object wrench space metric (needs --mesh or --disturbances)
+    Ows,
 }
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
@@ -33,6 +47,10 @@ pub enum MethodArg {
     Full,
     /// Full hull with Qhull (needs the `qhull` feature)
     Qhull,
+    /// OWS only: full hull, every disturbance against every facet
+    Brute,
+    /// OWS only: Borst et al.'s enclosing-ellipsoid approximation
+    Ellipsoid,
 }
 
 #[derive(Debug, Args)]
@@ -51,6 +69,18 @@ pub struct GraspArgs {
     /// Q∞ with the zero wrench added to every contact (GraspIt!'s variant)
     #[arg(long)]
     pub zero_wrench: bool,
+    /// OWS: the object's mesh (OBJ or STL)
+    #[arg(long, conflicts_with = "disturbances")]
+    pub mesh: Option<PathBuf>,
+    /// OWS: a task wrench space instead of a mesh (one 6-D wrench per line)
+    #[arg(long)]
+    pub disturbances: Option<PathBuf>,
+    /// OWS with --mesh: friction coefficient of the disturbance cones (default: the first grasp's)
+    #[arg(long)]
+    pub ows_friction: Option<f64>,
+    /// OWS with --mesh: edges of the disturbance cones (default: the first grasp's)
+    #[arg(long)]
+    pub ows_edges: Option<usize>,
 }
 
 pub fn method(arg: MethodArg) -> Result<Method, CliError> {
@@ -62,6 +92,23 @@ pub fn method(arg: MethodArg) -> Result<Method, CliError> {
         #[cfg(not(feature = "qhull"))]
         MethodArg::Qhull => Err(CliError::Usage(
             "--method qhull needs pqh built with the `qhull` feature".into(),
+        )),
+        MethodArg::Brute | MethodArg::Ellipsoid => Err(CliError::Usage(
+            "--method brute and ellipsoid are for --metric ows; q1 and qinf take partial, full \
+             or qhull"
+                .into(),
+        )),
+    }
+}
+
+/// The OWS method for `arg`.
+pub fn ows_method(arg: MethodArg) -> Result<OwsMethod, CliError> {
+    match arg {
+        MethodArg::Partial => Ok(OwsMethod::Partial),
+        MethodArg::Brute => Ok(OwsMethod::BruteForce),
+        MethodArg::Ellipsoid => Ok(OwsMethod::Ellipsoid),
+        MethodArg::Full | MethodArg::Qhull => Err(CliError::Usage(
+            "--metric ows takes --method partial, brute or ellipsoid".into(),
         )),
     }
 }
@@ -169,46 +216,208 @@ pub fn quality_json(index: usize, result: &Result<Quality, QualityError>) -> Val
     }
 }
 
-pub fn run(args: &GraspArgs) -> Result<(), CliError> {
-    let metric = match args.metric {
-        MetricArg::Q1 => Metric::Q1,
-        MetricArg::Qinf => Metric::QInf {
-            with_zero_wrench: args.zero_wrench,
-        },
-    };
-    let method = method(args.method)?;
-    let text = read_input(&args.file)?;
-    let entries: Vec<Result<Grasp, String>> = split(&text)
-        .into_iter()
-        .map(|v| v.and_then(|v| parse_grasp(&v)))
-        .collect();
-    let evaluate = || -> Vec<Option<Result<Quality, QualityError>>> {
-        use rayon::prelude::*;
-        entries
-            .par_iter()
-            .map_init(
-                || Evaluator::new(metric, method),
-                |ev, g| g.as_ref().ok().map(|g| ev.evaluate(g)),
-            )
-            .collect()
-    };
-    let results = match args.threads {
-        Some(0) => return Err(CliError::Usage("--threads must be at least 1".into())),
-        Some(n) => rayon::ThreadPoolBuilder::new()
+pub fn ows_json(index: usize, result: &Result<OwsQuality, QualityError>) -> Value {
+    match result {
+        Ok(q) => json!({
+            "index": index,
+            "force_closure": q.force_closure,
+            "quality": q.value,
+            "stats": {
+                "points_processed": q.stats.points_processed,
+                "facets_created": q.stats.facets_created,
+                "elapsed_us": q.stats.elapsed.as_secs_f64() * 1e6,
+            }
+        }),
+        Err(e) => json!({"index": index, "error": e.to_string()}),
+    }
+}
+
+/// Runs `work` on `threads` workers (default: rayon's global pool, all cores).
+pub fn with_threads<T: Send>(
+    threads: Option<usize>,
+    work: impl FnOnce() -> T + Send,
+) -> Result<T, CliError> {
+    match threads {
+        Some(0) => Err(CliError::Usage("--threads must be at least 1".into())),
+        Some(n) => Ok(rayon::ThreadPoolBuilder::new()
             .num_threads(n)
             .build()
             .map_err(|e| CliError::Usage(format!("cannot start {n} threads: {e}")))?
-            .install(evaluate),
-        None => evaluate(),
+            .install(work)),
+        None => Ok(work()),
+    }
+}
+
+/// The object wrench space for `--metric ows`, from `--mesh` or `--disturbances`; `friction` is
+/// the disturbance cones' model when it comes from a mesh.
+pub fn prepare_space(
+    mesh: Option<&std::path::Path>,
+    disturbances: Option<&std::path::Path>,
+    friction: impl FnOnce() -> Result<FrictionModel, CliError>,
+) -> Result<ObjectWrenchSpace, CliError> {
+    match (mesh, disturbances) {
+        (Some(path), None) => {
+            let mesh = Mesh::load(path).map_err(|e| CliError::Input(e.to_string()))?;
+            ObjectWrenchSpace::from_mesh(&mesh, friction()?)
+                .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))
+        }
+        (None, Some(path)) => {
+            let text = std::fs::read_to_string(path)
+                .map_err(|e| CliError::Input(format!("cannot read {}: {e}", path.display())))?;
+            let table = pqhull::points_file::parse_points(&text)
+                .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))?;
+            let wrenches = table.to_arrays::<6>().ok_or_else(|| {
+                CliError::Input(format!(
+                    "{}: disturbances must have 6 coordinates, found {}",
+                    path.display(),
+                    table.dimension()
+                ))
+            })?;
+            ObjectWrenchSpace::from_disturbances(wrenches)
+                .map_err(|e| CliError::Input(format!("{}: {e}", path.display())))
+        }
+        _ => Err(CliError::Usage(
+            "--metric ows needs --mesh FILE or --disturbances FILE".into(),
+        )),
+    }
+}
+
+/// One stderr line describing the prepared space (what the grasps are measured against).
+pub fn describe_space(space: &ObjectWrenchSpace) -> String {
+    match space.origin() {
+        SpaceOrigin::Mesh {
+            centre_of_mass: c,
+            centre_kind,
+            characteristic_length,
+            ..
+        } => format!(
+            "object wrench space: {} disturbances; torque reference {} ({:.6}, {:.6}, {:.6}), \
+             torque scale {characteristic_length:.6}{}",
+            space.len(),
+            match centre_kind {
+                CentreKind::Volume => "centre of mass",
+                CentreKind::SurfaceCentroid => "surface centroid (open mesh)",
+            },
+            c[0],
+            c[1],
+            c[2],
+            match space.vertices_without_normal() {
+                0 => String::new(),
+                n => format!("; {n} vertices without a normal left out"),
+            }
+        ),
+        SpaceOrigin::Given => format!("task wrench space: {} disturbances", space.len()),
+    }
+}
+
+fn run_ows(args: &GraspArgs, entries: Vec<Result<Grasp, String>>, values: &[Result<Value, String>]) -> Result<Vec<Value>, CliError> {
+    let method = ows_method(args.method)?;
+    let first = entries.iter().find_map(|g| g.as_ref().ok()).map(Grasp::friction);
+    let friction = || {
+        let default = first.ok_or_else(|| {
+            CliError::Input("no valid grasp to take the disturbance cones' friction from".into())
+        })?;
+        FrictionModel::try_new(
+            args.ows_friction.unwrap_or(default.friction()),
+            args.ows_edges.unwrap_or(default.cone_edges()),
+        )
+        .map_err(|e| CliError::Usage(format!("--ows-friction/--ows-edges: {e}")))
+    };
+    let started = std::time::Instant::now();
+    let space = prepare_space(args.mesh.as_deref(), args.disturbances.as_deref(), friction)?;
+    eprintln!(
+        "pqh: {} (prepared in {:.1} ms)",
+        describe_space(&space),
+        started.elapsed().as_secs_f64() * 1e3
+    );
+    // With a mesh, every grasp is put in the mesh's torque frame; one that names its own is an
+    // error rather than silently moved.
+    let framed: Vec<Result<Grasp, String>> = entries
+        .into_iter()
+        .zip(values)
+        .map(|(g, v)| {
+            let g = g?;
+            let sets_frame = v.as_ref().is_ok_and(|v| {
+                v.get("torque_reference").is_some() || v.get("torque_scale").is_some()
+            });
+            if space.torque_frame().is_some() && sets_frame {
+                return Err("with --mesh the torque frame is the mesh's (centre of mass, \
+                            characteristic length): remove torque_reference/torque_scale"
+                    .to_string());
+            }
+            space.frame(&g).map_err(|e| e.to_string())
+        })
+        .collect();
+    let results = with_threads(args.threads, || {
+        use rayon::prelude::*;
+        framed
+            .par_iter()
+            .map_init(
+                || OwsEvaluator::new(method),
+                |ev, g| g.as_ref().ok().map(|g| ev.evaluate(g, &space)),
+            )
+            .collect::<Vec<_>>()
+    })?;
+    Ok(framed
+        .iter()
+        .zip(&results)
+        .enumerate()
+        .map(|(index, (entry, result))| match (entry, result) {
+            (Err(message), _) => json!({"index": index, "error": message}),
+            (Ok(_), Some(result)) => ows_json(index, result),
+            (Ok(_), None) => unreachable!("every parsed grasp is evaluated"),
+        })
+        .collect())
+}
+
+pub fn run(args: &GraspArgs) -> Result<(), CliError> {
+    if !matches!(args.metric, MetricArg::Ows) && (args.mesh.is_some() || args.disturbances.is_some())
+    {
+        return Err(CliError::Usage(
+            "--mesh and --disturbances are for --metric ows".into(),
+        ));
+    }
+    let text = read_input(&args.file)?;
+    let values = split(&text);
+    let entries: Vec<Result<Grasp, String>> = values
+        .iter()
+        .map(|v| v.clone().and_then(|v| parse_grasp(&v)))
+        .collect();
+    let lines = match args.metric {
+        MetricArg::Ows => run_ows(args, entries, &values)?,
+        MetricArg::Q1 | MetricArg::Qinf => {
+            let metric = match args.metric {
+                MetricArg::Qinf => Metric::QInf {
+                    with_zero_wrench: args.zero_wrench,
+                },
+                _ => Metric::Q1,
+            };
+            let method = method(args.method)?;
+            let results = with_threads(args.threads, || {
+                use rayon::prelude::*;
+                entries
+                    .par_iter()
+                    .map_init(
+                        || Evaluator::new(metric, method),
+                        |ev, g| g.as_ref().ok().map(|g| ev.evaluate(g)),
+                    )
+                    .collect::<Vec<Option<Result<Quality, QualityError>>>>()
+            })?;
+            entries
+                .iter()
+                .zip(&results)
+                .enumerate()
+                .map(|(index, (entry, result))| match (entry, result) {
+                    (Err(message), _) => json!({"index": index, "error": message}),
+                    (Ok(_), Some(result)) => quality_json(index, result),
+                    (Ok(_), None) => unreachable!("every parsed grasp is evaluated"),
+                })
+                .collect()
+        }
     };
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
-    for (index, (entry, result)) in entries.iter().zip(&results).enumerate() {
-        let line = match (entry, result) {
-            (Err(message), _) => json!({"index": index, "error": message}),
-            (Ok(_), Some(result)) => quality_json(index, result),
-            (Ok(_), None) => unreachable!("every parsed grasp is evaluated"),
-        };
+    for line in lines {
         writeln!(out, "{line}")?;
     }
     out.flush()?;

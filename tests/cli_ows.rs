@@ -1,0 +1,211 @@
+//! End-to-end tests of `pqh grasp --metric ows` (the object wrench space metric).
+
+use serde_json::Value;
+use std::io::Write;
+use std::path::PathBuf;
+use std::process::{Command, Output, Stdio};
+
+fn pqh(args: &[&str], stdin: &str) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_pqh"))
+        .args(args)
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("spawn pqh");
+    let mut input = child.stdin.take().expect("stdin");
+    if let Err(e) = input.write_all(stdin.as_bytes()) {
+        assert_eq!(e.kind(), std::io::ErrorKind::BrokenPipe, "write stdin: {e}");
+    }
+    drop(input);
+    child.wait_with_output().expect("wait for pqh")
+}
+
+fn file(name: &str, contents: &str) -> PathBuf {
+    let path = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-ows-{name}"));
+    std::fs::write(&path, contents).expect("write test input");
+    path
+}
+
+fn lines(output: &Output) -> Vec<Value> {
+    String::from_utf8_lossy(&output.stdout)
+        .lines()
+        .map(|l| serde_json::from_str(l).expect("JSON line"))
+        .collect()
+}
+
+/// The cube [−1, 1]³ grasped at the centres of its x and y faces, tangents along z (see
+/// tests/ows.rs for the hand derivation of its value against the disturbances below).
+const FOUR_FACES: &str = r#"{"contacts":[
+  {"position":[-1,0,0],"normal":[1,0,0],"tangent":[0,0,1]},
+  {"position":[1,0,0],"normal":[-1,0,0],"tangent":[0,0,1]},
+  {"position":[0,-1,0],"normal":[0,1,0],"tangent":[0,0,1]},
+  {"position":[0,1,0],"normal":[0,-1,0],"tangent":[0,0,1]}],
+  "friction":0.5,"cone_edges":8}"#;
+
+const PINCH: &str = r#"{"contacts":[
+  {"position":[-1,0,0],"normal":[1,0,0]},{"position":[1,0,0],"normal":[-1,0,0]}],
+  "friction":0.5,"cone_edges":8}"#;
+
+/// A force along +x, a force along +z, twice a unit torque about z: Q_OWS = μ/2 = 0.25.
+const TASK: &str = "# fx fy fz tx ty tz\n1 0 0 0 0 0\n0,0,1,0,0,0\n0 0 0 0 0 2\n";
+
+/// The cube [−1, 1]³, counter-clockwise seen from outside.
+const CUBE_OBJ: &str = "\
+v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1
+f 1 4 3\nf 1 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8
+";
+
+#[test]
+fn task_wrench_space_value_matches_the_hand_derivation() {
+    let task = file("task.csv", TASK);
+    let input = format!("[{FOUR_FACES},{PINCH}]");
+    for method in ["partial", "brute"] {
+        let out = pqh(
+            &[
+                "grasp",
+                "--metric",
+                "ows",
+                "--disturbances",
+                task.to_str().unwrap(),
+                "--method",
+                method,
+            ],
+            &input,
+        );
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let lines = lines(&out);
+        assert_eq!(lines.len(), 2);
+        assert_eq!(lines[0]["index"], 0);
+        assert_eq!(lines[0]["force_closure"], true);
+        let q = lines[0]["quality"].as_f64().unwrap();
+        assert!((q - 0.25).abs() < 1e-6, "{method}: {q}");
+        // The pinch is not force closure: no number.
+        assert_eq!(lines[1]["force_closure"], false);
+        assert!(lines[1]["quality"].is_null());
+        assert!(String::from_utf8_lossy(&out.stderr).contains("task wrench space: 3 disturbances"));
+    }
+    // The ellipsoid needs disturbances spanning 6-D: three do not, an error line says so.
+    let out = pqh(
+        &[
+            "grasp",
+            "--metric",
+            "ows",
+            "--disturbances",
+            task.to_str().unwrap(),
+            "--method",
+            "ellipsoid",
+        ],
+        FOUR_FACES,
+    );
+    assert!(out.status.success());
+    let error = lines(&out)[0]["error"].as_str().unwrap().to_string();
+    assert!(error.contains("ellipsoid"), "{error}");
+    // With small pushes ±0.1 e_i added (each resisted up to r ≥ 5), the value is still 0.25 and
+    // the ellipsoid method gives a lower bound.
+    let mut spanning = TASK.to_string();
+    for i in 0..6 {
+        for s in [0.1, -0.1] {
+            let row: Vec<String> = (0..6)
+                .map(|c| if c == i { s.to_string() } else { "0".into() })
+                .collect();
+            spanning += &(row.join(" ") + "\n");
+        }
+    }
+    let task = file("task-spanning.csv", &spanning);
+    let out = pqh(
+        &["grasp", "--metric", "ows", "--disturbances", task.to_str().unwrap()],
+        FOUR_FACES,
+    );
+    let exact = lines(&out)[0]["quality"].as_f64().unwrap();
+    assert!((exact - 0.25).abs() < 1e-6, "{exact}");
+    let out = pqh(
+        &[
+            "grasp",
+            "--metric",
+            "ows",
+            "--disturbances",
+            task.to_str().unwrap(),
+            "--method",
+            "ellipsoid",
+        ],
+        FOUR_FACES,
+    );
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let q = lines(&out)[0]["quality"].as_f64().unwrap();
+    assert!(q > 0.0 && q <= 0.25 * (1.0 + 1e-6), "{q}");
+}
+
+#[test]
+fn mesh_frame_is_applied_and_a_conflicting_frame_is_an_error_line() {
+    let cube = file("cube.obj", CUBE_OBJ);
+    let with_frame = FOUR_FACES.replace(
+        "\"cone_edges\":8}",
+        "\"cone_edges\":8,\"torque_reference\":[0,0,0]}",
+    );
+    let input = format!("{}\n{}\n", FOUR_FACES.replace('\n', ""), with_frame.replace('\n', ""));
+    let out = pqh(
+        &["grasp", "--metric", "ows", "--mesh", cube.to_str().unwrap()],
+        &input,
+    );
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let lines = lines(&out);
+    assert_eq!(lines.len(), 2);
+    assert_eq!(lines[0]["force_closure"], true);
+    assert!(lines[0]["quality"].as_f64().unwrap() > 0.0);
+    assert_eq!(lines[0]["stats"]["points_processed"].as_u64().is_some(), true);
+    assert_eq!(lines[1]["index"], 1);
+    assert!(lines[1]["error"].as_str().unwrap().contains("torque frame"));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    // 8 vertices × 8 edges (the first grasp's cone), about the cube's centre of mass.
+    assert!(stderr.contains("64 disturbances"), "{stderr}");
+    assert!(stderr.contains("centre of mass"), "{stderr}");
+}
+
+#[test]
+fn usage_and_input_errors_are_reported() {
+    let cube = file("cube-errors.obj", CUBE_OBJ);
+    let cases: Vec<(Vec<&str>, &str)> = vec![
+        (vec!["grasp", "--metric", "ows"], "needs --mesh"),
+        (
+            vec!["grasp", "--metric", "q1", "--mesh", cube.to_str().unwrap()],
+            "for --metric ows",
+        ),
+        (
+            vec![
+                "grasp",
+                "--metric",
+                "ows",
+                "--mesh",
+                cube.to_str().unwrap(),
+                "--method",
+                "full",
+            ],
+            "partial, brute or ellipsoid",
+        ),
+        (vec!["grasp", "--method", "brute"], "for --metric ows"),
+    ];
+    for (args, message) in cases {
+        let out = pqh(&args, FOUR_FACES);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains(message), "{args:?}: {stderr}");
+    }
+    let five = file("five.csv", "1 2 3 4 5\n");
+    let out = pqh(
+        &["grasp", "--metric", "ows", "--disturbances", five.to_str().unwrap()],
+        FOUR_FACES,
+    );
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("five.csv") && stderr.contains("6 coordinates"), "{stderr}");
+
+    let quad = file("quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+    let out = pqh(
+        &["grasp", "--metric", "ows", "--mesh", quad.to_str().unwrap()],
+        FOUR_FACES,
+    );
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("quad.obj"), "{stderr}");
+}
