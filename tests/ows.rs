@@ -61,7 +61,7 @@ fn cube_grasped_on_four_faces_matches_the_hand_derivation() {
         let grasp = four_face_grasp(mu, k);
         // Exactly these wrenches (not snapped): agreement to rounding.
         let wrenches = grasp.wrenches();
-        for method in [OwsMethod::Partial, OwsMethod::BruteForce] {
+        for method in [OwsMethod::Partial, OwsMethod::PartialRays, OwsMethod::BruteForce] {
             let q = ows_of_wrenches(&wrenches, &space, method).unwrap();
             assert!(q.force_closure, "k = {k}, {method:?}");
             let value = q.value.unwrap();
@@ -115,7 +115,7 @@ fn gauges_of_cube_and_cross_polytope() {
             .iter()
             .map(|d| d.iter().map(|x| x.abs()).sum::<f64>())
             .fold(0.0, f64::max);
-        for method in [OwsMethod::Partial, OwsMethod::BruteForce] {
+        for method in [OwsMethod::Partial, OwsMethod::PartialRays, OwsMethod::BruteForce] {
             let q = ows_of_wrenches(&cube, &space, method).unwrap();
             let expected = a / max_inf;
             assert!(
@@ -147,6 +147,7 @@ fn partial_equals_brute_force(mesh: &Mesh, grasps: usize, seed: u64) -> usize {
     let mut rng = Rng::new(seed);
     let mut partial = OwsEvaluator::new(OwsMethod::Partial);
     let mut brute = OwsEvaluator::new(OwsMethod::BruteForce);
+    let mut rays = OwsEvaluator::new(OwsMethod::PartialRays);
     let mut ellipsoid = OwsEvaluator::new(OwsMethod::Ellipsoid);
     let mut closure = 0;
     let (mut partial_facets, mut full_facets) = (0, 0);
@@ -165,6 +166,12 @@ fn partial_equals_brute_force(mesh: &Mesh, grasps: usize, seed: u64) -> usize {
         let a = partial.evaluate(&grasp, &space).unwrap();
         let b = brute.evaluate(&grasp, &space).unwrap();
         assert_eq!(a.force_closure, b.force_closure, "grasp {g}");
+        // Algorithm 2 as published expands the same facets (see OwsInflation's docs).
+        let c = rays.evaluate(&grasp, &space).unwrap();
+        assert_eq!(c.force_closure, a.force_closure, "grasp {g}");
+        if let (Some(x), Some(z)) = (a.value, c.value) {
+            assert!((x - z).abs() <= 1e-9 * z.max(1e-4), "grasp {g}: {x} vs rays {z}");
+        }
         match (a.value, b.value) {
             (Some(x), Some(y)) => {
                 closure += 1;
@@ -227,7 +234,7 @@ fn a_flat_sheet_is_never_force_closure() {
     let friction = FrictionModel::try_new(0.5, 4).unwrap();
     let space = ObjectWrenchSpace::from_mesh(&mesh, friction).unwrap();
     let mut rng = Rng::new(9);
-    for method in [OwsMethod::Partial, OwsMethod::BruteForce] {
+    for method in [OwsMethod::Partial, OwsMethod::PartialRays, OwsMethod::BruteForce] {
         let mut evaluator = OwsEvaluator::new(method);
         for _ in 0..50 {
             let contacts = mesh
@@ -279,7 +286,7 @@ fn not_force_closure_has_no_value() {
     )
     .unwrap();
     let space = ObjectWrenchSpace::from_disturbances(vec![[1.0, 0.0, 0.0, 0.0, 0.0, 0.0]]).unwrap();
-    for method in [OwsMethod::Partial, OwsMethod::BruteForce] {
+    for method in [OwsMethod::Partial, OwsMethod::PartialRays, OwsMethod::BruteForce] {
         let q = OwsEvaluator::new(method).evaluate(&pinch, &space).unwrap();
         assert!(!q.force_closure);
         assert_eq!(q.value, None);

@@ -1,6 +1,6 @@
 //! `OwsInflation`: the PQHOWS algorithm (Liu & Carpin, Algorithm 2), made exact.
 
-use super::{Stats, Step, Strategy};
+use super::{Stats, Step, Strategy, SupportIndex};
 use crate::hull::{FacetId, Hull, dot};
 use crate::predicates::Sign;
 use std::cmp::Ordering;
@@ -39,6 +39,19 @@ use std::collections::BinaryHeap;
 /// Inflation factors are floating point (the quotient of a precise normal's dot product and
 /// offset); every combinatorial decision is exact.
 ///
+/// # Two bookkeepings, one answer
+///
+/// [`OwsInflation::new`] is Algorithm 2 as published: every disturbance is assigned to a facet,
+/// which costs a pass over all of them against the first hull's facets and a reassignment at each
+/// expansion — O(disturbances × facets), dominant for an object wrench space of tens of thousands
+/// of disturbances. [`OwsInflation::with_index`] keys each facet instead by the smallest factor of
+/// *any* disturbance against its plane, `offset / h(−n)` with `h` the support function of the
+/// disturbances, answered by a [`SupportIndex`] in far fewer than one dot product per
+/// disturbance. The two keys differ only on facets that are not the minimum: the smallest key is
+/// the same facet and the same number in both (`min_F offset_F / h(−n_F)` is the largest `r`
+/// with `−r·d` inside the partial hull for every `d`, which is also the smallest factor of any
+/// disturbance at its exit facet), so both expand the same facets and stop with the same value.
+///
 /// ```
 /// use pqhull::Hull;
 /// use pqhull::strategy::OwsInflation;
@@ -60,7 +73,7 @@ use std::collections::BinaryHeap;
 /// ```
 #[derive(Clone, Debug)]
 pub struct OwsInflation<'a, const D: usize> {
-    disturbances: &'a [[f64; D]],
+    disturbances: Disturbances<'a, D>,
     phase: Phase,
     queue: BinaryHeap<Entry>,
     /// Disturbance indices assigned to each facet slot, valid while `owner[slot]` is the facet's
@@ -71,6 +84,15 @@ pub struct OwsInflation<'a, const D: usize> {
     /// Older facets that received disturbances in a fallback search, to queue again.
     requeue: Vec<FacetId>,
     answer: Option<(f64, FacetId, usize)>,
+}
+
+/// How facets are keyed (see the type's docs).
+#[derive(Clone, Copy, Debug)]
+enum Disturbances<'a, const D: usize> {
+    /// Algorithm 2 as published: each disturbance assigned to the facet its ray leaves through.
+    Rays(&'a [[f64; D]]),
+    /// Each facet keyed through the support function.
+    Support(&'a SupportIndex<D>),
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -118,8 +140,19 @@ pub fn inflation_factor<const D: usize>(normal: &[f64; D], offset: f64, u: &[f64
 }
 
 impl<'a, const D: usize> OwsInflation<'a, D> {
-    /// A strategy inflating `disturbances` (each resisted by its opposite; see the type's docs).
+    /// A strategy inflating `disturbances` (each resisted by its opposite; see the type's docs),
+    /// assigning each to the facet its ray leaves through (Algorithm 2 as published).
     pub fn new(disturbances: &'a [[f64; D]]) -> Self {
+        Self::with(Disturbances::Rays(disturbances))
+    }
+
+    /// The same answer, keying facets through the support function of the disturbances
+    /// (see the type's docs): much faster for large disturbance sets.
+    pub fn with_index(index: &'a SupportIndex<D>) -> Self {
+        Self::with(Disturbances::Support(index))
+    }
+
+    fn with(disturbances: Disturbances<'a, D>) -> Self {
         OwsInflation {
             disturbances,
             phase: Phase::ContainOrigin,
@@ -134,7 +167,64 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
 
     /// The ray of disturbance `i`: `−d_i`.
     fn ray(&self, i: u32) -> [f64; D] {
-        self.disturbances[i as usize].map(|c| -c)
+        match self.disturbances {
+            Disturbances::Rays(d) => d[i as usize].map(|c| -c),
+            Disturbances::Support(_) => unreachable!("rays are only followed in Rays mode"),
+        }
+    }
+
+    /// Refines and queues `ids` by the support function: the smallest factor of any disturbance
+    /// against each plane.
+    fn key_by_support(&mut self, hull: &mut Hull<D>, index: &SupportIndex<D>, ids: &[FacetId]) {
+        for &id in ids {
+            hull.refine_normal(id);
+            let facet = hull.facet(id);
+            let toward = facet.normal().map(|c| -c);
+            if let Some((h, disturbance)) = index.support(&toward)
+                && h > 0.0
+            {
+                self.queue.push(Entry {
+                    factor: facet.offset().max(0.0) / h,
+                    id,
+                    serial: facet.serial(),
+                    disturbance: disturbance as u32,
+                });
+            }
+        }
+    }
+
+    /// Sets up the inflation phase over the live facets.
+    fn begin_inflation(&mut self, hull: &mut Hull<D>) {
+        self.phase = Phase::Inflate;
+        let live: Vec<FacetId> = hull.facets().map(|(id, _)| id).collect();
+        match self.disturbances {
+            Disturbances::Rays(d) => {
+                self.orphans.extend(0..d.len() as u32);
+                self.assign(hull, &live);
+            }
+            Disturbances::Support(index) => self.key_by_support(hull, index, &live),
+        }
+    }
+
+    /// After an expansion: re-key what changed.
+    fn after_expansion(&mut self, hull: &mut Hull<D>) {
+        let created = hull.last_created().to_vec();
+        match self.disturbances {
+            Disturbances::Rays(_) => {
+                for k in 0..hull.last_removed().len() {
+                    let removed = hull.last_removed()[k].index();
+                    // A removed facet's slot is not reused within the same expansion, so its
+                    // list still belongs to it; lists of facets never assigned anything are
+                    // empty.
+                    if removed < self.assigned.len() {
+                        self.orphans.append(&mut self.assigned[removed]);
+                        self.owner[removed] = u64::MAX;
+                    }
+                }
+                self.assign(hull, &created);
+            }
+            Disturbances::Support(index) => self.key_by_support(hull, index, &created),
+        }
     }
 
     /// Assigns every disturbance in `self.orphans` to the facet among `candidates` its ray leaves
@@ -225,10 +315,7 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
             }
         }
         let Some((_, id)) = worst else {
-            self.phase = Phase::Inflate;
-            let live: Vec<FacetId> = hull.facets().map(|(id, _)| id).collect();
-            self.orphans.extend(0..self.disturbances.len() as u32);
-            self.assign(hull, &live);
+            self.begin_inflation(hull);
             return Step::Continue;
         };
         if hull.facet(id).outside_len() > 0 || hull.claim_beyond(id) {
@@ -249,18 +336,7 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
             let id = entry.id;
             if hull.facet(id).outside_len() > 0 || hull.claim_beyond(id) {
                 hull.expand(id);
-                for k in 0..hull.last_removed().len() {
-                    let removed = hull.last_removed()[k].index();
-                    // A removed facet's slot is not reused within the same expansion, so its
-                    // list still belongs to it when the owner matches its (old) serial; lists of
-                    // facets never assigned anything are empty.
-                    if removed < self.assigned.len() {
-                        self.orphans.append(&mut self.assigned[removed]);
-                        self.owner[removed] = u64::MAX;
-                    }
-                }
-                let created = hull.last_created().to_vec();
-                self.assign(hull, &created);
+                self.after_expansion(hull);
                 return Step::Continue;
             }
             self.answer = Some((entry.factor, id, entry.disturbance as usize));

@@ -11,9 +11,14 @@ use std::time::Instant;
 /// How Q_OWS is computed.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum OwsMethod {
-    /// The partial hull grown by [`OwsInflation`] (PQHOWS): exact, the default.
+    /// The partial hull grown by [`OwsInflation`] (PQHOWS) with facets keyed through the
+    /// disturbances' support function ([`OwsInflation::with_index`]): exact, the default.
     #[default]
     Partial,
+    /// The same partial hull with every disturbance assigned to the facet its ray leaves through,
+    /// as Algorithm 2 is published ([`OwsInflation::new`]): exact, slower on large disturbance
+    /// sets; kept for comparison.
+    PartialRays,
     /// The full grasp hull, then every disturbance against every facet (the seed paper's eq. 8–9):
     /// exact, the reference.
     BruteForce,
@@ -149,14 +154,17 @@ fn ows_with(
         return Err(QualityError::NonFiniteWrench);
     }
     match method {
-        OwsMethod::Partial => Ok(partial(wrenches, space)),
+        OwsMethod::Partial => Ok(partial(
+            wrenches,
+            OwsInflation::with_index(space.support_index()),
+        )),
+        OwsMethod::PartialRays => Ok(partial(wrenches, OwsInflation::new(space.disturbances()))),
         OwsMethod::BruteForce => Ok(brute_force(wrenches, space)),
         OwsMethod::Ellipsoid => ellipsoid(wrenches, space),
     }
 }
 
-fn partial(wrenches: &[[f64; 6]], space: &ObjectWrenchSpace) -> OwsQuality {
-    let strategy = OwsInflation::new(space.disturbances());
+fn partial(wrenches: &[[f64; 6]], strategy: OwsInflation<'_, 6>) -> OwsQuality {
     match Hull::try_with_strategy(wrenches, strategy) {
         Ok((_, result)) => OwsQuality {
             force_closure: result.is_force_closure(),

@@ -4,6 +4,7 @@ use crate::grasp::ellipsoid::{CentredEllipsoid, EllipsoidError};
 use crate::grasp::{Contact, FrictionModel, Grasp, GraspError};
 use crate::hull::{Hull, HullError};
 use crate::mesh::{CentreKind, Mesh};
+use crate::strategy::SupportIndex;
 use serde_json::{Value, json};
 use std::fmt;
 use std::sync::OnceLock;
@@ -41,6 +42,8 @@ pub enum SpaceOrigin {
 #[derive(Debug)]
 pub struct ObjectWrenchSpace {
     disturbances: Vec<[f64; 6]>,
+    /// The disturbances' support function, for the partial method.
+    index: SupportIndex<6>,
     origin: SpaceOrigin,
     vertices_without_normal: usize,
     reduced: bool,
@@ -51,6 +54,7 @@ impl Clone for ObjectWrenchSpace {
     fn clone(&self) -> Self {
         ObjectWrenchSpace {
             disturbances: self.disturbances.clone(),
+            index: self.index.clone(),
             origin: self.origin.clone(),
             vertices_without_normal: self.vertices_without_normal,
             reduced: self.reduced,
@@ -146,8 +150,10 @@ impl ObjectWrenchSpace {
             .torque_scale(rho)
             .build()?;
         let unit = 1.0 / (1.0 + friction.friction() * friction.friction()).sqrt();
-        let disturbances = all.wrenches().iter().map(|w| w.map(|c| c * unit)).collect();
+        let disturbances: Vec<[f64; 6]> =
+            all.wrenches().iter().map(|w| w.map(|c| c * unit)).collect();
         Ok(ObjectWrenchSpace {
+            index: SupportIndex::new(&disturbances),
             disturbances,
             origin: SpaceOrigin::Mesh {
                 centre_of_mass: mass.centre_of_mass,
@@ -177,6 +183,7 @@ impl ObjectWrenchSpace {
             return Err(OwsError::NonFinite { index });
         }
         Ok(ObjectWrenchSpace {
+            index: SupportIndex::new(&disturbances),
             disturbances,
             origin: SpaceOrigin::Given,
             vertices_without_normal: 0,
@@ -188,6 +195,11 @@ impl ObjectWrenchSpace {
     /// The disturbance wrenches.
     pub fn disturbances(&self) -> &[[f64; 6]] {
         &self.disturbances
+    }
+
+    /// The disturbances' support function (a ball tree), as the partial method queries it.
+    pub fn support_index(&self) -> &SupportIndex<6> {
+        &self.index
     }
 
     /// Number of disturbances.
@@ -257,6 +269,7 @@ impl ObjectWrenchSpace {
             Ok(hull) => {
                 let keep = hull.vertex_indices();
                 self.disturbances = keep.iter().map(|&i| self.disturbances[i]).collect();
+                self.index = SupportIndex::new(&self.disturbances);
                 self.reduced = true;
                 self.ellipsoid = OnceLock::new();
             }
