@@ -170,7 +170,7 @@ impl<const D: usize> CentredEllipsoid<D> {
         }
 
         let mut solver = Solver::new(&xs);
-        let iterations = solver.run(tolerance)?;
+        let iterations = solver.solve(tolerance)?;
         let (factor, log_gap) = solver.finish(iterations)?;
         Ok(CentredEllipsoid {
             factor,
@@ -375,8 +375,11 @@ fn dot<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
 
 /// `ln vol(B_D)` by the recurrence `ω_D = ω_{D−2} · 2π / D` (`ω_0 = 1`, `ω_1 = 2`).
 fn log_unit_ball_volume(d: usize) -> f64 {
-    let mut log = if d % 2 == 0 { 0.0 } else { 2.0_f64.ln() };
-    let mut k = 2 + d % 2;
+    let (mut log, mut k) = if d.is_multiple_of(2) {
+        (0.0, 2)
+    } else {
+        (2.0_f64.ln(), 3)
+    };
     while k <= d {
         log += (2.0 * std::f64::consts::PI / k as f64).ln();
         k += 2;
@@ -384,11 +387,22 @@ fn log_unit_ball_volume(d: usize) -> f64 {
     log
 }
 
-/// The iteration state: weights, the `g_i`, `M⁻¹`, and faer workspaces (allocated once).
+/// The iteration state: the working set with its weights and `g_i`, `M⁻¹`, and faer workspaces.
+///
+/// Active-set strategy (as in Sun & Freund, Oper. Res. 52, 2004): the iteration runs on a
+/// working set — the `D` greedy starting points and the points farthest out under uniform
+/// weights — so that a step costs `O(|working set| · D)`, not `O(n D)`; once it converges there,
+/// the points of the whole set beyond `D (1 + tolerance)` (the worst [`added_per_round`] of them)
+/// join the working set and the iteration resumes. It ends when no point is beyond, so the
+/// stopping test, and the guarantee, hold for the whole set.
 struct Solver<'a, const D: usize> {
-    xs: &'a [[f64; D]],
+    points: &'a [[f64; D]],
+    /// Indices of the working set into `points`, their coordinates, weights `u_i` and `g_i`.
+    index: Vec<usize>,
+    active: Vec<[f64; D]>,
     u: Vec<f64>,
     g: Vec<f64>,
+    member: Vec<bool>,
     m_inv: [[f64; D]; D],
     /// `L⁻¹` (lower triangular) of the last factorisation `M = L Lᵀ`.
     l_inv: [[f64; D]; D],
@@ -397,13 +411,21 @@ struct Solver<'a, const D: usize> {
     memory: MemBuffer,
 }
 
+/// Size of the initial working set beyond the greedy points; also the most points added per
+/// round. Sets of at most twice this size are worked on whole.
+const fn added_per_round(d: usize) -> usize {
+    4 * d * d + 16
+}
+
 impl<'a, const D: usize> Solver<'a, D> {
-    fn new(xs: &'a [[f64; D]]) -> Self {
-        let n = xs.len();
+    fn new(points: &'a [[f64; D]]) -> Self {
         Solver {
-            xs,
-            u: vec![1.0 / n as f64; n],
-            g: vec![0.0; n],
+            points,
+            index: Vec::new(),
+            active: Vec::new(),
+            u: Vec::new(),
+            g: Vec::new(),
+            member: vec![false; points.len()],
             m_inv: [[0.0; D]; D],
             l_inv: [[0.0; D]; D],
             work: Mat::zeros(D, D),
@@ -416,13 +438,9 @@ impl<'a, const D: usize> Solver<'a, D> {
         }
     }
 
-    /// Renormalises `u`, rebuilds and factorises `M`, and recomputes `M⁻¹` and every `g_i`.
-    /// `false` if `M` is not numerically positive definite.
-    fn refresh(&mut self) -> bool {
-        let total: f64 = self.u.iter().sum();
-        self.u.iter_mut().for_each(|w| *w /= total);
-        let u = &self.u;
-        let m = second_moment(self.xs, |i| u[i]);
+    /// Factorises `M` (its lower triangle) with faer and sets `L⁻¹` and `M⁻¹`; `false` if `M` is
+    /// not numerically positive definite.
+    fn factorise(&mut self, m: &[[f64; D]; D]) -> bool {
         for (a, row) in m.iter().enumerate() {
             for (b, &v) in row.iter().enumerate().take(a + 1) {
                 self.work[(a, b)] = v;
@@ -430,14 +448,9 @@ impl<'a, const D: usize> Solver<'a, D> {
             }
         }
         let stack = MemStack::new(&mut self.memory);
-        let factorised = cholesky_in_place(
-            self.work.as_mut(),
-            LltRegularization::default(),
-            Par::Seq,
-            stack,
-            Default::default(),
-        );
-        if factorised.is_err() {
+        let params = Default::default();
+        let regularization = LltRegularization::default();
+        if cholesky_in_place(self.work.as_mut(), regularization, Par::Seq, stack, params).is_err() {
             return false;
         }
         invert_lower_triangular(self.inverse.as_mut(), self.work.as_ref(), Par::Seq);
@@ -446,17 +459,27 @@ impl<'a, const D: usize> Solver<'a, D> {
                 *entry = if b <= a { self.inverse[(a, b)] } else { 0.0 };
             }
         }
-        if !self.l_inv.iter().flatten().all(|v| v.is_finite()) {
-            return false;
-        }
         let l = &self.l_inv;
         self.m_inv = std::array::from_fn(|a| {
             std::array::from_fn(|b| (a.max(b)..D).map(|k| l[k][a] * l[k][b]).sum())
         });
-        for (g, x) in self.g.iter_mut().zip(self.xs) {
-            *g = gauge_squared(l, x);
+        self.l_inv.iter().flatten().all(|v| v.is_finite())
+    }
+
+    /// Renormalises `u`, rebuilds and factorises `M`, and recomputes every `g_i` of the working
+    /// set, then returns [`scan`](Self::scan).
+    fn reset(&mut self, iteration: usize) -> Result<(usize, usize), EllipsoidError> {
+        let total: f64 = self.u.iter().sum();
+        self.u.iter_mut().for_each(|w| *w /= total);
+        let u = &self.u;
+        let m = second_moment(&self.active, |i| u[i]);
+        if !self.factorise(&m) {
+            return Err(EllipsoidError::NumericalFailure { iteration });
         }
-        true
+        for (g, x) in self.g.iter_mut().zip(&self.active) {
+            *g = gauge_squared(&self.l_inv, x);
+        }
+        Ok(self.scan())
     }
 
     /// The index of the largest `g_i`, and of the smallest among the weighted points.
@@ -474,21 +497,106 @@ impl<'a, const D: usize> Solver<'a, D> {
         (j, k)
     }
 
-    /// [`refresh`](Self::refresh), then [`scan`](Self::scan).
-    fn reset(&mut self, iteration: usize) -> Result<(usize, usize), EllipsoidError> {
-        if self.refresh() {
-            Ok(self.scan())
-        } else {
-            Err(EllipsoidError::NumericalFailure { iteration })
+    /// Adds `points[i]` to the working set with weight `w`.
+    fn enlist(&mut self, i: usize, w: f64) {
+        self.member[i] = true;
+        self.index.push(i);
+        self.active.push(self.points[i]);
+        self.u.push(w);
+        self.g.push(0.0);
+    }
+
+    /// The starting weights: uniform on every point if they already meet the tolerance
+    /// (symmetric configurations such as the cube's corners); otherwise `1/D` on `D` points
+    /// chosen greedily by pivoted Gram–Schmidt — largest residual first — on the points whitened
+    /// by the uniform second-moment matrix, which makes the choice, and so the whole iteration,
+    /// invariant under linear maps of the input. Starting on few points spares the drop steps
+    /// that would remove every interior point's weight one at a time.
+    fn initialise(&mut self, tolerance: f64) -> Result<(), EllipsoidError> {
+        let n = self.points.len();
+        let weight = 1.0 / n as f64;
+        if !self.factorise(&second_moment(self.points, |_| weight)) {
+            return Err(EllipsoidError::NumericalFailure { iteration: 0 });
+        }
+        let mut residuals: Vec<[f64; D]> = self
+            .points
+            .iter()
+            .map(|x| lower_times(&self.l_inv, x))
+            .collect();
+        let g0: Vec<f64> = residuals.iter().map(|y| dot(y, y)).collect();
+        if g0.iter().all(|&g| g <= D as f64 * (1.0 + tolerance)) {
+            (0..n).for_each(|i| self.enlist(i, weight));
+            return Ok(());
+        }
+        let mut chosen = [0; D];
+        for slot in &mut chosen {
+            let (pivot, norm2) =
+                residuals
+                    .iter()
+                    .map(|r| dot(r, r))
+                    .enumerate()
+                    .fold(
+                        (0, 0.0),
+                        |best, (i, r2)| if r2 > best.1 { (i, r2) } else { best },
+                    );
+            if norm2 <= 0.0 || self.member[pivot] {
+                return Err(EllipsoidError::NumericalFailure { iteration: 0 });
+            }
+            self.enlist(pivot, 1.0 / D as f64);
+            *slot = pivot;
+            let q = residuals[pivot].map(|c| c / norm2.sqrt());
+            for r in &mut residuals {
+                let t = dot(&q, r);
+                r.iter_mut().zip(&q).for_each(|(c, qc)| *c -= t * qc);
+            }
+        }
+        let extra = added_per_round(D);
+        let mut order: Vec<usize> = (0..n).filter(|i| !chosen.contains(i)).collect();
+        if order.len() > 2 * extra {
+            order.select_nth_unstable_by(extra - 1, |&a, &b| g0[b].total_cmp(&g0[a]));
+            order.truncate(extra);
+        }
+        order.into_iter().for_each(|i| self.enlist(i, 0.0));
+        Ok(())
+    }
+
+    /// Adds the points outside the working set with `g_i > D (1 + tolerance)` under the current
+    /// factorisation (the worst [`added_per_round`] of them); returns how many.
+    fn add_violators(&mut self, tolerance: f64) -> usize {
+        let threshold = D as f64 * (1.0 + tolerance);
+        let mut violators: Vec<(f64, usize)> = (self.points.iter().enumerate())
+            .filter(|&(i, _)| !self.member[i])
+            .map(|(i, x)| (gauge_squared(&self.l_inv, x), i))
+            .filter(|&(g, _)| g > threshold)
+            .collect();
+        let limit = added_per_round(D);
+        if violators.len() > limit {
+            violators.select_nth_unstable_by(limit - 1, |a, b| b.0.total_cmp(&a.0));
+            violators.truncate(limit);
+        }
+        violators.iter().for_each(|&(_, i)| self.enlist(i, 0.0));
+        violators.len()
+    }
+
+    /// Iterates on working sets until `max g ≤ D (1 + tolerance)` over all points, on freshly
+    /// factorised values; returns the number of steps. On success, `l_inv` is fresh.
+    fn solve(&mut self, tolerance: f64) -> Result<usize, EllipsoidError> {
+        self.initialise(tolerance)?;
+        let mut iterations = 0;
+        loop {
+            iterations = self.run(tolerance, iterations)?;
+            if self.add_violators(tolerance) == 0 {
+                return Ok(iterations);
+            }
         }
     }
 
-    /// Iterates until `max g ≤ D (1 + tolerance)` on freshly factorised values; returns the
-    /// number of steps. On success, `l_inv` and `g` are fresh.
-    fn run(&mut self, tolerance: f64) -> Result<usize, EllipsoidError> {
+    /// Iterates on the working set until `max g ≤ D (1 + tolerance)` there, on freshly
+    /// factorised values; returns the step count, continued from `iterations`.
+    fn run(&mut self, tolerance: f64, mut iterations: usize) -> Result<usize, EllipsoidError> {
         let d = D as f64;
-        let (mut j, mut k) = self.reset(0)?;
-        let (mut fresh, mut since_refresh, mut iterations) = (true, 0, 0);
+        let (mut j, mut k) = self.reset(iterations)?;
+        let (mut fresh, mut since_refresh) = (true, 0);
         loop {
             let excess = self.g[j] / d - 1.0;
             if excess <= tolerance && fresh {
@@ -520,12 +628,12 @@ impl<'a, const D: usize> Solver<'a, D> {
                     (k, limit, true)
                 }
             };
-            let x = &self.xs[index];
+            let x = &self.active[index];
             let v: [f64; D] = std::array::from_fn(|a| dot(&self.m_inv[a], x));
             let denominator = 1.0 - tau + tau * dot(x, &v);
             let usable = tau.is_finite() && denominator > DENOMINATOR_FLOOR;
             if excess <= tolerance || !usable {
-                // Stop or step on drifted values: decide again on fresh ones.
+                // About to stop, or to step, on drifted values: decide again on fresh ones.
                 if fresh {
                     return Err(EllipsoidError::NumericalFailure {
                         iteration: iterations,
@@ -546,8 +654,12 @@ impl<'a, const D: usize> Solver<'a, D> {
                 }
             }
             let (mut best, mut worst) = (f64::NEG_INFINITY, f64::INFINITY);
-            let points = self.xs.iter().zip(self.g.iter_mut()).zip(self.u.iter_mut());
-            for (i, ((x, g), w)) in points.enumerate() {
+            let working = self
+                .active
+                .iter()
+                .zip(self.g.iter_mut())
+                .zip(self.u.iter_mut());
+            for (i, ((x, g), w)) in working.enumerate() {
                 let h = dot(x, &v);
                 *g = (*g - coefficient * h * h) * grow;
                 *w *= keep;
@@ -570,20 +682,19 @@ impl<'a, const D: usize> Solver<'a, D> {
         }
     }
 
-    /// `R̃ = c L⁻¹` with `c = 1/sqrt(max g)`, shrunk until every point has gauge ≤ 1 as computed;
-    /// and the log-volume gap bound `−D ln c − (D/2) ln D`.
+    /// `R̃ = c L⁻¹` with `c = 1/sqrt(max g)` over all points, shrunk until every point has gauge
+    /// ≤ 1 as computed; and the log-volume gap bound `−D ln c − (D/2) ln D`.
     fn finish(&self, iterations: usize) -> Result<([[f64; D]; D], f64), EllipsoidError> {
-        let g_max = self.g.iter().fold(0.0_f64, |m, &g| m.max(g));
-        let mut c = 1.0 / g_max.sqrt();
+        let max_gauge = |r: &[[f64; D]; D]| {
+            (self.points.iter()).fold(0.0_f64, |m, x| m.max(gauge_squared(r, x)))
+        };
+        let mut c = max_gauge(&self.l_inv).sqrt().recip();
         let mut r = self.l_inv.map(|row| row.map(|v| v * c));
         for _ in 0..8 {
-            let q = self
-                .xs
-                .iter()
-                .fold(0.0_f64, |m, x| m.max(gauge_squared(&r, x)));
+            let q = max_gauge(&r);
             if q <= 1.0 {
                 let d = D as f64;
-                return Ok((r, -d * c.ln() - 0.5 * d * d.ln()));
+                return Ok((r, (-d * c.ln() - 0.5 * d * d.ln()).max(0.0)));
             }
             let shrink = q.sqrt().recip() * (1.0 - 4.0 * f64::EPSILON);
             c *= shrink;

@@ -67,12 +67,13 @@ impl Mesh {
     ///   to a line;
     /// * [`MeshError::Empty`] if there are no faces, and the other [`Mesh::try_new`] errors.
     pub fn from_obj_reader<R: BufRead>(reader: R, source_name: &str) -> Result<Mesh, MeshError> {
+        // Faces as written (never triangulated), points and lines kept so that they can be
+        // reported; every other option off (tobj's default).
         let options = tobj::LoadOptions {
             triangulate: false,
-            single_index: false,
             ignore_points: false,
             ignore_lines: false,
-            ..Default::default()
+            ..tobj::LoadOptions::default()
         };
         let mut counted = LineCounter::new(reader);
         // Materials are irrelevant here: refuse to open any library (tobj records the error in
@@ -134,8 +135,10 @@ impl Mesh {
                     .or_insert(i);
             }
             for t in mesh.indices.chunks_exact(3) {
-                // tobj checked each index against this object's positions.
-                triangles.push([0, 1, 2].map(|k| local[t[k] as usize]));
+                // tobj numbers each object's positions itself, so every index is in range; were
+                // one not, u32::MAX makes try_new report it instead of a panic here.
+                triangles
+                    .push([0, 1, 2].map(|k| local.get(t[k] as usize).copied().unwrap_or(u32::MAX)));
             }
             faces_before += mesh.indices.len() / 3;
         }

@@ -1,12 +1,12 @@
 //! Mass properties: centre of mass, volume, surface area and characteristic length.
 //!
 //! All sums run in a *local frame*: coordinates relative to the bounding-box centre, multiplied by
-//! the power of two that brings the largest half-extent into (0.5, 1] (as far as the normal range of
-//! `f64` allows). The scaling is exact, the
-//! shift removes the cancellation a far-away object would cause (a mesh at 10⁶ from the origin
-//! loses nothing), and every term of every sum is O(1) whatever the mesh's units, so nothing
-//! overflows or underflows before the result is converted back. The sums themselves are
-//! compensated (Neumaier).
+//! the power of two that brings the largest half-extent into (0.5, 1] (as far as the normal range
+//! of `f64` allows). The scaling is exact; the shift means the products are formed from
+//! coordinates of the size of the object rather than of its distance from the origin, which
+//! removes the cancellation a far-away object would otherwise suffer; and every term is O(1)
+//! whatever the mesh's units, so nothing overflows or underflows before the results are converted
+//! back. The sums themselves are compensated (Neumaier).
 
 use super::vec::{Sum, Sum3, V3, add, cross, dot, norm, scale, sub};
 

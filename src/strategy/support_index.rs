@@ -185,7 +185,7 @@ mod tests {
         for (family, n) in [
             (Family::SphereSurface, 5000),
             (Family::UniformCube, 3000),
-            (Family::CubeCorners, 64),
+            (Family::CubeCornersDiamond, 64),
         ] {
             let points = generate::<6>(&family, n, 4);
             let index = SupportIndex::new(&points);

@@ -3,7 +3,7 @@
 
 use crate::error::CliError;
 use crate::grasp_cmd::{MethodArg, method};
-use clap::{Args, Subcommand};
+use clap::{Args, Subcommand, ValueEnum};
 use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, evaluate_batch};
 use pqhull::grasp::{FrictionModel, Grasp};
 use pqhull::rbox::Rng;
@@ -18,8 +18,12 @@ each number of cone edges k:
           and qhull on the first --full-grasps), with full/partial ratios of time, points
           processed and facets created, and a count of grasps where the methods disagree.
   Q-inf   the partial method over the implicit Minkowski sum (k^m points, never materialised),
-          on all --grasps, for every k <= --qinf-max-edges (default 32; 0 turns it off):
-          median, mean and largest time per grasp.
+          on all --grasps, for every k <= --qinf-max-edges (default 32; 0 turns it off), for
+          each --qinf variant (default both: zero-wrench, then plain): force-closure count,
+          median, mean and largest time per grasp. Most random grasps are not force closure
+          for the plain variant, and those are its slow cases (up to seconds per grasp at
+          k = 32): use --qinf zero-wrench for a quick run. A grasp the library cannot evaluate
+          is counted in `errors`, not fatal.
   batch   `evaluate_batch` (Q1, partial) of all --grasps inside a rayon pool of each --threads
           size (default 1 and the available parallelism), rounds interleaved across sizes,
           median of --batch-rounds (0 turns it off): grasps/s and the speed-up over 1 thread.
@@ -39,6 +43,24 @@ pub enum Which {
     /// throughput on 1…n threads
     #[command(long_about = GWS_LONG_ABOUT)]
     Gws(GwsArgs),
+}
+
+/// Which Q∞: with or without the zero wrench in every contact's set.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum QinfVariant {
+    /// The zero wrench joins every contact's set (GraspIt!): Q∞ ≥ Q1, same force closure
+    ZeroWrench,
+    /// The Minkowski sum of the cone edges alone: rarely force closure on random grasps
+    Plain,
+}
+
+impl QinfVariant {
+    fn name(self) -> &'static str {
+        match self {
+            QinfVariant::ZeroWrench => "zero-wrench",
+            QinfVariant::Plain => "plain",
+        }
+    }
 }
 
 #[derive(Debug, Args)]
@@ -66,9 +88,15 @@ pub struct GwsArgs {
     /// Q∞ (partial, implicit Minkowski sum) for every k up to this; 0: no Q∞
     #[arg(long, value_name = "K", default_value_t = 32)]
     pub qinf_max_edges: usize,
-    /// Q∞ with the zero wrench added to every contact (GraspIt!'s variant)
-    #[arg(long)]
-    pub zero_wrench: bool,
+    /// Q∞ variants, comma separated: `zero-wrench` (GraspIt!'s: the zero wrench joins every
+    /// contact's set) and/or `plain`
+    #[arg(
+        long,
+        value_delimiter = ',',
+        value_enum,
+        default_value = "zero-wrench,plain"
+    )]
+    pub qinf: Vec<QinfVariant>,
     /// Batch pool sizes, comma separated [default: 1,<available parallelism>]
     #[arg(long, value_delimiter = ',', value_name = "N,...")]
     pub threads: Option<Vec<usize>>,
@@ -95,6 +123,7 @@ fn grasps(seed: u64, count: usize, contacts: usize, k: usize) -> Result<Vec<Gras
 
 struct Row {
     method: &'static str,
+    force_closure: usize,
     times_us: Vec<f64>,
     points: Vec<usize>,
     facets: Vec<usize>,
@@ -104,6 +133,7 @@ impl Row {
     fn new(method: &'static str, results: &[Quality]) -> Row {
         Row {
             method,
+            force_closure: results.iter().filter(|q| q.force_closure).count(),
             times_us: results
                 .iter()
                 .map(|q| q.stats.elapsed.as_secs_f64() * 1e6)
@@ -236,9 +266,12 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
                 .map_err(|e| CliError::Usage(format!("cannot start {n} threads: {e}")))
         })
         .collect::<Result<Vec<_>, _>>()?;
-    let qinf_metric = Metric::QInf {
-        with_zero_wrench: args.zero_wrench,
-    };
+    let mut variants: Vec<QinfVariant> = Vec::new();
+    for &v in &args.qinf {
+        if !variants.contains(&v) {
+            variants.push(v);
+        }
+    }
     let mut report = Vec::new();
     for &k in &args.edges {
         let set = grasps(args.seed, args.grasps, args.contacts, k)?;
@@ -251,6 +284,9 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
             } else {
                 args.full_grasps.min(set.len())
             };
+            if n == 0 {
+                continue; // --full-grasps 0: partial only
+            }
             let results = evaluate_all(&set[..n], Metric::Q1, m)?;
             values.push(results.iter().map(|q| q.value).collect());
             rows.push(Row::new(name(m), &results));
@@ -284,6 +320,7 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
             entries.push(json!({
                 "method": row.method,
                 "grasps": n,
+                "force_closure": row.force_closure,
                 "median_us": median(&mut row.times_us.clone()),
                 "mean_us": mean(row.times_us.iter().copied()),
                 "mean_points_processed": mean(row.points.iter().map(|&p| p as f64)),
@@ -293,35 +330,10 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
                 "facets_ratio_vs_partial": facets_ratio,
             }));
         }
-        let qinf = if k <= args.qinf_max_edges {
-            // A grasp the library cannot evaluate is counted, not fatal (the timings are over
-            // the others).
-            let mut evaluator = Evaluator::new(qinf_metric, Method::Partial);
-            let mut results = Vec::new();
-            let mut errors = Vec::new();
-            for (i, g) in set.iter().enumerate() {
-                match evaluator.evaluate(g) {
-                    Ok(q) => results.push(q),
-                    Err(e) => errors.push(format!("grasp {i}: {e}")),
-                }
-            }
-            let row = Row::new("partial", &results);
-            json!({
-                "method": row.method,
-                "with_zero_wrench": args.zero_wrench,
-                "grasps": results.len(),
-                "errors": errors.len(),
-                "first_error": errors.first(),
-                "force_closure": results.iter().filter(|q| q.force_closure).count(),
-                "median_us": median(&mut row.times_us.clone()),
-                "mean_us": mean(row.times_us.iter().copied()),
-                "max_us": row.times_us.iter().copied().fold(0.0, f64::max),
-                "mean_points_processed": mean(row.points.iter().map(|&p| p as f64)),
-                "mean_facets_created": mean(row.facets.iter().map(|&p| p as f64)),
-            })
-        } else {
-            Value::Null
-        };
+        let mut qinf = Vec::new();
+        for &variant in variants.iter().filter(|_| k <= args.qinf_max_edges) {
+            qinf.push(qinf_row(&set, variant));
+        }
         let batch = batch(&set, &partial_results, &pools, args.batch_rounds);
         report.push(json!({
             "cone_edges": k,
@@ -349,6 +361,37 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
     }
     print_tables(args, &report);
     Ok(())
+}
+
+/// Q∞ of every grasp of `set` by the partial hull. A grasp the library cannot evaluate is
+/// counted, not fatal (the timings are over the others).
+fn qinf_row(set: &[Grasp], variant: QinfVariant) -> Value {
+    let metric = Metric::QInf {
+        with_zero_wrench: variant == QinfVariant::ZeroWrench,
+    };
+    let mut evaluator = Evaluator::new(metric, Method::Partial);
+    let mut results = Vec::new();
+    let mut errors = Vec::new();
+    for (i, g) in set.iter().enumerate() {
+        match evaluator.evaluate(g) {
+            Ok(q) => results.push(q),
+            Err(e) => errors.push(format!("grasp {i}: {e}")),
+        }
+    }
+    let row = Row::new("partial", &results);
+    json!({
+        "variant": variant.name(),
+        "method": row.method,
+        "grasps": results.len(),
+        "errors": errors.len(),
+        "first_error": errors.first(),
+        "force_closure": row.force_closure,
+        "median_us": median(&mut row.times_us.clone()),
+        "mean_us": mean(row.times_us.iter().copied()),
+        "max_us": row.times_us.iter().copied().fold(0.0, f64::max),
+        "mean_points_processed": mean(row.points.iter().map(|&p| p as f64)),
+        "mean_facets_created": mean(row.facets.iter().map(|&p| p as f64)),
+    })
 }
 
 fn num(v: &Value) -> f64 {
@@ -399,39 +442,37 @@ fn print_tables(args: &GwsArgs, report: &[Value]) {
     println!(
         "x = full method / partial, on the grasps both evaluated (time: median of per-grasp ratios)"
     );
-    if report.iter().any(|e| !e["qinf"].is_null()) {
+    if report
+        .iter()
+        .any(|e| e["qinf"].as_array().is_some_and(|q| !q.is_empty()))
+    {
         println!();
+        println!("Q-inf by the partial hull (implicit Minkowski sum; fc = force closure)");
         println!(
-            "Q-inf by the partial hull (implicit Minkowski sum{})",
-            if args.zero_wrench {
-                ", with the zero wrench"
-            } else {
-                ""
-            }
+            "{:>4} {:>12} {:>6} {:>6} {:>12} {:>12} {:>12} {:>10} {:>10}",
+            "k", "variant", "grasps", "fc", "median_us", "mean_us", "max_us", "points", "facets"
         );
-        println!(
-            "{:>4} {:>6} {:>6} {:>12} {:>12} {:>12} {:>10} {:>10}",
-            "k", "grasps", "fc", "median_us", "mean_us", "max_us", "points", "facets"
-        );
-        for entry in report.iter().filter(|e| !e["qinf"].is_null()) {
-            let q = &entry["qinf"];
-            println!(
-                "{:>4} {:>6} {:>6} {:>12.1} {:>12.1} {:>12.1} {:>10.1} {:>10.1}",
-                entry["cone_edges"].as_u64().unwrap_or(0),
-                q["grasps"].as_u64().unwrap_or(0),
-                q["force_closure"].as_u64().unwrap_or(0),
-                num(&q["median_us"]),
-                num(&q["mean_us"]),
-                num(&q["max_us"]),
-                num(&q["mean_points_processed"]),
-                num(&q["mean_facets_created"])
-            );
-            if q["errors"] != 0 {
+        for entry in report {
+            for q in entry["qinf"].as_array().into_iter().flatten() {
                 println!(
-                    "     !! {} grasps not evaluated, first: {}",
-                    q["errors"],
-                    q["first_error"].as_str().unwrap_or("")
+                    "{:>4} {:>12} {:>6} {:>6} {:>12.1} {:>12.1} {:>12.1} {:>10.1} {:>10.1}",
+                    entry["cone_edges"].as_u64().unwrap_or(0),
+                    q["variant"].as_str().unwrap_or(""),
+                    q["grasps"].as_u64().unwrap_or(0),
+                    q["force_closure"].as_u64().unwrap_or(0),
+                    num(&q["median_us"]),
+                    num(&q["mean_us"]),
+                    num(&q["max_us"]),
+                    num(&q["mean_points_processed"]),
+                    num(&q["mean_facets_created"])
                 );
+                if q["errors"] != 0 {
+                    println!(
+                        "     !! {} grasps not evaluated, first: {}",
+                        q["errors"],
+                        q["first_error"].as_str().unwrap_or("")
+                    );
+                }
             }
         }
     }
