@@ -153,7 +153,7 @@ fn mesh_frame_is_applied_and_a_conflicting_frame_is_an_error_line() {
     assert_eq!(lines.len(), 2);
     assert_eq!(lines[0]["force_closure"], true);
     assert!(lines[0]["quality"].as_f64().unwrap() > 0.0);
-    assert_eq!(lines[0]["stats"]["points_processed"].as_u64().is_some(), true);
+    assert!(lines[0]["stats"]["points_processed"].as_u64().is_some());
     assert_eq!(lines[1]["index"], 1);
     assert!(lines[1]["error"].as_str().unwrap().contains("torque frame"));
     let stderr = String::from_utf8_lossy(&out.stderr);

@@ -1,7 +1,6 @@
 //! Loading meshes from Wavefront OBJ (via `tobj`) and STL (via `stl_io`) files.
 
 use std::collections::HashMap;
-use std::fmt::Write as _;
 use std::fs::File;
 use std::io::{self, BufRead, BufReader, Read, Seek};
 use std::path::Path;
@@ -54,10 +53,8 @@ impl Mesh {
     /// two objects is recognised by its identical parsed coordinates and merged. Texture
     /// coordinates, normals and materials are ignored (a `mtllib` is not opened).
     ///
-    /// Coordinates: `tobj` (built without its `use_f64` feature) parses them to `f32`. Each is
-    /// widened through its shortest decimal representation, which restores the file's value
-    /// exactly when it has at most 7 significant digits (as most OBJ files do) and is otherwise
-    /// within one `f32` unit in the last place of it.
+    /// Coordinates are parsed to `f64` (tobj's `use_f64` feature), so the file's decimal values
+    /// are read with correct rounding.
     ///
     /// # Errors
     ///
@@ -104,7 +101,6 @@ impl Mesh {
         // Exact parsed coordinates → merged index, for vertices of earlier objects.
         let mut earlier: HashMap<[u64; 3], u32> = HashMap::new();
         let mut faces_before = 0;
-        let mut text = String::new();
         for model in &models {
             let mesh = &model.mesh;
             if let Some(face) = mesh.face_arities.iter().position(|&a| a != 3) {
@@ -125,7 +121,7 @@ impl Mesh {
                         source_name: source_name.to_owned(),
                         message: "more than 2^32 vertices".to_owned(),
                     })?;
-                    vertices.push([0, 1, 2].map(|k| widen(p[k], &mut text)));
+                    vertices.push([p[0], p[1], p[2]]);
                     Ok(i)
                 })
                 .collect::<Result<_, MeshError>>()?;
@@ -187,24 +183,9 @@ impl Mesh {
     }
 }
 
-/// The exact identity of a parsed position. Generic over tobj's float type (`f32`, or `f64` with
-/// its `use_f64` feature); widening `f32` to `f64` is injective.
-fn bits_of<F: Copy + Into<f64>>(p: &[F]) -> [u64; 3] {
-    [0, 1, 2].map(|k| p[k].into().to_bits())
-}
-
-/// `x` as the `f64` nearest to its shortest round-tripping decimal representation (for an `f64`,
-/// `x` itself).
-fn widen<F: Copy + Into<f64> + std::fmt::Display>(x: F, text: &mut String) -> f64 {
-    let wide: f64 = x.into();
-    text.clear();
-    // Writing to a String cannot fail, nor can parsing what Display wrote for a finite float; a
-    // non-finite value is passed through as is, for try_new to report.
-    if wide.is_finite() && write!(text, "{x}").is_ok() {
-        text.parse().unwrap_or(wide)
-    } else {
-        wide
-    }
+/// The exact identity of a parsed position.
+fn bits_of(p: &[f64]) -> [u64; 3] {
+    [0, 1, 2].map(|k| p[k].to_bits())
 }
 
 /// Whether tobj raises this error while parsing a line (as opposed to when it assembles an
@@ -298,14 +279,6 @@ impl<R: BufRead> BufRead for LineCounter<R> {
 mod tests {
     use super::*;
 
-    #[test]
-    fn widening_restores_short_decimals() {
-        let mut s = String::new();
-        assert_eq!(widen(15.3644_f32, &mut s), 15.3644);
-        assert_eq!(widen(0.1_f32, &mut s), 0.1);
-        assert_eq!(widen(-2.5e-7_f32, &mut s), -2.5e-7);
-        assert!(widen(f32::NAN, &mut s).is_nan());
-    }
 
     #[test]
     fn the_line_counter_counts_consumed_lines() {
