@@ -9,10 +9,10 @@ use serde_json::{Value, json};
 use std::fmt;
 use std::sync::OnceLock;
 
-/// Khachiyan's stopping tolerance for the approximate method's ellipsoid: the ellipsoid is then
-/// scaled to contain every disturbance exactly, so this bounds only how far from minimal it is
-/// (and the approximation is coarser than that anyway).
-pub const ELLIPSOID_TOLERANCE: f64 = 1e-4;
+/// The stopping tolerance of the approximate method's ellipsoid: its volume is within a factor
+/// (1 + ε)^3 of the minimum ([`CentredEllipsoid::try_enclosing`]), and it contains every
+/// disturbance exactly whatever ε.
+pub const ELLIPSOID_TOLERANCE: f64 = crate::grasp::ellipsoid::DEFAULT_TOLERANCE;
 
 /// Where an [`ObjectWrenchSpace`] came from.
 #[derive(Clone, Debug, PartialEq)]
