@@ -34,6 +34,7 @@ pub mod points_file;
 pub mod predicates;
 pub mod rbox;
 pub mod strategy;
+pub mod viz;
 
 pub use hull::{Facet, FacetId, Hull, HullError, InvariantViolation};
 pub use strategy::{ClosestToOrigin, FarthestPoint, OwsInflation, Stats, Step, Strategy};

@@ -8,6 +8,7 @@ mod error;
 mod grasp_cmd;
 mod hull_cmd;
 mod input;
+mod trace_cmd;
 
 use clap::{Parser, Subcommand};
 use error::CliError;
@@ -56,6 +57,9 @@ enum Command {
     /// Benchmarks: `pqh bench gws` compares every method on random grasps
     #[command(after_help = EXIT_STATUS_HELP)]
     Bench(bench_cmd::BenchArgs),
+    /// A strategy's run, step by step, as a self-contained HTML page (2-D and 3-D)
+    #[command(long_about = trace_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
+    Trace(trace_cmd::TraceArgs),
     /// Full vs partial hull on built-in seeded point sets: agreement and speed-up
     #[command(long_about = demo_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
     Demo(demo_cmd::DemoArgs),
@@ -68,6 +72,7 @@ fn main() -> ExitCode {
         Command::Demo(args) => demo_cmd::run(&args),
         Command::Grasp(args) => grasp_cmd::run(&args),
         Command::Bench(args) => bench_cmd::run(&args),
+        Command::Trace(args) => trace_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

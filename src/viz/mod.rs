@@ -1,0 +1,1 @@
+//! Visual debugging: recorded traces of a strategy's run and their SVG / HTML renderings.
