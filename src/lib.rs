@@ -30,6 +30,7 @@
 pub mod grasp;
 pub mod hull;
 pub mod mesh;
+pub mod plan;
 pub mod points_file;
 pub mod predicates;
 pub mod rbox;

@@ -8,6 +8,9 @@ mod error;
 mod grasp_cmd;
 mod hull_cmd;
 mod input;
+mod plan_cmd;
+mod plan_view;
+mod progress;
 mod trace_cmd;
 
 use clap::{Parser, Subcommand};
@@ -44,6 +47,9 @@ a comment; the dimension is the number of coordinates on the first row.",
 struct Cli {
     #[command(subcommand)]
     command: Command,
+    /// No progress bars (they are shown only when stderr is a terminal anyway)
+    #[arg(long, global = true)]
+    quiet: bool,
 }
 
 #[derive(Debug, Subcommand)]
@@ -57,6 +63,9 @@ enum Command {
     /// Benchmarks: `pqh bench gws` compares every method on random grasps
     #[command(after_help = EXIT_STATUS_HELP)]
     Bench(bench_cmd::BenchArgs),
+    /// A GraspIt!-like random grasp planner: partial vs full-hull quality evaluation
+    #[command(long_about = plan_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
+    Plan(plan_cmd::PlanArgs),
     /// A strategy's run, step by step, as a self-contained HTML page (2-D and 3-D)
     #[command(long_about = trace_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
     Trace(trace_cmd::TraceArgs),
@@ -67,12 +76,14 @@ enum Command {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    progress::set_quiet(cli.quiet);
     let result = match cli.command {
         Command::Hull(args) => hull_cmd::run(&args),
         Command::Demo(args) => demo_cmd::run(&args),
         Command::Grasp(args) => grasp_cmd::run(&args),
         Command::Bench(args) => bench_cmd::run(&args),
         Command::Trace(args) => trace_cmd::run(&args),
+        Command::Plan(args) => plan_cmd::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

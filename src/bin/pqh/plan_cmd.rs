@@ -1,0 +1,262 @@
+//! `pqh plan`: a GraspIt!-like random planner, partial vs full-hull quality evaluation.
+
+use crate::error::CliError;
+use crate::progress;
+use clap::{Args, ValueEnum};
+use pqhull::grasp::FrictionModel;
+use pqhull::grasp::ows::ObjectWrenchSpace;
+use pqhull::mesh::Mesh;
+use pqhull::plan::{PlanConfig, PlanMethod, PlanMetric, PlanReport, plan_with_progress};
+use serde_json::{Value, json};
+use std::path::{Path, PathBuf};
+
+pub const LONG_ABOUT: &str = "\
+Plans grasps on a mesh the way GraspIt!'s random planner does: each sample puts --contacts
+contacts uniformly by area on the surface (inward face normals), in the object's torque frame
+(centre of mass, characteristic length), and the best force-closure grasp by --metric is kept.
+The plan runs twice on the same samples, with partial hulls and with full hulls (for ows: the
+brute-force baseline), and reports the time spent in quality evaluation against the rest (the
+seed paper's Table 1) and whether both found the same best grasp.
+
+Without --mesh the object is ../shared/meshes/spot.obj when present, else a generated ellipsoid.
+--output writes an HTML view of the best grasp by Q1 beside the best by OWS (the seed paper's
+Fig. 10).";
+
+/// The mesh used when `--mesh` is not given, relative to the working directory (the project root).
+pub const DEFAULT_MESH: &str = "../shared/meshes/spot.obj";
+
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum PlanMetricArg {
+    /// Ferrari–Canny Q1
+    Q1,
+    /// Q∞ over the Minkowski sum
+    Qinf,
+    /// Object wrench space metric
+    Ows,
+}
+
+#[derive(Debug, Args)]
+pub struct PlanArgs {
+    /// Object mesh (OBJ or STL) [default: ../shared/meshes/spot.obj, else a generated ellipsoid]
+    #[arg(long)]
+    pub mesh: Option<PathBuf>,
+    /// Contacts per grasp
+    #[arg(long, default_value_t = 4)]
+    pub contacts: usize,
+    /// Grasps sampled
+    #[arg(long, default_value_t = 200)]
+    pub samples: usize,
+    /// Samples for the full-hull run (the first ones; 0: skip it) [default: --samples]
+    #[arg(long)]
+    pub full_samples: Option<usize>,
+    /// Metric to maximise
+    #[arg(long, value_enum, default_value_t = PlanMetricArg::Q1)]
+    pub metric: PlanMetricArg,
+    /// Friction coefficient (contacts and, for ows, disturbances)
+    #[arg(long, default_value_t = 0.5)]
+    pub friction: f64,
+    /// Friction cone edges
+    #[arg(long, default_value_t = 8)]
+    pub edges: usize,
+    /// Seed of the contact sampling
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// Write an HTML view of the Q1-best and OWS-best grasps
+    #[arg(long)]
+    pub output: Option<PathBuf>,
+    /// One JSON document instead of the table
+    #[arg(long)]
+    pub json: bool,
+}
+
+/// A generated ellipsoid with semi-axes 0.5 × 0.25 × 0.15: smooth, not a sphere.
+pub fn generated_object() -> Result<Mesh, CliError> {
+    let sphere = Mesh::uv_sphere(1.0, 16, 32).map_err(|e| CliError::Input(e.to_string()))?;
+    let vertices = sphere
+        .vertices()
+        .iter()
+        .map(|v| [0.5 * v[0], 0.25 * v[1], 0.15 * v[2]])
+        .collect();
+    Mesh::try_new(vertices, sphere.triangles().to_vec()).map_err(|e| CliError::Input(e.to_string()))
+}
+
+/// The mesh and a name for it.
+pub fn load_object(mesh: Option<&Path>) -> Result<(Mesh, String), CliError> {
+    let load = |path: &Path| {
+        Mesh::load(path)
+            .map(|m| (m, path.display().to_string()))
+            .map_err(|e| CliError::Input(e.to_string()))
+    };
+    match mesh {
+        Some(path) => load(path),
+        None if Path::new(DEFAULT_MESH).exists() => load(Path::new(DEFAULT_MESH)),
+        None => Ok((
+            generated_object()?,
+            "generated ellipsoid 0.5 × 0.25 × 0.15".to_string(),
+        )),
+    }
+}
+
+fn metric(arg: PlanMetricArg) -> PlanMetric {
+    match arg {
+        PlanMetricArg::Q1 => PlanMetric::Q1,
+        PlanMetricArg::Qinf => PlanMetric::QInf,
+        PlanMetricArg::Ows => PlanMetric::Ows,
+    }
+}
+
+/// Runs one plan with a progress bar.
+pub fn run_plan(
+    mesh: &Mesh,
+    space: Option<&ObjectWrenchSpace>,
+    config: &PlanConfig,
+    method: PlanMethod,
+    label: &str,
+) -> Result<PlanReport, CliError> {
+    let bar = progress::bar(config.samples, label);
+    let report = plan_with_progress(mesh, space, config, method, |done| bar.set_position(done as u64))
+        .map_err(|e| CliError::Geometry(e.to_string()));
+    bar.finish_and_clear();
+    report
+}
+
+pub fn report_json(report: &PlanReport) -> Value {
+    json!({
+        "samples": report.samples,
+        "force_closure": report.force_closure,
+        "quality_s": report.quality_time.as_secs_f64(),
+        "other_s": report.other_time.as_secs_f64(),
+        "facets_created": report.facets_created,
+        "best": report.best.as_ref().map(|b| json!({
+            "sample": b.sample,
+            "value": b.value,
+            "contacts": b.grasp.contacts().iter().map(|c| json!({
+                "position": c.position(),
+                "normal": c.normal(),
+            })).collect::<Vec<_>>(),
+        })),
+    })
+}
+
+pub fn run(args: &PlanArgs) -> Result<(), CliError> {
+    let friction = FrictionModel::try_new(args.friction, args.edges)
+        .map_err(|e| CliError::Usage(format!("--friction/--edges: {e}")))?;
+    if args.contacts == 0 || args.samples == 0 {
+        return Err(CliError::Usage(
+            "--contacts and --samples must be at least 1".into(),
+        ));
+    }
+    let (mesh, name) = load_object(args.mesh.as_deref())?;
+    let needs_space = matches!(args.metric, PlanMetricArg::Ows) || args.output.is_some();
+    let space = if needs_space {
+        Some(
+            ObjectWrenchSpace::from_mesh(&mesh, friction)
+                .map_err(|e| CliError::Input(format!("{name}: {e}")))?,
+        )
+    } else {
+        None
+    };
+    let config = PlanConfig {
+        contacts: args.contacts,
+        samples: args.samples,
+        friction,
+        metric: metric(args.metric),
+        seed: args.seed,
+    };
+    let partial = run_plan(&mesh, space.as_ref(), &config, PlanMethod::Partial, "partial")?;
+    let full_samples = args.full_samples.unwrap_or(args.samples).min(args.samples);
+    let comparison = if full_samples > 0 {
+        let short = PlanConfig {
+            samples: full_samples,
+            ..config
+        };
+        let full = run_plan(&mesh, space.as_ref(), &short, PlanMethod::Full, "full hull")?;
+        // The partial plan over the same first samples, to compare the best grasps.
+        let partial_short = if full_samples == args.samples {
+            partial.clone()
+        } else {
+            run_plan(&mesh, space.as_ref(), &short, PlanMethod::Partial, "partial")?
+        };
+        Some((full, partial_short))
+    } else {
+        None
+    };
+    let views = match (&args.output, &space) {
+        (Some(path), Some(space)) => Some(crate::plan_view::write(
+            path, &mesh, &name, space, &config, &partial,
+        )?),
+        _ => None,
+    };
+
+    let same_best = comparison.as_ref().map(|(full, partial_short)| {
+        match (&full.best, &partial_short.best) {
+            // The same sample, or (an exact tie broken differently by rounding) the same value.
+            (Some(a), Some(b)) => {
+                a.sample == b.sample || (a.value - b.value).abs() <= 1e-9 * b.value.abs().max(1e-3)
+            }
+            (None, None) => true,
+            _ => false,
+        }
+    });
+    let per_sample = |r: &PlanReport| r.quality_time.as_secs_f64() / r.samples as f64;
+    let speedup = comparison
+        .as_ref()
+        .map(|(full, short)| per_sample(full) / per_sample(short));
+    if args.json {
+        let document = json!({
+            "mesh": name,
+            "metric": format!("{:?}", args.metric).to_lowercase(),
+            "contacts": args.contacts,
+            "edges": args.edges,
+            "friction": args.friction,
+            "seed": args.seed,
+            "partial": report_json(&partial),
+            "full": comparison.as_ref().map(|(full, _)| report_json(full)),
+            "same_best": same_best,
+            "quality_speedup": speedup,
+            "output": views.as_ref().map(|p| p.display().to_string()),
+        });
+        println!("{document}");
+    } else {
+        println!(
+            "plan on {name}: {} samples × {} contacts, μ = {}, {} cone edges, metric {:?}",
+            args.samples, args.contacts, args.friction, args.edges, args.metric
+        );
+        println!(
+            "{:<10} {:>8} {:>8} {:>12} {:>12} {:>12}",
+            "method", "samples", "closure", "quality s", "other s", "best"
+        );
+        let mut rows = vec![("partial", &partial)];
+        if let Some((full, _)) = &comparison {
+            rows.push(("full", full));
+        }
+        for (method, r) in rows {
+            println!(
+                "{:<10} {:>8} {:>8} {:>12.4} {:>12.4} {:>12}",
+                method,
+                r.samples,
+                r.force_closure,
+                r.quality_time.as_secs_f64(),
+                r.other_time.as_secs_f64(),
+                r.best
+                    .as_ref()
+                    .map_or("none".to_string(), |b| format!("{:.6} (#{})", b.value, b.sample))
+            );
+        }
+        if let (Some(s), Some(same)) = (speedup, same_best) {
+            println!(
+                "quality evaluation per sample: full / partial = {s:.1}×; same best grasp: {}",
+                if same { "yes" } else { "NO" }
+            );
+        }
+        if let Some(path) = &views {
+            println!("wrote {}", path.display());
+        }
+    }
+    if same_best == Some(false) {
+        return Err(CliError::Geometry(
+            "the partial and full-hull plans chose different best grasps".into(),
+        ));
+    }
+    Ok(())
+}

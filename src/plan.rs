@@ -1,0 +1,267 @@
+//! A GraspIt!-like random grasp planner: sample contacts on the surface, keep the best grasp.
+//!
+//! Each sample places `m` contacts uniformly by area on the object's surface (inward face normals,
+//! [`Mesh::sample_surface`]), builds the grasp in the object's torque frame (centre of mass and
+//! characteristic length ρ) and evaluates one metric. The best force-closure grasp is kept. Time
+//! is split between quality evaluation and everything else (sampling, building the grasp), which
+//! is what the seed paper's Table 1 compares between the partial and the full-hull methods.
+//!
+//! ```
+//! use pqhull::grasp::FrictionModel;
+//! use pqhull::mesh::Mesh;
+//! use pqhull::plan::{plan, PlanConfig, PlanMethod, PlanMetric};
+//!
+//! let object = Mesh::uv_sphere(0.3, 8, 16)?;
+//! let config = PlanConfig {
+//!     contacts: 4,
+//!     samples: 50,
+//!     friction: FrictionModel::try_new(0.5, 8)?,
+//!     metric: PlanMetric::Q1,
+//!     seed: 7,
+//! };
+//! let partial = plan(&object, None, &config, PlanMethod::Partial)?;
+//! let full = plan(&object, None, &config, PlanMethod::Full)?;
+//! // Same samples, same metric values: the same best grasp.
+//! let (a, b) = (partial.best.unwrap(), full.best.unwrap());
+//! assert_eq!(a.sample, b.sample);
+//! assert!((a.value - b.value).abs() <= 1e-12 * b.value.abs().max(1e-2));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+use crate::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod};
+use crate::grasp::quality::{Evaluator, Method, Metric, QualityError};
+use crate::grasp::{Contact, FrictionModel, Grasp, GraspError};
+use crate::mesh::{Mesh, SurfaceSampler};
+use crate::rbox::Rng;
+use std::fmt;
+use std::time::{Duration, Instant};
+
+/// The metric a plan optimises.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PlanMetric {
+    /// Ferrari–Canny Q1.
+    Q1,
+    /// Q∞ (Minkowski sum, without the zero wrench).
+    QInf,
+    /// The object wrench space metric (needs the object's [`ObjectWrenchSpace`]).
+    Ows,
+}
+
+/// How each sample's quality is computed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PlanMethod {
+    /// Partial hulls (`ClosestToOrigin`, `OwsInflation`).
+    Partial,
+    /// Full hulls (`FarthestPoint`; for Q_OWS, the brute-force baseline).
+    Full,
+}
+
+/// What to plan.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PlanConfig {
+    /// Contacts per grasp (m ≥ 1).
+    pub contacts: usize,
+    /// Grasps sampled.
+    pub samples: usize,
+    /// Friction model of every contact.
+    pub friction: FrictionModel,
+    /// The metric to maximise.
+    pub metric: PlanMetric,
+    /// Seed of the contact sampling: the same seed gives the same grasps for every method.
+    pub seed: u64,
+}
+
+/// The best grasp found.
+#[derive(Clone, Debug, PartialEq)]
+pub struct BestGrasp {
+    /// Which sample (0-based) it was.
+    pub sample: usize,
+    /// The grasp, in the object's torque frame.
+    pub grasp: Grasp,
+    /// Its metric value.
+    pub value: f64,
+}
+
+/// The outcome of a plan.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlanReport {
+    /// The force-closure grasp with the largest value (`None` if no sample was force closure).
+    pub best: Option<BestGrasp>,
+    /// Samples evaluated.
+    pub samples: usize,
+    /// How many were force closure.
+    pub force_closure: usize,
+    /// Time spent in quality evaluation.
+    pub quality_time: Duration,
+    /// Everything else: sampling contacts and building grasps.
+    pub other_time: Duration,
+    /// Facets created by all the evaluations.
+    pub facets_created: usize,
+}
+
+/// Why a plan could not run.
+#[derive(Clone, Debug, PartialEq)]
+pub enum PlanError {
+    /// `contacts` or `samples` is zero.
+    Empty,
+    /// `PlanMetric::Ows` without an object wrench space.
+    NoWrenchSpace,
+    /// A sampled contact or grasp was invalid (cannot happen for a valid mesh; reported, not
+    /// hidden).
+    Grasp(GraspError),
+    /// A metric failed.
+    Quality(QualityError),
+}
+
+impl fmt::Display for PlanError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            PlanError::Empty => write!(f, "a plan needs at least one contact and one sample"),
+            PlanError::NoWrenchSpace => {
+                write!(f, "the OWS metric needs the object's wrench space")
+            }
+            PlanError::Grasp(e) => write!(f, "sampled grasp: {e}"),
+            PlanError::Quality(e) => write!(f, "quality: {e}"),
+        }
+    }
+}
+
+impl std::error::Error for PlanError {}
+
+impl From<GraspError> for PlanError {
+    fn from(e: GraspError) -> Self {
+        PlanError::Grasp(e)
+    }
+}
+
+impl From<QualityError> for PlanError {
+    fn from(e: QualityError) -> Self {
+        PlanError::Quality(e)
+    }
+}
+
+/// One metric by one method, with its reusable buffers.
+enum Scorer<'a> {
+    Gws(Evaluator),
+    Ows(OwsEvaluator, &'a ObjectWrenchSpace),
+}
+
+impl Scorer<'_> {
+    /// (force closure, value, facets created)
+    fn score(&mut self, grasp: &Grasp) -> Result<(bool, Option<f64>, usize), QualityError> {
+        match self {
+            Scorer::Gws(e) => {
+                let q = e.evaluate(grasp)?;
+                Ok((q.force_closure, Some(q.value), q.stats.facets_created))
+            }
+            Scorer::Ows(e, space) => {
+                let q = e.evaluate(grasp, space)?;
+                Ok((q.force_closure, q.value, q.stats.facets_created))
+            }
+        }
+    }
+}
+
+/// The torque frame of grasps on `mesh`: the space's when there is one (it was built from the
+/// same mesh), else the mesh's own centre of mass and characteristic length.
+fn torque_frame(mesh: &Mesh, space: Option<&ObjectWrenchSpace>) -> ([f64; 3], f64) {
+    space.and_then(ObjectWrenchSpace::torque_frame).unwrap_or_else(|| {
+        let mass = mesh.mass_properties();
+        (mass.centre_of_mass, mass.characteristic_length)
+    })
+}
+
+/// Samples `config.samples` grasps on `mesh` and keeps the best by `config.metric`, computed by
+/// `method`. `space` is the object's wrench space, required for [`PlanMetric::Ows`] (and, when
+/// given, it fixes the torque frame).
+///
+/// # Errors
+/// [`PlanError`] for an empty configuration, a missing wrench space, or a failed evaluation.
+pub fn plan(
+    mesh: &Mesh,
+    space: Option<&ObjectWrenchSpace>,
+    config: &PlanConfig,
+    method: PlanMethod,
+) -> Result<PlanReport, PlanError> {
+    plan_with_progress(mesh, space, config, method, |_| {})
+}
+
+/// [`plan`], calling `progress(samples done)` after each sample (for a progress bar).
+///
+/// # Errors
+/// As [`plan`].
+pub fn plan_with_progress(
+    mesh: &Mesh,
+    space: Option<&ObjectWrenchSpace>,
+    config: &PlanConfig,
+    method: PlanMethod,
+    mut progress: impl FnMut(usize),
+) -> Result<PlanReport, PlanError> {
+    if config.contacts == 0 || config.samples == 0 {
+        return Err(PlanError::Empty);
+    }
+    let started = Instant::now();
+    let mut scorer = match (config.metric, method) {
+        (PlanMetric::Ows, m) => Scorer::Ows(
+            OwsEvaluator::new(match m {
+                PlanMethod::Partial => OwsMethod::Partial,
+                PlanMethod::Full => OwsMethod::BruteForce,
+            }),
+            space.ok_or(PlanError::NoWrenchSpace)?,
+        ),
+        (metric, m) => Scorer::Gws(Evaluator::new(
+            match metric {
+                PlanMetric::QInf => Metric::QInf {
+                    with_zero_wrench: false,
+                },
+                _ => Metric::Q1,
+            },
+            match m {
+                PlanMethod::Partial => Method::Partial,
+                PlanMethod::Full => Method::Full,
+            },
+        )),
+    };
+    let (reference, scale) = torque_frame(mesh, space);
+    let sampler = SurfaceSampler::new(mesh);
+    let mut rng = Rng::new(config.seed);
+    let mut report = PlanReport {
+        best: None,
+        samples: config.samples,
+        force_closure: 0,
+        quality_time: Duration::ZERO,
+        other_time: Duration::ZERO,
+        facets_created: 0,
+    };
+    let mut contacts = Vec::with_capacity(config.contacts);
+    for sample in 0..config.samples {
+        contacts.clear();
+        for _ in 0..config.contacts {
+            let s = sampler.sample(&mut rng);
+            contacts.push(Contact::try_new(s.position, s.inward_normal, None)?);
+        }
+        let grasp = Grasp::builder(contacts.clone(), config.friction)
+            .torque_reference(reference)
+            .torque_scale(scale)
+            .build()?;
+        let timer = Instant::now();
+        let (force_closure, value, facets) = scorer.score(&grasp)?;
+        report.quality_time += timer.elapsed();
+        report.facets_created += facets;
+        if force_closure {
+            report.force_closure += 1;
+            if let Some(value) = value
+                && report.best.as_ref().is_none_or(|b| value > b.value)
+            {
+                report.best = Some(BestGrasp {
+                    sample,
+                    grasp,
+                    value,
+                });
+            }
+        }
+        progress(sample + 1);
+    }
+    report.other_time = started.elapsed().saturating_sub(report.quality_time);
+    Ok(report)
+}
