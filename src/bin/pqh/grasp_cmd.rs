@@ -348,16 +348,22 @@ fn run_ows(args: &GraspArgs, entries: Vec<Result<Grasp, String>>, values: &[Resu
             space.frame(&g).map_err(|e| e.to_string())
         })
         .collect();
+    let bar = crate::progress::bar(framed.len(), "grasps");
     let results = with_threads(args.threads, || {
         use rayon::prelude::*;
         framed
             .par_iter()
             .map_init(
                 || OwsEvaluator::new(method),
-                |ev, g| g.as_ref().ok().map(|g| ev.evaluate(g, &space)),
+                |ev, g| {
+                    let result = g.as_ref().ok().map(|g| ev.evaluate(g, &space));
+                    bar.inc(1);
+                    result
+                },
             )
             .collect::<Vec<_>>()
     })?;
+    bar.finish_and_clear();
     Ok(framed
         .iter()
         .zip(&results)
@@ -393,16 +399,22 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
                 _ => Metric::Q1,
             };
             let method = method(args.method)?;
+            let bar = crate::progress::bar(entries.len(), "grasps");
             let results = with_threads(args.threads, || {
                 use rayon::prelude::*;
                 entries
                     .par_iter()
                     .map_init(
                         || Evaluator::new(metric, method),
-                        |ev, g| g.as_ref().ok().map(|g| ev.evaluate(g)),
+                        |ev, g| {
+                            let result = g.as_ref().ok().map(|g| ev.evaluate(g));
+                            bar.inc(1);
+                            result
+                        },
                     )
                     .collect::<Vec<Option<Result<Quality, QualityError>>>>()
             })?;
+            bar.finish_and_clear();
             entries
                 .iter()
                 .zip(&results)

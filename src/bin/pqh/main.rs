@@ -3,6 +3,7 @@
 //! Parsing, I/O and output only; every computation is a call into the `pqhull` library.
 
 mod bench_cmd;
+mod compare_cmd;
 mod demo_cmd;
 mod error;
 mod grasp_cmd;
@@ -69,9 +70,12 @@ enum Command {
     /// A strategy's run, step by step, as a self-contained HTML page (2-D and 3-D)
     #[command(long_about = trace_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
     Trace(trace_cmd::TraceArgs),
-    /// Full vs partial hull on built-in seeded point sets: agreement and speed-up
+    /// The demo: plan grasps on an object with partial vs full hulls, write the HTML view
     #[command(long_about = demo_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
     Demo(demo_cmd::DemoArgs),
+    /// Full vs partial hull on built-in seeded point sets: agreement and speed-up
+    #[command(long_about = compare_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
+    Compare(compare_cmd::CompareArgs),
 }
 
 fn main() -> ExitCode {
@@ -80,6 +84,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Hull(args) => hull_cmd::run(&args),
         Command::Demo(args) => demo_cmd::run(&args),
+        Command::Compare(args) => compare_cmd::run(&args),
         Command::Grasp(args) => grasp_cmd::run(&args),
         Command::Bench(args) => bench_cmd::run(&args),
         Command::Trace(args) => trace_cmd::run(&args),
