@@ -1,6 +1,8 @@
 //! The object wrench space metric: known answers, partial = brute force, the ellipsoid bound.
 
-use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod, ows_of_wrenches};
+use pqhull::grasp::ows::{
+    ObjectWrenchSpace, OwsEvaluator, OwsMethod, evaluate_batch, ows_of_wrenches,
+};
 use pqhull::grasp::quality::QualityError;
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
 use pqhull::mesh::Mesh;
@@ -344,4 +346,33 @@ fn hull_reduction_keeps_the_value() {
             (x, y) => assert_eq!(x, y),
         }
     }
+}
+
+#[test]
+fn batch_results_are_in_input_order_and_match_one_by_one() {
+    let sphere = Mesh::uv_sphere(0.3, 8, 12).unwrap();
+    let friction = FrictionModel::try_new(0.5, 6).unwrap();
+    let space = ObjectWrenchSpace::from_mesh(&sphere, friction).unwrap();
+    let mut rng = Rng::new(21);
+    let grasps: Vec<Grasp> = (0..40)
+        .map(|_| {
+            let contacts = sphere
+                .sample_surface(&mut rng, 4)
+                .iter()
+                .map(|s| Contact::try_new(s.position, s.inward_normal, None).unwrap())
+                .collect();
+            space
+                .frame(&Grasp::try_new(contacts, friction).unwrap())
+                .unwrap()
+        })
+        .collect();
+    let batch = evaluate_batch(&grasps, &space, OwsMethod::Partial);
+    let mut one = OwsEvaluator::new(OwsMethod::Partial);
+    for (g, result) in grasps.iter().zip(&batch) {
+        let expected = one.evaluate(g, &space).unwrap();
+        let got = result.as_ref().unwrap();
+        assert_eq!(got.value, expected.value);
+        assert_eq!(got.force_closure, expected.force_closure);
+    }
+    assert!(batch.iter().any(|q| q.as_ref().unwrap().force_closure));
 }

@@ -229,3 +229,20 @@ fn ellipsoid(wrenches: &[[f64; 6]], space: &ObjectWrenchSpace) -> Result<OwsQual
         stats: q1.stats,
     })
 }
+
+/// Q_OWS of every grasp against `space` on all cores (rayon's global pool), results in input
+/// order. Each worker reuses one [`OwsEvaluator`]; the space is shared, not copied.
+pub fn evaluate_batch(
+    grasps: &[Grasp],
+    space: &ObjectWrenchSpace,
+    method: OwsMethod,
+) -> Vec<Result<OwsQuality, QualityError>> {
+    use rayon::prelude::*;
+    grasps
+        .par_iter()
+        .map_init(
+            || OwsEvaluator::new(method),
+            |evaluator, grasp| evaluator.evaluate(grasp, space),
+        )
+        .collect()
+}

@@ -55,5 +55,7 @@
 mod evaluate;
 mod space;
 
-pub use evaluate::{OwsEvaluator, OwsMethod, OwsQuality, ows_of_wrenches, relative_error};
+pub use evaluate::{
+    OwsEvaluator, OwsMethod, OwsQuality, evaluate_batch, ows_of_wrenches, relative_error,
+};
 pub use space::{ELLIPSOID_TOLERANCE, ObjectWrenchSpace, OwsError, SpaceOrigin};
