@@ -209,3 +209,44 @@ fn usage_and_input_errors_are_reported() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(stderr.contains("quad.obj"), "{stderr}");
 }
+
+#[test]
+fn bench_ows_reports_every_method_and_agreement() {
+    let cube = file("cube-bench.obj", CUBE_OBJ);
+    let out = pqh(
+        &[
+            "bench",
+            "ows",
+            "--mesh",
+            cube.to_str().unwrap(),
+            "--grasps",
+            "30",
+            "--brute-grasps",
+            "10",
+            "--edges",
+            "4",
+            "--json",
+        ],
+        "",
+    );
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let report: Value = serde_json::from_slice(&out.stdout).expect("one JSON document");
+    assert_eq!(report["disturbances"], 8 * 4);
+    assert_eq!(report["compared_with_brute"], 10);
+    assert_eq!(report["disagreements"], 0);
+    let methods: Vec<&str> = report["methods"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|m| m["method"].as_str().unwrap())
+        .collect();
+    for m in ["partial", "brute", "ellipsoid", "q1-partial"] {
+        assert!(methods.contains(&m), "{methods:?}");
+    }
+    let closure = report["force_closure"].as_u64().unwrap();
+    assert_eq!(report["ellipsoid_relative_error"]["count"].as_u64().unwrap(), closure);
+    if closure > 0 {
+        // The ellipsoid's value never exceeds the exact one.
+        assert!(report["ellipsoid_relative_error"]["max"].as_f64().unwrap() <= 1e-9);
+    }
+}

@@ -43,6 +43,8 @@ pub enum Which {
     /// throughput on 1…n threads
     #[command(long_about = GWS_LONG_ABOUT)]
     Gws(GwsArgs),
+    /// Q_OWS on random surface grasps of a mesh: partial vs brute force vs ellipsoid, vs Q1
+    Ows(crate::bench_ows::OwsArgs),
 }
 
 /// Which Q∞: with or without the zero wrench in every contact's set.
@@ -237,7 +239,10 @@ fn batch(
 }
 
 pub fn run(args: &BenchArgs) -> Result<(), CliError> {
-    let Which::Gws(args) = &args.which;
+    let args = match &args.which {
+        Which::Gws(args) => args,
+        Which::Ows(args) => return crate::bench_ows::run(args),
+    };
     if args.contacts == 0 || args.grasps == 0 {
         return Err(CliError::Usage(
             "--grasps and --contacts must be at least 1".into(),
@@ -323,6 +328,7 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
                 "force_closure": row.force_closure,
                 "median_us": median(&mut row.times_us.clone()),
                 "mean_us": mean(row.times_us.iter().copied()),
+                "max_us": row.times_us.iter().copied().fold(0.0, f64::max),
                 "mean_points_processed": mean(row.points.iter().map(|&p| p as f64)),
                 "mean_facets_created": mean(row.facets.iter().map(|&p| p as f64)),
                 "time_ratio_vs_partial": median(&mut time_ratio),

@@ -3,6 +3,7 @@
 //! Parsing, I/O and output only; every computation is a call into the `pqhull` library.
 
 mod bench_cmd;
+mod bench_ows;
 mod compare_cmd;
 mod demo_cmd;
 mod error;

@@ -1,0 +1,262 @@
+//! `pqh bench ows`: the seed paper's OWS evaluation (its Fig. 8 and 9), every method side by side.
+
+use crate::error::CliError;
+use crate::grasp_cmd::describe_space;
+use clap::Args;
+use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod, OwsQuality, relative_error};
+use pqhull::grasp::quality::{Evaluator, Method, Metric};
+use pqhull::grasp::{Contact, FrictionModel, Grasp};
+use pqhull::mesh::Mesh;
+use pqhull::rbox::Rng;
+use serde_json::{Value, json};
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// The mesh used when `--mesh` is not given, relative to the working directory (the project root).
+pub const DEFAULT_MESH: &str = "../shared/meshes/spot.obj";
+
+#[derive(Debug, Args)]
+pub struct OwsArgs {
+    /// Object mesh (OBJ or STL) [default: ../shared/meshes/spot.obj when present, else a
+    /// generated ellipsoid-like sphere]
+    #[arg(long)]
+    pub mesh: Option<PathBuf>,
+    /// Random grasps (contacts sampled on the surface by area)
+    #[arg(long, default_value_t = 200)]
+    pub grasps: usize,
+    /// At most this many of them for the brute-force method (it is slow)
+    #[arg(long, default_value_t = 20)]
+    pub brute_grasps: usize,
+    /// Contacts per grasp
+    #[arg(long, default_value_t = 4)]
+    pub contacts: usize,
+    /// Cone edges, for the grasps and the disturbances alike
+    #[arg(long, default_value_t = 16)]
+    pub edges: usize,
+    /// Friction coefficient, for the grasps and the disturbances alike
+    #[arg(long, default_value_t = 0.5)]
+    pub friction: f64,
+    /// Keep only the convex-hull vertices of the disturbances first (slow for smooth meshes)
+    #[arg(long)]
+    pub reduce: bool,
+    /// Seed of the random grasps
+    #[arg(long, default_value_t = 1)]
+    pub seed: u64,
+    /// One JSON document instead of the table
+    #[arg(long)]
+    pub json: bool,
+}
+
+fn load_mesh(args: &OwsArgs) -> Result<(Mesh, String), CliError> {
+    match &args.mesh {
+        Some(path) => Mesh::load(path)
+            .map(|m| (m, path.display().to_string()))
+            .map_err(|e| CliError::Input(e.to_string())),
+        None if Path::new(DEFAULT_MESH).exists() => Mesh::load(DEFAULT_MESH)
+            .map(|m| (m, DEFAULT_MESH.to_string()))
+            .map_err(|e| CliError::Input(e.to_string())),
+        None => Mesh::uv_sphere(0.5, 24, 48)
+            .map(|m| (m, "generated sphere (24 × 48)".to_string()))
+            .map_err(|e| CliError::Input(e.to_string())),
+    }
+}
+
+fn quantiles(values: &mut [f64]) -> Value {
+    values.sort_by(f64::total_cmp);
+    let at = |q: f64| {
+        values
+            .get(((values.len() as f64 - 1.0) * q).round() as usize)
+            .copied()
+    };
+    json!({
+        "min": at(0.0), "q25": at(0.25), "median": at(0.5), "q75": at(0.75), "max": at(1.0),
+        "count": values.len(),
+    })
+}
+
+fn micros(q: &OwsQuality) -> f64 {
+    q.stats.elapsed.as_secs_f64() * 1e6
+}
+
+fn summary(name: &str, times: &mut [f64]) -> Value {
+    let grasps = times.len();
+    let mean = times.iter().sum::<f64>() / times.len().max(1) as f64;
+    times.sort_by(f64::total_cmp);
+    json!({
+        "method": name,
+        "grasps": grasps,
+        "median_us": times.get(times.len() / 2),
+        "mean_us": mean,
+    })
+}
+
+pub fn run(args: &OwsArgs) -> Result<(), CliError> {
+    if args.grasps == 0 || args.contacts == 0 {
+        return Err(CliError::Usage(
+            "--grasps and --contacts must be at least 1".into(),
+        ));
+    }
+    let friction = FrictionModel::try_new(args.friction, args.edges)
+        .map_err(|e| CliError::Usage(format!("--friction/--edges: {e}")))?;
+    let (mesh, mesh_name) = load_mesh(args)?;
+    let started = Instant::now();
+    let mut space = ObjectWrenchSpace::from_mesh(&mesh, friction)
+        .map_err(|e| CliError::Input(format!("{mesh_name}: {e}")))?;
+    if args.reduce {
+        space
+            .reduce_to_hull_vertices()
+            .map_err(|e| CliError::Geometry(e.to_string()))?;
+    }
+    let prepare_ms = started.elapsed().as_secs_f64() * 1e3;
+    // The ellipsoid is per object too: compute it before timing the grasps.
+    let started = Instant::now();
+    let ellipsoid_ready = space.ellipsoid().is_ok();
+    let ellipsoid_ms = started.elapsed().as_secs_f64() * 1e3;
+
+    let mut rng = Rng::new(args.seed);
+    let grasps: Vec<Grasp> = (0..args.grasps)
+        .map(|_| {
+            let contacts = mesh
+                .sample_surface(&mut rng, args.contacts)
+                .iter()
+                .map(|s| Contact::try_new(s.position, s.inward_normal, None))
+                .collect::<Result<Vec<_>, _>>()?;
+            space.frame(&Grasp::try_new(contacts, friction)?)
+        })
+        .collect::<Result<_, _>>()
+        .map_err(|e| CliError::Geometry(e.to_string()))?;
+
+    let evaluate = |method: OwsMethod, set: &[Grasp]| -> Result<Vec<OwsQuality>, CliError> {
+        let mut evaluator = OwsEvaluator::new(method);
+        set.iter()
+            .map(|g| evaluator.evaluate(g, &space))
+            .collect::<Result<_, _>>()
+            .map_err(|e| CliError::Geometry(e.to_string()))
+    };
+    // Partial first, so the others cannot warm caches for it.
+    let partial = evaluate(OwsMethod::Partial, &grasps)?;
+    let mut q1 = Evaluator::new(Metric::Q1, Method::Partial);
+    let mut q1_times = grasps
+        .iter()
+        .map(|g| q1.evaluate(g).map(|q| q.stats.elapsed.as_secs_f64() * 1e6))
+        .collect::<Result<Vec<_>, _>>()
+        .map_err(|e| CliError::Geometry(e.to_string()))?;
+    let brute_set = &grasps[..args.brute_grasps.min(grasps.len())];
+    let brute = evaluate(OwsMethod::BruteForce, brute_set)?;
+    let ellipsoid = evaluate(OwsMethod::Ellipsoid, &grasps)?;
+
+    let disagreements = partial
+        .iter()
+        .zip(&brute)
+        .filter(|(p, b)| match (p.value, b.value) {
+            (Some(x), Some(y)) => (x - y).abs() > 1e-9 * y.max(1e-4),
+            (x, y) => x.is_some() != y.is_some(),
+        })
+        .count();
+    let force_closure = partial.iter().filter(|q| q.force_closure).count();
+    let mut errors: Vec<f64> = partial
+        .iter()
+        .zip(&ellipsoid)
+        .filter_map(|(p, e)| Some(relative_error(e.value?, p.value?)))
+        .collect();
+
+    let closure_times = |results: &[OwsQuality]| -> Vec<f64> {
+        results
+            .iter()
+            .zip(&partial)
+            .filter(|(_, p)| p.force_closure)
+            .map(|(q, _)| micros(q))
+            .collect()
+    };
+    let mut partial_closure = closure_times(&partial);
+    let mut brute_closure = closure_times(&brute);
+    let mut partial_closure_on_brute = closure_times(&partial[..brute.len()]);
+    let mut partial_times: Vec<f64> = partial.iter().map(micros).collect();
+    let mut partial_on_brute: Vec<f64> = partial_times[..brute.len()].to_vec();
+    let mut brute_times: Vec<f64> = brute.iter().map(micros).collect();
+    let mut ellipsoid_times: Vec<f64> = ellipsoid.iter().map(micros).collect();
+    let rows = vec![
+        summary("partial", &mut partial_times),
+        summary("brute", &mut brute_times),
+        summary("ellipsoid", &mut ellipsoid_times),
+        summary("q1-partial", &mut q1_times),
+        summary("partial-fc", &mut partial_closure),
+        summary("brute-fc", &mut brute_closure),
+    ];
+    let median = |v: &Value| v["median_us"].as_f64().unwrap_or(f64::NAN);
+    let partial_brute_median = summary("", &mut partial_on_brute);
+    let partial_brute_closure = summary("", &mut partial_closure_on_brute);
+    let report = json!({
+        "mesh": mesh_name,
+        "vertices": mesh.vertices().len(),
+        "disturbances": space.len(),
+        "space": describe_space(&space),
+        "prepare_ms": prepare_ms,
+        "ellipsoid_ms": ellipsoid_ready.then_some(ellipsoid_ms),
+        "contacts": args.contacts,
+        "edges": args.edges,
+        "friction": args.friction,
+        "seed": args.seed,
+        "force_closure": force_closure,
+        "disagreements": disagreements,
+        "compared_with_brute": brute.len(),
+        "methods": rows,
+        "ratios": {
+            "brute_over_partial": median(&rows[1]) / median(&partial_brute_median),
+            "brute_over_partial_force_closure":
+                median(&rows[5]) / median(&partial_brute_closure),
+            "partial_over_q1": median(&rows[0]) / median(&rows[3]),
+        },
+        "ellipsoid_relative_error": quantiles(&mut errors),
+    });
+    if args.json {
+        println!("{report}");
+        return Ok(());
+    }
+    println!(
+        "OWS on {mesh_name}: {} vertices, {} disturbances (prepared in {prepare_ms:.0} ms); {} \
+         grasps, {} contacts × {} edges, μ = {}",
+        report["vertices"], report["disturbances"], args.grasps, args.contacts, args.edges,
+        args.friction
+    );
+    println!(
+        "force closure: {force_closure}; partial vs brute force: {disagreements} disagreements \
+         of {}",
+        brute.len()
+    );
+    println!(
+        "(the ellipsoid of the disturbances took {ellipsoid_ms:.1} ms, once per object; \
+         '-fc' rows: force-closure grasps only)"
+    );
+    println!("{:<12} {:>7} {:>12} {:>12}", "method", "grasps", "median µs", "mean µs");
+    for row in &rows {
+        println!(
+            "{:<12} {:>7} {:>12.1} {:>12.1}",
+            row["method"].as_str().unwrap_or(""),
+            row["grasps"].as_u64().unwrap_or(0),
+            median(row),
+            row["mean_us"].as_f64().unwrap_or(f64::NAN)
+        );
+    }
+    let ratio = |key: &str| report["ratios"][key].as_f64().unwrap_or(f64::NAN);
+    println!(
+        "brute / partial (same grasps): {:.1}× (force closure only: {:.1}×)   partial OWS / \
+         partial Q1: {:.2}×",
+        ratio("brute_over_partial"),
+        ratio("brute_over_partial_force_closure"),
+        ratio("partial_over_q1")
+    );
+    let e = &report["ellipsoid_relative_error"];
+    let q = |key: &str| e[key].as_f64().map_or("-".to_string(), |x| format!("{x:+.4}"));
+    println!(
+        "ellipsoid relative error (approx − exact) / exact over {} force-closure grasps: min {} \
+         q25 {} median {} q75 {} max {}",
+        e["count"],
+        q("min"),
+        q("q25"),
+        q("median"),
+        q("q75"),
+        q("max")
+    );
+    Ok(())
+}
