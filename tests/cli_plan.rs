@@ -1,0 +1,123 @@
+//! End-to-end tests of `pqh plan` and `pqh demo` (the planner demo).
+
+use serde_json::Value;
+use std::path::PathBuf;
+use std::process::{Command, Output};
+
+fn pqh(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_pqh"))
+        .args(args)
+        .output()
+        .expect("run pqh")
+}
+
+fn temp(name: &str) -> PathBuf {
+    PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-plan-{name}"))
+}
+
+/// A bar [−0.5, 0.5] × [−0.2, 0.2] × [−0.1, 0.1], counter-clockwise seen from outside.
+fn bar_obj() -> PathBuf {
+    let path = temp("bar.obj");
+    std::fs::write(
+        &path,
+        "v -0.5 -0.2 -0.1\nv 0.5 -0.2 -0.1\nv 0.5 0.2 -0.1\nv -0.5 0.2 -0.1\n\
+         v -0.5 -0.2 0.1\nv 0.5 -0.2 0.1\nv 0.5 0.2 0.1\nv -0.5 0.2 0.1\n\
+         f 1 4 3\nf 1 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\n\
+         f 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n",
+    )
+    .expect("write the bar");
+    path
+}
+
+#[test]
+fn plan_partial_and_full_pick_the_same_best_grasp() {
+    let bar = bar_obj();
+    for metric in ["q1", "ows"] {
+        let out = pqh(&[
+            "plan",
+            "--mesh",
+            bar.to_str().unwrap(),
+            "--samples",
+            "40",
+            "--metric",
+            metric,
+            "--json",
+        ]);
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        let report: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+        assert_eq!(report["same_best"], true, "{metric}");
+        let (partial, full) = (&report["partial"], &report["full"]);
+        assert_eq!(partial["samples"], 40);
+        assert_eq!(partial["force_closure"], full["force_closure"], "{metric}");
+        assert!(partial["force_closure"].as_u64().unwrap() > 0, "{metric}");
+        let (a, b) = (
+            partial["best"]["value"].as_f64().unwrap(),
+            full["best"]["value"].as_f64().unwrap(),
+        );
+        assert!((a - b).abs() <= 1e-9 * b, "{metric}: {a} vs {b}");
+        assert_eq!(partial["best"]["contacts"].as_array().unwrap().len(), 4);
+        // The partial hulls do less work.
+        assert!(
+            partial["facets_created"].as_u64().unwrap() < full["facets_created"].as_u64().unwrap()
+        );
+    }
+}
+
+#[test]
+fn plan_writes_a_self_contained_view() {
+    let bar = bar_obj();
+    let page = temp("view.html");
+    let out = pqh(&[
+        "plan",
+        "--mesh",
+        bar.to_str().unwrap(),
+        "--samples",
+        "30",
+        "--full-samples",
+        "0",
+        "--output",
+        page.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let html = std::fs::read_to_string(&page).expect("the view was written");
+    assert!(html.contains("best by Q1") && html.contains("best by OWS"));
+    assert!(!html.contains("http://") && !html.contains("https://"), "no network");
+}
+
+#[test]
+fn plan_rejects_bad_arguments() {
+    for (args, message) in [
+        (vec!["plan", "--samples", "0"], "at least 1"),
+        (vec!["plan", "--friction=-1"], "--friction"),
+        (vec!["plan", "--mesh", "/nonexistent/x.obj"], "x.obj"),
+    ] {
+        let out = pqh(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains(message), "{args:?}: {stderr}");
+    }
+}
+
+#[test]
+fn demo_agrees_and_writes_its_view() {
+    let page = temp("demo.html");
+    let out = pqh(&[
+        "demo",
+        "--samples",
+        "40",
+        "--full-samples",
+        "8",
+        "--output",
+        page.to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let report: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    let metrics = report["metrics"].as_array().unwrap();
+    assert_eq!(metrics.len(), 2);
+    for m in metrics {
+        assert_eq!(m["same_best"], true, "{m}");
+        assert!(m["quality_speedup"].as_f64().unwrap() > 0.0);
+    }
+    assert!(std::fs::read_to_string(&page).unwrap().contains("best by OWS"));
+}
