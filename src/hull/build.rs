@@ -52,6 +52,7 @@ impl<const D: usize> Hull<D> {
             stats: Stats::default(),
             started,
             scratch: Scratch::default(),
+            trace: None,
         };
 
         // Facet k is opposite simplex vertex k; its neighbour across the ridge opposite simplex

@@ -68,6 +68,9 @@ impl<const D: usize> Hull<D> {
         self.repartition();
         self.stats.expansions += 1;
         self.stats.points_processed += 1;
+        if self.trace.is_some() {
+            self.record_expansion(id, p);
+        }
         true
     }
 
@@ -88,6 +91,9 @@ impl<const D: usize> Hull<D> {
         }
         let index = u32::try_from(self.points.len()).ok()?;
         self.points.push(scaled);
+        if self.trace.is_some() {
+            self.record_insertion(id, index as usize, point);
+        }
         self.facets[id.index()].outside.push(index);
         self.expand_with(id, index as usize);
         Some(index as usize)
@@ -114,6 +120,7 @@ impl<const D: usize> Hull<D> {
             return false;
         }
         let mut claimed = std::mem::take(&mut self.facets[id.index()].outside);
+        let own = claimed.len();
         for other in 0..self.facets.len() {
             if other == id.index()
                 || !self.facets[other].alive
@@ -136,6 +143,10 @@ impl<const D: usize> Hull<D> {
             } else {
                 self.facets[other].outside = outside;
             }
+        }
+        if self.trace.is_some() && claimed.len() > own {
+            let moved = claimed[own..].iter().map(|&p| p as usize).collect();
+            self.record_claim(id, moved);
         }
         self.facets[id.index()].outside = claimed;
         self.refresh_farthest(id);

@@ -22,6 +22,7 @@ mod check;
 mod error;
 mod expand;
 mod facet;
+mod trace;
 
 pub use error::{HullError, InvariantViolation};
 pub use facet::{Facet, FacetId};
@@ -63,6 +64,9 @@ pub struct Hull<const D: usize> {
     stats: Stats,
     started: Instant,
     scratch: expand::Scratch<D>,
+    /// The run being recorded, if any ([`Hull::try_with_strategy_traced`]); `None` costs each
+    /// trace hook one branch.
+    trace: Option<Box<crate::viz::Trace<D>>>,
 }
 
 impl<const D: usize> Hull<D> {
@@ -83,17 +87,21 @@ impl<const D: usize> Hull<D> {
     /// As [`Hull::try_new`].
     pub fn try_with_strategy<S: Strategy<D>>(
         points: &[[f64; D]],
-        mut strategy: S,
+        strategy: S,
     ) -> Result<(Self, S::Output), HullError> {
-        let mut hull = Self::try_initial(points)?;
-        strategy.start(&hull);
-        while strategy.step(&mut hull) == Step::Continue {}
+        Ok(Self::try_initial(points)?.run(strategy))
+    }
+
+    /// Runs `strategy` on a hull holding its initial simplex (traced or not).
+    fn run<S: Strategy<D>>(mut self, mut strategy: S) -> (Self, S::Output) {
+        strategy.start(&self);
+        while strategy.step(&mut self) == Step::Continue {}
         if strategy.refines_all_normals() {
-            hull.refine_normals();
+            self.refine_normals();
         }
-        hull.stats.elapsed = hull.started.elapsed();
-        let output = strategy.finish(&hull);
-        Ok((hull, output))
+        self.stats.elapsed = self.started.elapsed();
+        let output = strategy.finish(&self);
+        (self, output)
     }
 
     /// Makes every live facet's normal precise (see [`Facet::normal_is_precise`]): an exact

@@ -4,6 +4,7 @@ use super::nearest::{min_norm_point, nearest_in_simplex};
 use super::{Stats, Step, Strategy};
 use crate::hull::{FacetId, Hull, dot};
 use crate::predicates::Sign;
+use crate::viz::TraceContext;
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
@@ -214,6 +215,18 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
                 self.enqueue(hull, id);
                 continue;
             }
+            hull.trace_choice(
+                id,
+                Some(("distance of the query beyond the plane", entry.beyond)),
+                || {
+                    if entry.beyond > 0.0 {
+                        "the query lies farthest beyond this facet's plane"
+                    } else {
+                        "nearest plane to the query (the query is beneath every queued plane)"
+                    }
+                    .to_string()
+                },
+            );
             if hull.facet(id).outside_len() > 0 || hull.claim_beyond(id) {
                 self.expand(hull, id, None);
                 return Step::Continue;
@@ -231,6 +244,11 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
             // Nothing lies beyond `id`: its plane supports the full hull.
             let query_side = hull.side_of(id, &self.query);
             if query_side == Sign::Positive {
+                hull.trace_note(
+                    None,
+                    "nothing lies beyond this facet and the query is strictly beyond it: the \
+                     query is outside the full hull; searching for the nearest point",
+                );
                 self.phase = Phase::Outside;
                 return Step::Continue;
             }
@@ -241,9 +259,23 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
                 .find(|&g| hull.side_of(g, &self.query) == Sign::Positive);
             if let Some(g) = beyond {
                 self.queue.push(entry);
+                if hull.is_tracing() {
+                    let key = hull.signed_distance(g, &self.query);
+                    hull.trace_choice(
+                        g,
+                        Some(("distance of the query beyond the plane", key)),
+                        "the query is strictly beyond this facet (exact test): it is not yet \
+                         inside the partial hull",
+                    );
+                }
                 if hull.facet(g).outside_len() > 0 || hull.claim_beyond(g) {
                     self.expand(hull, g, None);
                 } else {
+                    hull.trace_note(
+                        None,
+                        "nothing lies beyond that facet: the query is outside the full hull; \
+                         searching for the nearest point",
+                    );
                     self.phase = Phase::Outside;
                 }
                 return Step::Continue;
@@ -260,6 +292,17 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
             let foot = std::array::from_fn(|c| self.query[c] + distance * normal[c]);
             self.answer = Some((distance, id, foot));
             self.phase = Phase::Done;
+            hull.trace_stop(Some(id), || {
+                let side = if query_side == Sign::Zero {
+                    "query on the boundary"
+                } else {
+                    "query inside"
+                };
+                format!(
+                    "nothing lies beyond the nearest facet and the query is inside every facet: \
+                     distance {distance} certified ({side})"
+                )
+            });
             return Step::Stop;
         }
         unreachable!("a hull always has live facets, each queued when created")
@@ -268,6 +311,11 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
     /// One step of the outside phase: nearest point of the partial hull, then its certificate.
     fn step_outside(&mut self, hull: &mut Hull<D>) -> Step {
         let (x, id, distance) = self.nearest_point(hull);
+        hull.trace_note(
+            Some(x),
+            "nearest point of the partial hull to the query: does anything lie beyond the \
+             supporting plane through it?",
+        );
         let direction: [f64; D] = std::array::from_fn(|c| self.query[c] - x[c]);
         let level = dot(&direction, &x);
         let mut best: Option<(f64, FacetId, usize)> = None;
@@ -297,13 +345,29 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
             }
         }
         match best {
-            Some((_, g, p)) => {
+            Some((height, g, p)) => {
+                let key = (
+                    "height of the point beyond the supporting plane",
+                    height - level,
+                );
+                hull.trace_choice(g, Some(key), || {
+                    format!(
+                        "holds point {p}, the farthest beyond the supporting plane through the \
+                         nearest point: it is added"
+                    )
+                });
                 self.expand(hull, g, Some(p));
                 Step::Continue
             }
             None => {
                 self.answer = Some((-distance, id, x));
                 self.phase = Phase::Done;
+                hull.trace_stop(Some(id), || {
+                    format!(
+                        "nothing lies beyond the supporting plane through the nearest point: \
+                         distance {distance} certified (query outside)"
+                    )
+                });
                 Step::Stop
             }
         }
@@ -394,6 +458,14 @@ impl<const D: usize, S: PointSource<D>> Strategy<D> for ClosestToOrigin<D, S> {
 
     fn refines_all_normals(&self) -> bool {
         false // only the deciding facet's normal is reported, and it is refined before use
+    }
+
+    fn trace_context(&self) -> TraceContext<D> {
+        TraceContext {
+            strategy: "ClosestToOrigin".to_string(),
+            query: Some(self.query),
+            disturbances: Vec::new(),
+        }
     }
 
     fn finish(self, hull: &Hull<D>) -> Self::Output {

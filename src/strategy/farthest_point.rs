@@ -2,6 +2,7 @@
 
 use super::{Step, Strategy};
 use crate::hull::{FacetId, Hull};
+use crate::viz::TraceContext;
 
 /// Plain QuickHull to completion: every facet with a non-empty outside set is expanded with its
 /// farthest point until no outside set remains. The result is the full hull, and the baseline every
@@ -46,6 +47,9 @@ impl<const D: usize> Strategy<D> for FarthestPoint {
         // A stale id (its slot since reused) is harmless here: any live facet with outside points
         // is a valid facet to expand.
         while let Some(id) = self.pending.pop_front() {
+            if hull.is_tracing() {
+                trace_choice(hull, id);
+            }
             if hull.expand(id) {
                 self.pending.extend(
                     hull.last_created()
@@ -56,8 +60,34 @@ impl<const D: usize> Strategy<D> for FarthestPoint {
                 return Step::Continue;
             }
         }
+        hull.trace_stop(
+            None,
+            "no outside set remains: every point is inside, the hull is complete",
+        );
         Step::Stop
     }
 
     fn finish(self, _hull: &Hull<D>) -> Self::Output {}
+
+    fn trace_context(&self) -> TraceContext<D> {
+        TraceContext {
+            strategy: "FarthestPoint".to_string(),
+            ..TraceContext::default()
+        }
+    }
+}
+
+/// Records the choice of `id` if it is about to be expanded (live, with outside points); stale
+/// and emptied ids are skipped silently, as the strategy skips them.
+fn trace_choice<const D: usize>(hull: &mut Hull<D>, id: FacetId) {
+    let facet = hull.facet(id);
+    if let Some(p) = facet.farthest_point().filter(|_| facet.is_alive()) {
+        let key = hull.signed_distance(id, &hull.point(p));
+        hull.trace_choice(
+            id,
+            Some(("distance of its farthest outside point", key)),
+            "oldest pending facet with outside points (breadth-first); its farthest outside \
+             point is added",
+        );
+    }
 }

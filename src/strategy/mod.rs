@@ -44,9 +44,9 @@ use std::time::Duration;
 
 mod closest_to_origin;
 mod farthest_point;
+pub(crate) mod nearest;
 mod ows_inflation;
 mod support_index;
-pub(crate) mod nearest;
 
 pub use closest_to_origin::{ClosestToOrigin, DistanceResult, NoSource, PointSource};
 pub use farthest_point::FarthestPoint;
@@ -90,5 +90,14 @@ pub trait Strategy<const D: usize> {
     /// that refines the facets it reports (through its `&mut Hull`) can skip the rest.
     fn refines_all_normals(&self) -> bool {
         true
+    }
+    /// What a trace of this strategy's run should show beside the hull (its name, query point,
+    /// disturbances); asked once by [`Hull::try_with_strategy_traced`], never on an untraced
+    /// run. Default: nothing (the engine names the strategy after its type).
+    ///
+    /// A strategy explains itself in a trace through [`Hull::trace_choice`],
+    /// [`Hull::trace_note`] and [`Hull::trace_stop`]; the engine records the rest.
+    fn trace_context(&self) -> crate::viz::TraceContext<D> {
+        crate::viz::TraceContext::default()
     }
 }

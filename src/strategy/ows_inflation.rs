@@ -3,6 +3,7 @@
 use super::{Stats, Step, Strategy, SupportIndex};
 use crate::hull::{FacetId, Hull, dot};
 use crate::predicates::Sign;
+use crate::viz::TraceContext;
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
@@ -134,7 +135,11 @@ impl<const D: usize> OwsResult<D> {
 /// The inflation factor of ray `u` against a facet plane `normal · x = offset` whose offset is
 /// positive (the origin inside): `offset / (normal · u)`, or `None` when the ray runs parallel to or
 /// away from the plane. A non-positive offset (the origin within rounding of the plane) gives 0.
-pub fn inflation_factor<const D: usize>(normal: &[f64; D], offset: f64, u: &[f64; D]) -> Option<f64> {
+pub fn inflation_factor<const D: usize>(
+    normal: &[f64; D],
+    offset: f64,
+    u: &[f64; D],
+) -> Option<f64> {
     let rate = dot(normal, u);
     (rate > 0.0).then(|| offset.max(0.0) / rate)
 }
@@ -314,16 +319,31 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
                 }
             }
         }
-        let Some((_, id)) = worst else {
+        let Some((beyond, id)) = worst else {
+            hull.trace_note(
+                Some(origin),
+                "the origin is strictly inside the partial hull (exact tests): inflating the \
+                 disturbances",
+            );
             self.begin_inflation(hull);
             return Step::Continue;
         };
+        hull.trace_choice(
+            id,
+            Some(("distance of the origin beyond the plane", beyond)),
+            "the origin is on or beyond this facet's plane (farthest beyond first)",
+        );
         if hull.facet(id).outside_len() > 0 || hull.claim_beyond(id) {
             hull.expand(id);
             Step::Continue
         } else {
             // This facet's plane supports the full hull with the origin on or beyond it.
             self.phase = Phase::Outside;
+            hull.trace_stop(
+                Some(id),
+                "nothing lies beyond a facet with the origin on or beyond its plane: not force \
+                 closure (no value)",
+            );
             Step::Stop
         }
     }
@@ -334,6 +354,12 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
                 continue;
             }
             let id = entry.id;
+            hull.trace_choice(id, Some(("inflation factor", entry.factor)), || {
+                format!(
+                    "smallest inflation factor (disturbance {} reaches this facet's plane first)",
+                    entry.disturbance
+                )
+            });
             if hull.facet(id).outside_len() > 0 || hull.claim_beyond(id) {
                 hull.expand(id);
                 self.after_expansion(hull);
@@ -341,10 +367,21 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
             }
             self.answer = Some((entry.factor, id, entry.disturbance as usize));
             self.phase = Phase::Done;
+            hull.trace_stop(Some(id), || {
+                format!(
+                    "nothing lies beyond the facet with the smallest inflation factor: Q = {} \
+                     certified (disturbance {})",
+                    entry.factor, entry.disturbance
+                )
+            });
             return Step::Stop;
         }
         // Every disturbance is zero: nothing to resist.
         self.phase = Phase::Done;
+        hull.trace_stop(
+            None,
+            "no disturbance reaches any facet (every disturbance is zero): Q = infinity",
+        );
         Step::Stop
     }
 }
@@ -371,6 +408,17 @@ impl<const D: usize> Strategy<D> for OwsInflation<'_, D> {
 
     fn refines_all_normals(&self) -> bool {
         false // every facet whose factor is used was refined when its disturbances were assigned
+    }
+
+    fn trace_context(&self) -> TraceContext<D> {
+        TraceContext {
+            strategy: "OwsInflation".to_string(),
+            query: None,
+            disturbances: match self.disturbances {
+                Disturbances::Rays(d) => d.to_vec(),
+                Disturbances::Support(index) => index.points_in_input_order(),
+            },
+        }
     }
 
     fn finish(self, hull: &Hull<D>) -> OwsResult<D> {

@@ -77,6 +77,15 @@ impl<const D: usize> SupportIndex<D> {
         self.points.is_empty()
     }
 
+    /// The points in the order they were given (for traces, which show them).
+    pub(crate) fn points_in_input_order(&self) -> Vec<[f64; D]> {
+        let mut points = vec![[0.0; D]; self.points.len()];
+        for (p, &i) in self.points.iter().zip(&self.original) {
+            points[i as usize] = *p;
+        }
+        points
+    }
+
     /// Builds the node covering `start..end` and its subtree; returns its index.
     fn build(&mut self, start: usize, end: usize) -> u32 {
         let slice = &self.points[start..end];
@@ -201,6 +210,10 @@ mod tests {
                 assert_eq!(again, value);
             }
         }
-        assert!(SupportIndex::<3>::new(&[]).support(&[1.0, 0.0, 0.0]).is_none());
+        assert!(
+            SupportIndex::<3>::new(&[])
+                .support(&[1.0, 0.0, 0.0])
+                .is_none()
+        );
     }
 }

@@ -70,7 +70,7 @@ fn grasp_scene(mesh: &Mesh, grasp: Option<&Grasp>, caption: String) -> Scene {
         scene
             .segment(from, p, colour, 3.0)
             .point(p, colour, 6.0)
-            .label(from, &format!("finger {}", i + 1), colour);
+            .label(from, format!("finger {}", i + 1), colour);
         for f in grasp.cone_edges(i) {
             let length = (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt();
             let tip = std::array::from_fn(|k| p[k] - 0.6 * size * f[k] / length);

@@ -1,0 +1,228 @@
+//! Recording a run ([`crate::viz::Trace`]): the engine's hooks and the ones strategies call.
+//!
+//! The hull holds `Option<Box<Trace>>`, `None` unless the run was started with
+//! [`Hull::try_with_strategy_traced`]. Every hook starts with `if let Some(..)`/`is_some()` on
+//! that field, the recording itself is out of line (`#[cold]`), and strategies pass their
+//! explanations as static strings or as closures called only when tracing ([`TraceText`]), so
+//! an untraced run pays one predictable branch per hook and builds no string. The box keeps
+//! the field one pointer wide, so `Hull` barely grows.
+
+use super::{FacetId, Hull, HullError};
+use crate::strategy::Strategy;
+use crate::viz::{Event, FacetSnapshot, Key, Trace, TraceText};
+
+impl<const D: usize> Hull<D> {
+    /// As [`Hull::try_with_strategy`], and also returns the [`Trace`] of the run: the initial
+    /// simplex, every choice the strategy explained, every point added (with the facets removed
+    /// and created), and the stop with its reason.
+    ///
+    /// The hull and the output are the same as without tracing (the same facets, the same
+    /// statistics but for `elapsed`, which includes the recording).
+    ///
+    /// ```
+    /// use pqhull::{Hull, OwsInflation};
+    /// use pqhull::viz::Event;
+    /// let square = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0], [0.3, 0.2]];
+    /// let disturbances = [[1.0, 0.0], [1.0, 1.0]];
+    /// let (_, result, trace) =
+    ///     Hull::try_with_strategy_traced(&square, OwsInflation::new(&disturbances))?;
+    /// assert!((result.value.unwrap() - 1.0).abs() < 1e-12);
+    /// assert_eq!(trace.context.strategy, "OwsInflation");
+    /// assert_eq!(trace.context.disturbances, disturbances);
+    /// let expansions = trace.events.iter().filter(|e| matches!(e, Event::Expanded { .. })).count();
+    /// assert_eq!(expansions, result.stats.expansions);
+    /// assert!(trace.stop_reason().unwrap().contains("smallest inflation factor"));
+    /// # Ok::<(), pqhull::HullError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`Hull::try_new`].
+    pub fn try_with_strategy_traced<S: Strategy<D>>(
+        points: &[[f64; D]],
+        strategy: S,
+    ) -> Result<(Self, S::Output, Trace<D>), HullError> {
+        let mut hull = Self::try_initial(points)?;
+        let mut context = strategy.trace_context();
+        if context.strategy.is_empty() {
+            let name = std::any::type_name::<S>();
+            // "crate::module::Name<Params>" → "Name<Params>"
+            let base = name.split('<').next().unwrap_or(name);
+            let start = base.rfind("::").map_or(0, |i| i + 2);
+            context.strategy = name[start..].to_string();
+        }
+        let facets = hull.facets().map(|(id, _)| hull.snapshot(id)).collect();
+        hull.trace = Some(Box::new(Trace {
+            points: Vec::new(),
+            context,
+            events: vec![Event::Initial { facets }],
+        }));
+        let (mut hull, output) = hull.run(strategy);
+        let mut trace = *hull
+            .trace
+            .take()
+            .expect("the trace stays in place during the run");
+        if !matches!(trace.events.last(), Some(Event::Stop { .. })) {
+            trace.events.push(Event::Stop {
+                reason: "the strategy stopped (it gave no reason)".to_string(),
+                facet: None,
+            });
+        }
+        trace.points = (0..hull.point_count()).map(|i| hull.point(i)).collect();
+        Ok((hull, output, trace))
+    }
+
+    /// Whether this run is being traced. Strategies may test it before computing something they
+    /// only need for the trace.
+    #[inline]
+    pub fn is_tracing(&self) -> bool {
+        self.trace.is_some()
+    }
+
+    /// Records that the strategy picked facet `id` (an [`Event::Chose`]), ordered by `key`
+    /// (what it measures, its value) and explained by `reason` (a `&'static str`, or a closure
+    /// called only when tracing: see [`TraceText`]). Does nothing when not tracing or when `id`
+    /// is not live.
+    ///
+    /// ```
+    /// use pqhull::strategy::Step;
+    /// use pqhull::{Hull, Strategy};
+    ///
+    /// /// Expands the facet with the most outside points, and says so.
+    /// struct Busiest;
+    /// impl<const D: usize> Strategy<D> for Busiest {
+    ///     type Output = ();
+    ///     fn start(&mut self, _: &Hull<D>) {}
+    ///     fn step(&mut self, hull: &mut Hull<D>) -> Step {
+    ///         let best = hull.facets().max_by_key(|(_, f)| f.outside_len());
+    ///         match best.map(|(id, f)| (id, f.outside_len())) {
+    ///             Some((id, n)) if n > 0 => {
+    ///                 hull.trace_choice(id, Some(("outside points", n as f64)), "busiest facet");
+    ///                 hull.expand(id);
+    ///                 Step::Continue
+    ///             }
+    ///             _ => {
+    ///                 let n = hull.facet_count();
+    ///                 hull.trace_stop(None, move || format!("{n} facets, none with outside points"));
+    ///                 Step::Stop
+    ///             }
+    ///         }
+    ///     }
+    ///     fn finish(self, _: &Hull<D>) {}
+    /// }
+    /// let points = pqhull::rbox::generate::<3>(&pqhull::rbox::Family::UniformCube, 100, 1);
+    /// let (_, (), trace) = Hull::try_with_strategy_traced(&points, Busiest)?;
+    /// assert_eq!(trace.context.strategy, "Busiest");
+    /// assert!(trace.stop_reason().unwrap().ends_with("none with outside points"));
+    /// # Ok::<(), pqhull::HullError>(())
+    /// ```
+    #[inline]
+    pub fn trace_choice(
+        &mut self,
+        id: FacetId,
+        key: Option<(&'static str, f64)>,
+        reason: impl TraceText,
+    ) {
+        if self.trace.is_some() {
+            self.record_choice(id, key, reason.into_text());
+        }
+    }
+
+    /// Records a note (an [`Event::Note`]), optionally marking a point (caller's units).
+    #[inline]
+    pub fn trace_note(&mut self, point: Option<[f64; D]>, text: impl TraceText) {
+        if let Some(trace) = &mut self.trace {
+            trace.events.push(Event::Note {
+                text: text.into_text(),
+                point,
+            });
+        }
+    }
+
+    /// Records why the strategy stops (an [`Event::Stop`]) and the deciding facet, if any.
+    #[inline]
+    pub fn trace_stop(&mut self, facet: Option<FacetId>, reason: impl TraceText) {
+        if self.trace.is_some() {
+            let facet = facet.map(|id| self.facet(id).serial);
+            if let Some(trace) = &mut self.trace {
+                trace.events.push(Event::Stop {
+                    reason: reason.into_text(),
+                    facet,
+                });
+            }
+        }
+    }
+
+    #[cold]
+    fn record_choice(&mut self, id: FacetId, key: Option<(&'static str, f64)>, reason: String) {
+        let Some(facet) = self.facets.get(id.index()).filter(|f| f.alive) else {
+            return;
+        };
+        let event = Event::Chose {
+            facet: facet.serial,
+            vertices: facet.vertices(),
+            reason,
+            key: key.map(|(name, value)| Key {
+                name: name.to_string(),
+                value,
+            }),
+        };
+        if let Some(trace) = &mut self.trace {
+            trace.events.push(event);
+        }
+    }
+
+    fn snapshot(&self, id: FacetId) -> FacetSnapshot<D> {
+        let facet = self.facet(id);
+        FacetSnapshot {
+            serial: facet.serial,
+            vertices: facet.vertices(),
+            outside: facet.outside_set().collect(),
+        }
+    }
+
+    /// After an expansion of facet `id` by point `p`: the removed facets (tombstoned but not yet
+    /// reused, so their serials are still readable) and the created ones with their new outside
+    /// sets.
+    #[cold]
+    pub(super) fn record_expansion(&mut self, id: FacetId, p: u32) {
+        let event = Event::Expanded {
+            facet: self.facets[id.index()].serial,
+            point: p as usize,
+            removed: self
+                .last_removed()
+                .iter()
+                .map(|&r| self.facets[r.index()].serial)
+                .collect(),
+            created: self
+                .last_created()
+                .iter()
+                .map(|&c| self.snapshot(c))
+                .collect(),
+        };
+        if let Some(trace) = &mut self.trace {
+            trace.events.push(event);
+        }
+    }
+
+    /// After [`Hull::claim_beyond`] moved `points` into facet `id`'s outside set.
+    #[cold]
+    pub(super) fn record_claim(&mut self, id: FacetId, points: Vec<usize>) {
+        let facet = self.facets[id.index()].serial;
+        if let Some(trace) = &mut self.trace {
+            trace.events.push(Event::Claimed { facet, points });
+        }
+    }
+
+    /// Before [`Hull::insert_beyond`] expands facet `id` with the new point `index`.
+    #[cold]
+    pub(super) fn record_insertion(&mut self, id: FacetId, index: usize, coordinates: [f64; D]) {
+        let facet = self.facets[id.index()].serial;
+        if let Some(trace) = &mut self.trace {
+            trace.events.push(Event::Inserted {
+                facet,
+                point: index,
+                coordinates,
+            });
+        }
+    }
+}
