@@ -412,3 +412,40 @@ fn generic_scene_page_rotates_and_reports_errors() {
         state.errors
     );
 }
+
+#[test]
+fn planned_grasps_page_loads_draws_both_panels_and_rotates() {
+    let Some(exe) = browser() else { return };
+    let page = scratch("plan.html");
+    // The planner's default object: ../shared/meshes/spot.obj when present, else a generated
+    // ellipsoid (run from the crate root, as the CLI documents).
+    let o = Command::new(env!("CARGO_BIN_EXE_pqh"))
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .args(["plan", "--samples", "150", "--full-samples", "0", "--quiet", "--output"])
+        .arg(&page)
+        .output()
+        .expect("run pqh");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let fragment = "yaw=0.6&pitch=0.3";
+    let state = load(&exe, &url(&page, fragment));
+    assert_loaded(&state, "planned grasps");
+    assert!(state.dom.contains("best by Q1") && state.dom.contains("best by OWS"));
+    let shot_file = scratch("plan.png");
+    let shot = screenshot(&exe, &url(&page, fragment), &shot_file);
+    let [left, top, w, h] = state.canvas;
+    let right = [left + w + 14, top, w, h]; // the panels are laid out with a 14 px gap
+    assert_drawn(&shot.region(state.canvas), "planned grasps, left panel");
+    assert_drawn(&shot.region(right), "planned grasps, right panel");
+    let turned = screenshot(&exe, &url(&page, "yaw=2.2&pitch=-0.4"), &scratch("plan-turned.png"));
+    assert_differ(
+        &shot.region(state.canvas),
+        &turned.region(state.canvas),
+        "planned grasps, another viewpoint",
+    );
+    if std::env::var("PQHULL_UPDATE_SCREENSHOTS").as_deref() == Ok("1") {
+        let target = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/images/plan-grasp.png");
+        std::fs::create_dir_all(target.parent().unwrap()).unwrap();
+        std::fs::copy(&shot_file, &target).expect("update docs/images/plan-grasp.png");
+        eprintln!("updated {}", target.display());
+    }
+}
