@@ -177,14 +177,43 @@ impl fmt::Display for QualityError {
 
 impl std::error::Error for QualityError {}
 
-/// Evaluates one metric by one method over many grasps, reusing its wrench buffers (the hull's
-/// arena, the strategy's queue and, for Q∞, the per-contact sets are still allocated per grasp).
+/// Evaluates one metric by one method over many grasps, reusing its buffers: the wrenches, the
+/// hull's arena ([`Hull::rebuild_with_strategy`]) and the partial strategy's queue. (For Q∞ by the
+/// partial method, the implicit Minkowski source is still built per grasp.)
 #[derive(Clone, Debug)]
 pub struct Evaluator {
     metric: Metric,
     method: Method,
     cones: SnappedCones,
     wrenches: Vec<[f64; 6]>,
+    buffers: HullBuffers,
+}
+
+/// The hull and partial strategy a Q1 evaluation reuses from one wrench set to the next.
+#[derive(Clone, Debug, Default)]
+struct HullBuffers {
+    hull: Option<Hull<6>>,
+    nearest: ClosestToOrigin<6>,
+}
+
+impl HullBuffers {
+    /// The hull of `w` grown by `strategy`, in the reused arena.
+    fn build<'h, S: crate::Strategy<6>>(
+        hull: &'h mut Option<Hull<6>>,
+        w: &[[f64; 6]],
+        strategy: S,
+    ) -> Result<(&'h Hull<6>, S::Output), HullError> {
+        match hull {
+            Some(h) => {
+                let output = h.rebuild_with_strategy(w, strategy)?;
+                Ok((h, output))
+            }
+            None => {
+                let (h, output) = Hull::try_with_strategy(w, strategy)?;
+                Ok((hull.insert(h), output))
+            }
+        }
+    }
 }
 
 impl Evaluator {
@@ -195,6 +224,7 @@ impl Evaluator {
             method,
             cones: SnappedCones::default(),
             wrenches: Vec::new(),
+            buffers: HullBuffers::default(),
         }
     }
 
@@ -238,11 +268,11 @@ impl Evaluator {
     }
 
     /// The metric over the explicit point set in `self.wrenches`.
-    fn explicit(&self, started: Instant) -> Result<Quality, QualityError> {
+    fn explicit(&mut self, started: Instant) -> Result<Quality, QualityError> {
         let w = &self.wrenches;
         match self.method {
-            Method::Partial => Ok(partial_q1(w, started)),
-            Method::Full => Ok(full_q1(w, started)),
+            Method::Partial => Ok(partial_q1(w, started, &mut self.buffers)),
+            Method::Full => Ok(full_q1(w, started, &mut self.buffers)),
             #[cfg(feature = "qhull")]
             Method::Qhull => qhull_q1(w, started),
         }
@@ -304,8 +334,8 @@ pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Quality, 
     }
     let started = Instant::now();
     let mut quality = match method {
-        Method::Partial => partial_q1(wrenches, started),
-        Method::Full => full_q1(wrenches, started),
+        Method::Partial => partial_q1(wrenches, started, &mut HullBuffers::default()),
+        Method::Full => full_q1(wrenches, started, &mut HullBuffers::default()),
         #[cfg(feature = "qhull")]
         Method::Qhull => qhull_q1(wrenches, started)?,
     };
@@ -347,8 +377,8 @@ fn degenerate(w: &[[f64; 6]], started: Instant) -> Quality {
     Quality::new(-nearest.distance, support, no_hull_stats(w.len(), started))
 }
 
-pub(crate) fn partial_q1(w: &[[f64; 6]], started: Instant) -> Quality {
-    match Hull::try_with_strategy(w, ClosestToOrigin::new()) {
+fn partial_q1(w: &[[f64; 6]], started: Instant, buffers: &mut HullBuffers) -> Quality {
+    match HullBuffers::build(&mut buffers.hull, w, &mut buffers.nearest) {
         Ok((_, result)) => Quality::new(
             result.signed_distance,
             result.closest_facet_vertices.iter().map(|&v| w[v]),
@@ -361,9 +391,9 @@ pub(crate) fn partial_q1(w: &[[f64; 6]], started: Instant) -> Quality {
     }
 }
 
-fn full_q1(w: &[[f64; 6]], started: Instant) -> Quality {
-    let hull = match Hull::try_new(w) {
-        Ok(hull) => hull,
+fn full_q1(w: &[[f64; 6]], started: Instant, buffers: &mut HullBuffers) -> Quality {
+    let hull = match HullBuffers::build(&mut buffers.hull, w, crate::FarthestPoint::new()) {
+        Ok((hull, ())) => hull,
         Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
             return degenerate(w, started);
         }

@@ -10,7 +10,42 @@ use std::time::Instant;
 impl<const D: usize> Hull<D> {
     /// Validates the input, scales it, builds the initial simplex and the first outside sets.
     pub(crate) fn try_initial(input: &[[f64; D]]) -> Result<Self, HullError> {
-        let started = Instant::now();
+        let mut hull = Hull {
+            points: Vec::new(),
+            scale: 1.0,
+            facets: Vec::new(),
+            free: Vec::new(),
+            live: 0,
+            next_serial: 0,
+            epoch: 0,
+            interior: [0.0; D],
+            stats: Stats::default(),
+            started: Instant::now(),
+            scratch: Scratch::default(),
+            trace: None,
+        };
+        hull.initialise(input)?;
+        Ok(hull)
+    }
+
+    /// [`try_initial`](Self::try_initial) into this hull's storage: every facet slot is freed (its
+    /// outside-set buffer kept for reuse) and the point buffer refilled, so rebuilding a hull of a
+    /// similar size allocates nothing. On error the hull is left empty (no live facet).
+    pub(crate) fn initialise(&mut self, input: &[[f64; D]]) -> Result<(), HullError> {
+        self.started = Instant::now();
+        self.free.clear();
+        // Free the slots in descending order, so that they are reused from slot 0 up, as in a
+        // fresh arena (same ids for the same input).
+        for i in (0..self.facets.len()).rev() {
+            self.facets[i].alive = false;
+            self.free.push(FacetId(i as u32));
+        }
+        self.live = 0;
+        self.next_serial = 0;
+        self.epoch = 0;
+        self.stats = Stats::default();
+        self.trace = None;
+        self.points.clear();
         if !(2..=8).contains(&D) {
             return Err(HullError::DimensionOutOfRange { dimension: D });
         }
@@ -31,59 +66,47 @@ impl<const D: usize> Hull<D> {
             });
         }
         let scale = exact_power_of_two_scale(input);
-        let points: Vec<[f64; D]> = input.iter().map(|p| p.map(|x| x * scale)).collect();
-        let simplex = initial_simplex(&points)?;
+        self.scale = scale;
+        self.points
+            .extend(input.iter().map(|p| p.map(|x| x * scale)));
+        let simplex = initial_simplex(&self.points)?;
 
         let mut interior = [0.0; D];
         for &s in &simplex {
-            for (c, x) in interior.iter_mut().zip(&points[s]) {
+            for (c, x) in interior.iter_mut().zip(&self.points[s]) {
                 *c += x / (D + 1) as f64;
             }
         }
-        let mut hull = Hull {
-            points,
-            scale,
-            facets: Vec::new(),
-            free: Vec::new(),
-            live: 0,
-            next_serial: 0,
-            epoch: 0,
-            interior,
-            stats: Stats::default(),
-            started,
-            scratch: Scratch::default(),
-            trace: None,
-        };
+        self.interior = interior;
 
         // Facet k is opposite simplex vertex k; its neighbour across the ridge opposite simplex
-        // vertex j is facet j.
+        // vertex j is facet j. A rebuilt arena hands out slots 0, 1, … in order, as a fresh one.
+        let first = self.free.last().map_or(self.facets.len(), |id| id.index());
         for k in 0..=D {
             let mut vertices = [0u32; D];
             let mut neighbors = [FacetId::NONE; D];
             for (slot, j) in (0..=D).filter(|&j| j != k).enumerate() {
                 vertices[slot] = simplex[j] as u32;
-                neighbors[slot] = FacetId(j as u32);
+                neighbors[slot] = FacetId((first + j) as u32);
             }
-            let coords = hull.coords(&vertices);
-            if orientation(&coords, &hull.points[simplex[k]]) == Sign::Positive {
+            let coords = self.coords(&vertices);
+            if orientation(&coords, &self.points[simplex[k]]) == Sign::Positive {
                 vertices.swap(0, 1);
                 neighbors.swap(0, 1);
             }
-            hull.push_facet(vertices, neighbors);
+            let id = self.push_facet(vertices, neighbors);
+            debug_assert_eq!(id.index(), first + k);
         }
-        hull.stats.points_processed = D + 1;
+        self.stats.points_processed = D + 1;
 
-        let all: Vec<FacetId> = (0..=D as u32).map(FacetId).collect();
-        let mut is_vertex = vec![false; hull.points.len()];
-        for &s in &simplex {
-            is_vertex[s] = true;
-        }
-        for (p, &vertex) in is_vertex.iter().enumerate() {
-            if !vertex {
-                hull.assign(p as u32, &all);
+        let all: [FacetId; 9] = std::array::from_fn(|k| FacetId((first + k) as u32));
+        let all = &all[..=D];
+        for p in 0..self.points.len() as u32 {
+            if !simplex.contains(&(p as usize)) {
+                self.assign(p, all);
             }
         }
-        Ok(hull)
+        Ok(())
     }
 
     pub(crate) fn coords(&self, vertices: &[u32; D]) -> [[f64; D]; D] {

@@ -93,15 +93,48 @@ impl<const D: usize> Hull<D> {
     }
 
     /// Runs `strategy` on a hull holding its initial simplex (traced or not).
-    fn run<S: Strategy<D>>(mut self, mut strategy: S) -> (Self, S::Output) {
-        strategy.start(&self);
-        while strategy.step(&mut self) == Step::Continue {}
+    fn run<S: Strategy<D>>(mut self, strategy: S) -> (Self, S::Output) {
+        let output = self.run_in_place(strategy);
+        (self, output)
+    }
+
+    fn run_in_place<S: Strategy<D>>(&mut self, mut strategy: S) -> S::Output {
+        strategy.start(self);
+        while strategy.step(self) == Step::Continue {}
         if strategy.refines_all_normals() {
             self.refine_normals();
         }
         self.stats.elapsed = self.started.elapsed();
-        let output = strategy.finish(&self);
-        (self, output)
+        strategy.finish(self)
+    }
+
+    /// [`try_with_strategy`](Self::try_with_strategy) for new `points`, in this hull's storage:
+    /// the facet arena, the outside-set buffers, the point buffer and the expansion scratch are
+    /// reused, so evaluating many similar point sets (a grasp planner's candidates) allocates
+    /// nothing in steady state beyond what the strategy itself does.
+    ///
+    /// ```
+    /// use pqhull::{ClosestToOrigin, Hull};
+    /// let square = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]];
+    /// let (mut hull, first) = Hull::try_with_strategy(&square, ClosestToOrigin::new())?;
+    /// let wide = square.map(|p| [3.0 * p[0], p[1]]);
+    /// let second = hull.rebuild_with_strategy(&wide, ClosestToOrigin::new())?;
+    /// assert!((first.signed_distance - 1.0).abs() < 1e-15);
+    /// assert!((second.signed_distance - 1.0).abs() < 1e-15);
+    /// assert_eq!(hull.facet_count(), 4);
+    /// hull.check()?;
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`Hull::try_new`]; the hull is then left empty (no live facet) and can be rebuilt again.
+    pub fn rebuild_with_strategy<S: Strategy<D>>(
+        &mut self,
+        points: &[[f64; D]],
+        strategy: S,
+    ) -> Result<S::Output, HullError> {
+        self.initialise(points)?;
+        Ok(self.run_in_place(strategy))
     }
 
     /// Makes every live facet's normal precise (see [`Facet::normal_is_precise`]): an exact

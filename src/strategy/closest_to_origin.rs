@@ -442,8 +442,7 @@ impl<const D: usize, S: PointSource<D>> Strategy<D> for ClosestToOrigin<D, S> {
         self.queue.clear();
         self.phase = Phase::Nearest;
         self.answer = None;
-        let ids: Vec<FacetId> = hull.facets().map(|(id, _)| id).collect();
-        for id in ids {
+        for (id, _) in hull.facets() {
             self.enqueue(hull, id);
         }
     }
@@ -469,6 +468,52 @@ impl<const D: usize, S: PointSource<D>> Strategy<D> for ClosestToOrigin<D, S> {
     }
 
     fn finish(self, hull: &Hull<D>) -> Self::Output {
+        self.result(hull)
+    }
+}
+
+/// A borrowed `ClosestToOrigin` runs the same way and keeps its buffers (the facet queue, the
+/// outside-phase scratch) for the next run: with [`Hull::rebuild_with_strategy`], evaluating many
+/// point sets allocates nothing in steady state.
+///
+/// ```
+/// use pqhull::{ClosestToOrigin, Hull};
+/// let mut strategy = ClosestToOrigin::new();
+/// let square = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]];
+/// let (mut hull, first) = Hull::try_with_strategy(&square, &mut strategy)?;
+/// let shifted = square.map(|p| [p[0] + 0.5, p[1]]);
+/// let second = hull.rebuild_with_strategy(&shifted, &mut strategy)?;
+/// assert!((first.signed_distance - 1.0).abs() < 1e-15);
+/// assert!((second.signed_distance - 0.5).abs() < 1e-15);
+/// # Ok::<(), pqhull::HullError>(())
+/// ```
+impl<const D: usize, S: PointSource<D>> Strategy<D> for &mut ClosestToOrigin<D, S> {
+    type Output = DistanceResult<D>;
+
+    fn start(&mut self, hull: &Hull<D>) {
+        (**self).start(hull);
+    }
+
+    fn step(&mut self, hull: &mut Hull<D>) -> Step {
+        (**self).step(hull)
+    }
+
+    fn refines_all_normals(&self) -> bool {
+        (**self).refines_all_normals()
+    }
+
+    fn trace_context(&self) -> TraceContext<D> {
+        (**self).trace_context()
+    }
+
+    fn finish(self, hull: &Hull<D>) -> Self::Output {
+        self.result(hull)
+    }
+}
+
+impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
+    /// The answer of the run that just stopped.
+    fn result(&self, hull: &Hull<D>) -> DistanceResult<D> {
         let (signed_distance, closest_facet, nearest_point) =
             self.answer.expect("the strategy stops only with an answer");
         DistanceResult {
