@@ -311,3 +311,53 @@ fn sliver_facets_get_finite_normals() {
         assert!(f.normal().iter().all(|c| c.is_finite()) && f.offset().is_finite());
     }
 }
+
+/// A hull rebuilt in place (reused arena) equals a fresh one, also after a failed rebuild.
+#[test]
+fn rebuilt_hulls_equal_fresh_ones() {
+    use pqhull::rbox::{Family, generate};
+    use pqhull::{ClosestToOrigin, FarthestPoint, HullError};
+
+    fn facets<const D: usize>(hull: &Hull<D>) -> Vec<[usize; D]> {
+        let mut f: Vec<[usize; D]> = hull.facets().map(|(_, f)| f.vertices()).collect();
+        f.sort_unstable();
+        f
+    }
+
+    let mut reused: Option<Hull<6>> = None;
+    let mut strategy = ClosestToOrigin::new();
+    for (round, family) in [
+        Family::SphereSurface,
+        Family::UniformCube,
+        Family::CubeCornersDiamond,
+        Family::SphereSurface,
+    ]
+    .iter()
+    .enumerate()
+    {
+        let points = generate::<6>(family, 150 + 40 * round, round as u64);
+        let fresh = Hull::try_new(&points).unwrap();
+        let (_, expected) = Hull::try_with_strategy(&points, ClosestToOrigin::new()).unwrap();
+        match reused.as_mut() {
+            None => reused = Some(Hull::try_new(&points).unwrap()),
+            Some(hull) => {
+                hull.rebuild_with_strategy(&points, FarthestPoint::new())
+                    .unwrap();
+            }
+        }
+        let hull = reused.as_mut().unwrap();
+        hull.check().unwrap();
+        assert_eq!(facets(hull), facets(&fresh), "round {round}");
+        assert_eq!(hull.stats().facets_created, fresh.stats().facets_created);
+        assert!((hull.volume() - fresh.volume()).abs() <= 1e-12 * fresh.volume());
+        // The partial strategy, reused too.
+        let got = hull.rebuild_with_strategy(&points, &mut strategy).unwrap();
+        assert_eq!(got.signed_distance, expected.signed_distance, "round {round}");
+        hull.check().unwrap();
+        // A failed rebuild leaves an empty hull that can be rebuilt again.
+        let flat: Vec<[f64; 6]> = points.iter().map(|p| [p[0], p[1], 0.0, 0.0, 0.0, 0.0]).collect();
+        let error = hull.rebuild_with_strategy(&flat, FarthestPoint::new()).unwrap_err();
+        assert!(matches!(error, HullError::AffinelyDependent { .. }));
+        assert_eq!(hull.facet_count(), 0);
+    }
+}
