@@ -142,7 +142,7 @@ impl From<QualityError> for PlanError {
 
 /// One metric by one method, with its reusable buffers.
 enum Scorer<'a> {
-    Gws(Evaluator),
+    Gws(Box<Evaluator>),
     Ows(OwsEvaluator, &'a ObjectWrenchSpace),
 }
 
@@ -209,7 +209,7 @@ pub fn plan_with_progress(
             }),
             space.ok_or(PlanError::NoWrenchSpace)?,
         ),
-        (metric, m) => Scorer::Gws(Evaluator::new(
+        (metric, m) => Scorer::Gws(Box::new(Evaluator::new(
             match metric {
                 PlanMetric::QInf => Metric::QInf {
                     with_zero_wrench: false,
@@ -220,7 +220,7 @@ pub fn plan_with_progress(
                 PlanMethod::Partial => Method::Partial,
                 PlanMethod::Full => Method::Full,
             },
-        )),
+        ))),
     };
     let (reference, scale) = torque_frame(mesh, space);
     let sampler = SurfaceSampler::new(mesh);
