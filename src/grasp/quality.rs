@@ -191,14 +191,14 @@ pub struct Evaluator {
 
 /// The hull and partial strategy a Q1 evaluation reuses from one wrench set to the next.
 #[derive(Clone, Debug, Default)]
-struct HullBuffers {
+pub(crate) struct HullBuffers {
     hull: Option<Hull<6>>,
     nearest: ClosestToOrigin<6>,
 }
 
 impl HullBuffers {
     /// The hull of `w` grown by `strategy`, in the reused arena.
-    fn build<'h, S: crate::Strategy<6>>(
+    pub(crate) fn build<'h, S: crate::Strategy<6>>(
         hull: &'h mut Option<Hull<6>>,
         w: &[[f64; 6]],
         strategy: S,

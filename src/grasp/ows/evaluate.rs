@@ -2,7 +2,7 @@
 
 use super::ObjectWrenchSpace;
 use crate::grasp::Grasp;
-use crate::grasp::quality::{Method, QualityError, q1_of_wrenches};
+use crate::grasp::quality::{HullBuffers, Method, QualityError, q1_of_wrenches};
 use crate::hull::{Hull, HullError};
 use crate::predicates::Sign;
 use crate::strategy::{OwsInflation, Stats, inflation_factor};
@@ -76,6 +76,8 @@ pub fn relative_error(approximate: f64, exact: f64) -> f64 {
 pub struct OwsEvaluator {
     method: OwsMethod,
     wrenches: Vec<[f64; 6]>,
+    /// The grasp hull's arena, reused from grasp to grasp.
+    hull: Option<Hull<6>>,
 }
 
 impl OwsEvaluator {
@@ -84,6 +86,7 @@ impl OwsEvaluator {
         OwsEvaluator {
             method,
             wrenches: Vec::new(),
+            hull: None,
         }
     }
 
@@ -115,7 +118,7 @@ impl OwsEvaluator {
         }
         let started = Instant::now();
         grasp.snapped_wrenches_into(&mut self.wrenches);
-        let mut quality = ows_with(&self.wrenches, space, self.method)?;
+        let mut quality = ows_with(&self.wrenches, space, self.method, &mut self.hull)?;
         quality.stats.elapsed = started.elapsed();
         Ok(quality)
     }
@@ -131,7 +134,7 @@ pub fn ows_of_wrenches(
     method: OwsMethod,
 ) -> Result<OwsQuality, QualityError> {
     let started = Instant::now();
-    let mut quality = ows_with(wrenches, space, method)?;
+    let mut quality = ows_with(wrenches, space, method, &mut None)?;
     quality.stats.elapsed = started.elapsed();
     Ok(quality)
 }
@@ -149,6 +152,7 @@ fn ows_with(
     wrenches: &[[f64; 6]],
     space: &ObjectWrenchSpace,
     method: OwsMethod,
+    hull: &mut Option<Hull<6>>,
 ) -> Result<OwsQuality, QualityError> {
     if wrenches.iter().flatten().any(|x| !x.is_finite()) {
         return Err(QualityError::NonFiniteWrench);
@@ -157,15 +161,24 @@ fn ows_with(
         OwsMethod::Partial => Ok(partial(
             wrenches,
             OwsInflation::with_index(space.support_index()),
+            hull,
         )),
-        OwsMethod::PartialRays => Ok(partial(wrenches, OwsInflation::new(space.disturbances()))),
-        OwsMethod::BruteForce => Ok(brute_force(wrenches, space)),
+        OwsMethod::PartialRays => Ok(partial(
+            wrenches,
+            OwsInflation::new(space.disturbances()),
+            hull,
+        )),
+        OwsMethod::BruteForce => Ok(brute_force(wrenches, space, hull)),
         OwsMethod::Ellipsoid => ellipsoid(wrenches, space),
     }
 }
 
-fn partial(wrenches: &[[f64; 6]], strategy: OwsInflation<'_, 6>) -> OwsQuality {
-    match Hull::try_with_strategy(wrenches, strategy) {
+fn partial(
+    wrenches: &[[f64; 6]],
+    strategy: OwsInflation<'_, 6>,
+    hull: &mut Option<Hull<6>>,
+) -> OwsQuality {
+    match HullBuffers::build(hull, wrenches, strategy) {
         Ok((_, result)) => OwsQuality {
             force_closure: result.is_force_closure(),
             value: result.value,
@@ -180,9 +193,13 @@ fn partial(wrenches: &[[f64; 6]], strategy: OwsInflation<'_, 6>) -> OwsQuality {
     }
 }
 
-fn brute_force(wrenches: &[[f64; 6]], space: &ObjectWrenchSpace) -> OwsQuality {
-    let hull = match Hull::try_new(wrenches) {
-        Ok(hull) => hull,
+fn brute_force(
+    wrenches: &[[f64; 6]],
+    space: &ObjectWrenchSpace,
+    hull: &mut Option<Hull<6>>,
+) -> OwsQuality {
+    let hull = match HullBuffers::build(hull, wrenches, crate::FarthestPoint::new()) {
+        Ok((hull, ())) => hull,
         Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
             return not_force_closure(Stats::default());
         }
