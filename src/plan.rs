@@ -165,10 +165,12 @@ impl Scorer<'_> {
 /// The torque frame of grasps on `mesh`: the space's when there is one (it was built from the
 /// same mesh), else the mesh's own centre of mass and characteristic length.
 fn torque_frame(mesh: &Mesh, space: Option<&ObjectWrenchSpace>) -> ([f64; 3], f64) {
-    space.and_then(ObjectWrenchSpace::torque_frame).unwrap_or_else(|| {
-        let mass = mesh.mass_properties();
-        (mass.centre_of_mass, mass.characteristic_length)
-    })
+    space
+        .and_then(ObjectWrenchSpace::torque_frame)
+        .unwrap_or_else(|| {
+            let mass = mesh.mass_properties();
+            (mass.centre_of_mass, mass.characteristic_length)
+        })
 }
 
 /// Samples `config.samples` grasps on `mesh` and keeps the best by `config.metric`, computed by

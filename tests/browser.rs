@@ -421,7 +421,15 @@ fn planned_grasps_page_loads_draws_both_panels_and_rotates() {
     // ellipsoid (run from the crate root, as the CLI documents).
     let o = Command::new(env!("CARGO_BIN_EXE_pqh"))
         .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .args(["plan", "--samples", "150", "--full-samples", "0", "--quiet", "--output"])
+        .args([
+            "plan",
+            "--samples",
+            "150",
+            "--full-samples",
+            "0",
+            "--quiet",
+            "--output",
+        ])
         .arg(&page)
         .output()
         .expect("run pqh");
@@ -436,7 +444,11 @@ fn planned_grasps_page_loads_draws_both_panels_and_rotates() {
     let right = [left + w + 14, top, w, h]; // the panels are laid out with a 14 px gap
     assert_drawn(&shot.region(state.canvas), "planned grasps, left panel");
     assert_drawn(&shot.region(right), "planned grasps, right panel");
-    let turned = screenshot(&exe, &url(&page, "yaw=2.2&pitch=-0.4"), &scratch("plan-turned.png"));
+    let turned = screenshot(
+        &exe,
+        &url(&page, "yaw=2.2&pitch=-0.4"),
+        &scratch("plan-turned.png"),
+    );
     assert_differ(
         &shot.region(state.canvas),
         &turned.region(state.canvas),

@@ -350,9 +350,9 @@ fn help_explains_the_tool_and_exit_status() {
 }
 
 #[test]
-fn demo_full_and_partial_hull_agree() {
+fn compare_full_and_partial_hull_agree() {
     let o = pqh(
-        &["demo", "--points", "200", "--dimension", "4", "--json"],
+        &["compare", "--points", "200", "--dimension", "4", "--json"],
         None,
     );
     let v = json(&o);
@@ -452,4 +452,123 @@ fn bench_gws_json_reports_ratios_and_agreement() {
         assert_eq!(methods[1]["method"], "full");
         assert!(methods[1]["facets_ratio_vs_partial"].as_f64().unwrap() >= 1.0);
     }
+}
+
+#[test]
+fn bench_gws_json_reports_qinf_and_batch_throughput() {
+    let out = pqh(
+        &[
+            "bench",
+            "gws",
+            "--grasps",
+            "4",
+            "--full-grasps",
+            "1",
+            "--edges",
+            "4",
+            "--methods",
+            "full,partial",
+            "--threads",
+            "1,2",
+            "--batch-rounds",
+            "1",
+            "--json",
+        ],
+        None,
+    );
+    let report = json(&out);
+    assert_eq!(usizes(&report["threads"]), [1, 2]);
+    let results = report["results"].as_array().unwrap();
+    assert_eq!(results.len(), 1);
+    let r = &results[0];
+    assert_eq!(r["disagreements"], 0);
+    // Partial runs first whatever the order of --methods.
+    let methods = r["methods"].as_array().unwrap();
+    assert_eq!(methods[0]["method"], "partial");
+    assert_eq!(methods[1]["method"], "full");
+    // Q∞ (k = 4 ≤ 32): both variants by default, zero-wrench first, on every grasp.
+    let qinf = r["qinf"].as_array().unwrap();
+    let variants: Vec<&str> = qinf
+        .iter()
+        .map(|q| q["variant"].as_str().unwrap())
+        .collect();
+    assert_eq!(variants, ["zero-wrench", "plain"]);
+    for q in qinf {
+        assert_eq!(q["method"], "partial");
+        assert_eq!(q["grasps"], 4);
+        assert_eq!(q["errors"], 0);
+        let (median, max) = (
+            q["median_us"].as_f64().unwrap(),
+            q["max_us"].as_f64().unwrap(),
+        );
+        assert!(0.0 < median && median <= max);
+    }
+    // With the zero wrench, Q∞ is force closure exactly when Q1 is.
+    assert_eq!(qinf[0]["force_closure"], methods[0]["force_closure"]);
+    // Batch: one entry per pool size, results identical to the sequential ones.
+    let batch = r["batch"].as_array().unwrap();
+    assert_eq!(batch.len(), 2);
+    for (b, threads) in batch.iter().zip([1, 2]) {
+        assert_eq!(b["threads"], threads);
+        assert_eq!(b["grasps"], 4);
+        assert_eq!(b["mismatches"], 0);
+        assert!(b["grasps_per_s"].as_f64().unwrap() > 0.0);
+        assert!(b["speedup_vs_1_thread"].as_f64().unwrap() > 0.0);
+    }
+    assert_eq!(batch[0]["speedup_vs_1_thread"], 1.0);
+}
+
+#[test]
+fn bench_gws_tables_and_switches() {
+    let args = ["bench", "gws", "--grasps", "2", "--full-grasps", "0"];
+    // --qinf-max-edges 0 and --batch-rounds 0 leave the Q1 table alone.
+    let out = pqh(
+        &[
+            &args[..],
+            &[
+                "--edges",
+                "4",
+                "--qinf-max-edges",
+                "0",
+                "--batch-rounds",
+                "0",
+            ],
+        ]
+        .concat(),
+        None,
+    );
+    assert!(out.status.success(), "{}", stderr(&out));
+    let text = stdout(&out);
+    assert!(
+        text.contains("GWS Q1") && text.contains("partial"),
+        "{text}"
+    );
+    assert!(!text.contains("Q-inf") && !text.contains("Batch"), "{text}");
+    // Only k ≤ --qinf-max-edges gets Q∞ rows; --qinf picks the variants.
+    let out = pqh(
+        &[
+            &args[..],
+            &[
+                "--edges",
+                "4,6",
+                "--qinf-max-edges",
+                "4",
+                "--qinf",
+                "zero-wrench",
+            ],
+            &["--threads", "1", "--json"],
+        ]
+        .concat(),
+        None,
+    );
+    let report = json(&out);
+    let results = report["results"].as_array().unwrap();
+    assert_eq!(results[0]["qinf"].as_array().unwrap().len(), 1);
+    assert_eq!(results[0]["qinf"][0]["variant"], "zero-wrench");
+    assert!(results[1]["qinf"].as_array().unwrap().is_empty());
+    assert_eq!(results[0]["methods"].as_array().unwrap().len(), 1); // --full-grasps 0
+    assert_eq!(results[1]["batch"].as_array().unwrap().len(), 1);
+    // A pool of 0 threads is a usage error.
+    let out = pqh(&[&args[..], &["--threads", "1,0"]].concat(), None);
+    assert!(one_line_error(&out, 2).contains("--threads"));
 }

@@ -73,7 +73,11 @@ fn task_wrench_space_value_matches_the_hand_derivation() {
             ],
             &input,
         );
-        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let lines = lines(&out);
         assert_eq!(lines.len(), 2);
         assert_eq!(lines[0]["index"], 0);
@@ -114,7 +118,13 @@ fn task_wrench_space_value_matches_the_hand_derivation() {
     }
     let task = file("task-spanning.csv", &spanning);
     let out = pqh(
-        &["grasp", "--metric", "ows", "--disturbances", task.to_str().unwrap()],
+        &[
+            "grasp",
+            "--metric",
+            "ows",
+            "--disturbances",
+            task.to_str().unwrap(),
+        ],
         FOUR_FACES,
     );
     let exact = lines(&out)[0]["quality"].as_f64().unwrap();
@@ -131,7 +141,11 @@ fn task_wrench_space_value_matches_the_hand_derivation() {
         ],
         FOUR_FACES,
     );
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let q = lines(&out)[0]["quality"].as_f64().unwrap();
     assert!(q > 0.0 && q <= 0.25 * (1.0 + 1e-6), "{q}");
 }
@@ -143,12 +157,20 @@ fn mesh_frame_is_applied_and_a_conflicting_frame_is_an_error_line() {
         "\"cone_edges\":8}",
         "\"cone_edges\":8,\"torque_reference\":[0,0,0]}",
     );
-    let input = format!("{}\n{}\n", FOUR_FACES.replace('\n', ""), with_frame.replace('\n', ""));
+    let input = format!(
+        "{}\n{}\n",
+        FOUR_FACES.replace('\n', ""),
+        with_frame.replace('\n', "")
+    );
     let out = pqh(
         &["grasp", "--metric", "ows", "--mesh", cube.to_str().unwrap()],
         &input,
     );
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let lines = lines(&out);
     assert_eq!(lines.len(), 2);
     assert_eq!(lines[0]["force_closure"], true);
@@ -193,14 +215,26 @@ fn usage_and_input_errors_are_reported() {
     }
     let five = file("five.csv", "1 2 3 4 5\n");
     let out = pqh(
-        &["grasp", "--metric", "ows", "--disturbances", five.to_str().unwrap()],
+        &[
+            "grasp",
+            "--metric",
+            "ows",
+            "--disturbances",
+            five.to_str().unwrap(),
+        ],
         FOUR_FACES,
     );
     assert_eq!(out.status.code(), Some(2));
     let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(stderr.contains("five.csv") && stderr.contains("6 coordinates"), "{stderr}");
+    assert!(
+        stderr.contains("five.csv") && stderr.contains("6 coordinates"),
+        "{stderr}"
+    );
 
-    let quad = file("quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+    let quad = file(
+        "quad.obj",
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n",
+    );
     let out = pqh(
         &["grasp", "--metric", "ows", "--mesh", quad.to_str().unwrap()],
         FOUR_FACES,
@@ -229,7 +263,11 @@ fn bench_ows_reports_every_method_and_agreement() {
         ],
         "",
     );
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let report: Value = serde_json::from_slice(&out.stdout).expect("one JSON document");
     assert_eq!(report["disturbances"], 8 * 4);
     assert_eq!(report["compared_with_brute"], 10);
@@ -244,7 +282,12 @@ fn bench_ows_reports_every_method_and_agreement() {
         assert!(methods.contains(&m), "{methods:?}");
     }
     let closure = report["force_closure"].as_u64().unwrap();
-    assert_eq!(report["ellipsoid_relative_error"]["count"].as_u64().unwrap(), closure);
+    assert_eq!(
+        report["ellipsoid_relative_error"]["count"]
+            .as_u64()
+            .unwrap(),
+        closure
+    );
     if closure > 0 {
         // The ellipsoid's value never exceeds the exact one.
         assert!(report["ellipsoid_relative_error"]["max"].as_f64().unwrap() <= 1e-9);

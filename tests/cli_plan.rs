@@ -43,7 +43,11 @@ fn plan_partial_and_full_pick_the_same_best_grasp() {
             metric,
             "--json",
         ]);
-        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
         let report: Value = serde_json::from_slice(&out.stdout).expect("JSON");
         assert_eq!(report["same_best"], true, "{metric}");
         let (partial, full) = (&report["partial"], &report["full"]);
@@ -78,10 +82,17 @@ fn plan_writes_a_self_contained_view() {
         "--output",
         page.to_str().unwrap(),
     ]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let html = std::fs::read_to_string(&page).expect("the view was written");
     assert!(html.contains("best by Q1") && html.contains("best by OWS"));
-    assert!(!html.contains("http://") && !html.contains("https://"), "no network");
+    assert!(
+        !html.contains("http://") && !html.contains("https://"),
+        "no network"
+    );
 }
 
 #[test]
@@ -111,7 +122,11 @@ fn demo_agrees_and_writes_its_view() {
         page.to_str().unwrap(),
         "--json",
     ]);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let report: Value = serde_json::from_slice(&out.stdout).expect("JSON");
     let metrics = report["metrics"].as_array().unwrap();
     assert_eq!(metrics.len(), 2);
@@ -119,5 +134,9 @@ fn demo_agrees_and_writes_its_view() {
         assert_eq!(m["same_best"], true, "{m}");
         assert!(m["quality_speedup"].as_f64().unwrap() > 0.0);
     }
-    assert!(std::fs::read_to_string(&page).unwrap().contains("best by OWS"));
+    assert!(
+        std::fs::read_to_string(&page)
+            .unwrap()
+            .contains("best by OWS")
+    );
 }

@@ -352,11 +352,19 @@ fn rebuilt_hulls_equal_fresh_ones() {
         assert!((hull.volume() - fresh.volume()).abs() <= 1e-12 * fresh.volume());
         // The partial strategy, reused too.
         let got = hull.rebuild_with_strategy(&points, &mut strategy).unwrap();
-        assert_eq!(got.signed_distance, expected.signed_distance, "round {round}");
+        assert_eq!(
+            got.signed_distance, expected.signed_distance,
+            "round {round}"
+        );
         hull.check().unwrap();
         // A failed rebuild leaves an empty hull that can be rebuilt again.
-        let flat: Vec<[f64; 6]> = points.iter().map(|p| [p[0], p[1], 0.0, 0.0, 0.0, 0.0]).collect();
-        let error = hull.rebuild_with_strategy(&flat, FarthestPoint::new()).unwrap_err();
+        let flat: Vec<[f64; 6]> = points
+            .iter()
+            .map(|p| [p[0], p[1], 0.0, 0.0, 0.0, 0.0])
+            .collect();
+        let error = hull
+            .rebuild_with_strategy(&flat, FarthestPoint::new())
+            .unwrap_err();
         assert!(matches!(error, HullError::AffinelyDependent { .. }));
         assert_eq!(hull.facet_count(), 0);
     }

@@ -476,7 +476,10 @@ fn closed_real_meshes_have_a_solid_centre() {
             .map(|&x| dist(x, p.centre_of_mass))
             .fold(0.0, f64::max);
         // ρ is computed in the mesh's local frame: equal up to the rounding of one distance.
-        assert!((rho - far).abs() <= 4.0 * f64::EPSILON * far, "{rho} vs {far}");
+        assert!(
+            (rho - far).abs() <= 4.0 * f64::EPSILON * far,
+            "{rho} vs {far}"
+        );
     }
 }
 

@@ -63,11 +63,18 @@ fn cube_grasped_on_four_faces_matches_the_hand_derivation() {
         let grasp = four_face_grasp(mu, k);
         // Exactly these wrenches (not snapped): agreement to rounding.
         let wrenches = grasp.wrenches();
-        for method in [OwsMethod::Partial, OwsMethod::PartialRays, OwsMethod::BruteForce] {
+        for method in [
+            OwsMethod::Partial,
+            OwsMethod::PartialRays,
+            OwsMethod::BruteForce,
+        ] {
             let q = ows_of_wrenches(&wrenches, &space, method).unwrap();
             assert!(q.force_closure, "k = {k}, {method:?}");
             let value = q.value.unwrap();
-            assert!((value - mu / 2.0).abs() < 1e-12, "k = {k}, {method:?}: {value}");
+            assert!(
+                (value - mu / 2.0).abs() < 1e-12,
+                "k = {k}, {method:?}: {value}"
+            );
             assert_eq!(q.deciding_disturbance, Some(2), "k = {k}, {method:?}");
         }
         // Through the evaluator (snapped wrenches: relative change below 6e−8).
@@ -80,7 +87,10 @@ fn cube_grasped_on_four_faces_matches_the_hand_derivation() {
             let single =
                 ObjectWrenchSpace::from_disturbances(vec![space.disturbances()[d]]).unwrap();
             let q = ows_of_wrenches(&wrenches, &single, OwsMethod::Partial).unwrap();
-            assert!((q.value.unwrap() - expected).abs() < 1e-12, "d = {d}, k = {k}");
+            assert!(
+                (q.value.unwrap() - expected).abs() < 1e-12,
+                "d = {d}, k = {k}"
+            );
         }
     }
 }
@@ -117,7 +127,11 @@ fn gauges_of_cube_and_cross_polytope() {
             .iter()
             .map(|d| d.iter().map(|x| x.abs()).sum::<f64>())
             .fold(0.0, f64::max);
-        for method in [OwsMethod::Partial, OwsMethod::PartialRays, OwsMethod::BruteForce] {
+        for method in [
+            OwsMethod::Partial,
+            OwsMethod::PartialRays,
+            OwsMethod::BruteForce,
+        ] {
             let q = ows_of_wrenches(&cube, &space, method).unwrap();
             let expected = a / max_inf;
             assert!(
@@ -136,7 +150,10 @@ fn gauges_of_cube_and_cross_polytope() {
         if count >= 6
             && let Ok(q) = approx
         {
-            assert!(q.value.unwrap() <= a / max_inf * (1.0 + 1e-9), "trial {trial}");
+            assert!(
+                q.value.unwrap() <= a / max_inf * (1.0 + 1e-9),
+                "trial {trial}"
+            );
         }
     }
 }
@@ -145,7 +162,8 @@ fn gauges_of_cube_and_cross_polytope() {
 /// force-closure verdict, and the ellipsoid never above the exact value. Returns how many grasps
 /// were force closure.
 fn partial_equals_brute_force(mesh: &Mesh, grasps: usize, seed: u64) -> usize {
-    let space = ObjectWrenchSpace::from_mesh(mesh, FrictionModel::try_new(0.4, 4).unwrap()).unwrap();
+    let space =
+        ObjectWrenchSpace::from_mesh(mesh, FrictionModel::try_new(0.4, 4).unwrap()).unwrap();
     let mut rng = Rng::new(seed);
     let mut partial = OwsEvaluator::new(OwsMethod::Partial);
     let mut brute = OwsEvaluator::new(OwsMethod::BruteForce);
@@ -172,7 +190,10 @@ fn partial_equals_brute_force(mesh: &Mesh, grasps: usize, seed: u64) -> usize {
         let c = rays.evaluate(&grasp, &space).unwrap();
         assert_eq!(c.force_closure, a.force_closure, "grasp {g}");
         if let (Some(x), Some(z)) = (a.value, c.value) {
-            assert!((x - z).abs() <= 1e-9 * z.max(1e-4), "grasp {g}: {x} vs rays {z}");
+            assert!(
+                (x - z).abs() <= 1e-9 * z.max(1e-4),
+                "grasp {g}: {x} vs rays {z}"
+            );
         }
         match (a.value, b.value) {
             (Some(x), Some(y)) => {
@@ -205,14 +226,20 @@ fn partial_equals_brute_force(mesh: &Mesh, grasps: usize, seed: u64) -> usize {
 fn partial_equals_brute_force_on_a_generated_sphere() {
     let sphere = Mesh::uv_sphere(0.3, 8, 12).unwrap();
     let closure = partial_equals_brute_force(&sphere, 2000, 1);
-    assert!(closure > 200 && closure < 1900, "{closure} force-closure grasps of 2000");
+    assert!(
+        closure > 200 && closure < 1900,
+        "{closure} force-closure grasps of 2000"
+    );
 }
 
 #[test]
 fn partial_equals_brute_force_on_a_generated_box() {
     let bar = Mesh::cuboid([0.5, 0.2, 0.1]).unwrap();
     let closure = partial_equals_brute_force(&bar, 1000, 2);
-    assert!(closure > 100 && closure < 900, "{closure} force-closure grasps of 1000");
+    assert!(
+        closure > 100 && closure < 900,
+        "{closure} force-closure grasps of 1000"
+    );
 }
 
 #[test]
@@ -220,7 +247,10 @@ fn partial_equals_brute_force_on_real_meshes() {
     for (name, grasps) in [("spot.obj", 400), ("teapot.obj", 400)] {
         if let Some(mesh) = real_mesh(name) {
             let closure = partial_equals_brute_force(&mesh, grasps, 3);
-            assert!(closure > grasps / 10, "{name}: only {closure} of {grasps} force closure");
+            assert!(
+                closure > grasps / 10,
+                "{name}: only {closure} of {grasps} force closure"
+            );
         }
     }
 }
@@ -236,7 +266,11 @@ fn a_flat_sheet_is_never_force_closure() {
     let friction = FrictionModel::try_new(0.5, 4).unwrap();
     let space = ObjectWrenchSpace::from_mesh(&mesh, friction).unwrap();
     let mut rng = Rng::new(9);
-    for method in [OwsMethod::Partial, OwsMethod::PartialRays, OwsMethod::BruteForce] {
+    for method in [
+        OwsMethod::Partial,
+        OwsMethod::PartialRays,
+        OwsMethod::BruteForce,
+    ] {
         let mut evaluator = OwsEvaluator::new(method);
         for _ in 0..50 {
             let contacts = mesh
@@ -288,7 +322,11 @@ fn not_force_closure_has_no_value() {
     )
     .unwrap();
     let space = ObjectWrenchSpace::from_disturbances(vec![[1.0, 0.0, 0.0, 0.0, 0.0, 0.0]]).unwrap();
-    for method in [OwsMethod::Partial, OwsMethod::PartialRays, OwsMethod::BruteForce] {
+    for method in [
+        OwsMethod::Partial,
+        OwsMethod::PartialRays,
+        OwsMethod::BruteForce,
+    ] {
         let q = OwsEvaluator::new(method).evaluate(&pinch, &space).unwrap();
         assert!(!q.force_closure);
         assert_eq!(q.value, None);
@@ -298,7 +336,8 @@ fn not_force_closure_has_no_value() {
 #[test]
 fn space_round_trips_through_json_and_rejects_bad_input() {
     let bar = Mesh::cuboid([0.5, 0.2, 0.1]).unwrap();
-    let space = ObjectWrenchSpace::from_mesh(&bar, FrictionModel::try_new(0.5, 6).unwrap()).unwrap();
+    let space =
+        ObjectWrenchSpace::from_mesh(&bar, FrictionModel::try_new(0.5, 6).unwrap()).unwrap();
     let back = ObjectWrenchSpace::from_json(&space.to_json()).unwrap();
     assert_eq!(back.disturbances(), space.disturbances());
     assert_eq!(back.origin(), space.origin());
@@ -336,7 +375,12 @@ fn hull_reduction_keeps_the_value() {
     let mut evaluator = OwsEvaluator::new(OwsMethod::Partial);
     for _ in 0..50 {
         let grasp = space
-            .frame(&Grasp::random_on_box(&mut rng, [0.5, 0.2, 0.1], 4, friction))
+            .frame(&Grasp::random_on_box(
+                &mut rng,
+                [0.5, 0.2, 0.1],
+                4,
+                friction,
+            ))
             .unwrap();
         let grasp = Grasp::try_new(grasp.contacts().to_vec(), friction).unwrap();
         let a = evaluator.evaluate(&grasp, &full).unwrap();

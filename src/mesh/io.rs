@@ -279,7 +279,6 @@ impl<R: BufRead> BufRead for LineCounter<R> {
 mod tests {
     use super::*;
 
-
     #[test]
     fn the_line_counter_counts_consumed_lines() {
         let mut r = LineCounter::new(&b"a\nbb\nccc"[..]);

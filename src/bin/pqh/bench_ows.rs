@@ -216,7 +216,11 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
     println!(
         "OWS on {mesh_name}: {} vertices, {} disturbances (prepared in {prepare_ms:.0} ms); {} \
          grasps, {} contacts × {} edges, μ = {}",
-        report["vertices"], report["disturbances"], args.grasps, args.contacts, args.edges,
+        report["vertices"],
+        report["disturbances"],
+        args.grasps,
+        args.contacts,
+        args.edges,
         args.friction
     );
     println!(
@@ -228,7 +232,10 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
         "(the ellipsoid of the disturbances took {ellipsoid_ms:.1} ms, once per object; \
          '-fc' rows: force-closure grasps only)"
     );
-    println!("{:<12} {:>7} {:>12} {:>12}", "method", "grasps", "median µs", "mean µs");
+    println!(
+        "{:<12} {:>7} {:>12} {:>12}",
+        "method", "grasps", "median µs", "mean µs"
+    );
     for row in &rows {
         println!(
             "{:<12} {:>7} {:>12.1} {:>12.1}",
@@ -247,7 +254,11 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
         ratio("partial_over_q1")
     );
     let e = &report["ellipsoid_relative_error"];
-    let q = |key: &str| e[key].as_f64().map_or("-".to_string(), |x| format!("{x:+.4}"));
+    let q = |key: &str| {
+        e[key]
+            .as_f64()
+            .map_or("-".to_string(), |x| format!("{x:+.4}"))
+    };
     println!(
         "ellipsoid relative error (approx − exact) / exact over {} force-closure grasps: min {} \
          q25 {} median {} q75 {} max {}",

@@ -162,7 +162,13 @@ pub fn run(args: &DemoArgs) -> Result<(), CliError> {
         );
         println!(
             "{:<6} {:>14} {:>14} {:>10} {:>16} {:>16} {:>11}",
-            "metric", "partial ms", "full ms", "speed-up", "facets partial", "facets full", "same best"
+            "metric",
+            "partial ms",
+            "full ms",
+            "speed-up",
+            "facets partial",
+            "facets full",
+            "same best"
         );
         for r in &runs {
             println!(

@@ -310,9 +310,16 @@ pub fn describe_space(space: &ObjectWrenchSpace) -> String {
     }
 }
 
-fn run_ows(args: &GraspArgs, entries: Vec<Result<Grasp, String>>, values: &[Result<Value, String>]) -> Result<Vec<Value>, CliError> {
+fn run_ows(
+    args: &GraspArgs,
+    entries: Vec<Result<Grasp, String>>,
+    values: &[Result<Value, String>],
+) -> Result<Vec<Value>, CliError> {
     let method = ows_method(args.method)?;
-    let first = entries.iter().find_map(|g| g.as_ref().ok()).map(Grasp::friction);
+    let first = entries
+        .iter()
+        .find_map(|g| g.as_ref().ok())
+        .map(Grasp::friction);
     let friction = || {
         let default = first.ok_or_else(|| {
             CliError::Input("no valid grasp to take the disturbance cones' friction from".into())
@@ -341,9 +348,11 @@ fn run_ows(args: &GraspArgs, entries: Vec<Result<Grasp, String>>, values: &[Resu
                 v.get("torque_reference").is_some() || v.get("torque_scale").is_some()
             });
             if space.torque_frame().is_some() && sets_frame {
-                return Err("with --mesh the torque frame is the mesh's (centre of mass, \
+                return Err(
+                    "with --mesh the torque frame is the mesh's (centre of mass, \
                             characteristic length): remove torque_reference/torque_scale"
-                    .to_string());
+                        .to_string(),
+                );
             }
             space.frame(&g).map_err(|e| e.to_string())
         })
@@ -377,7 +386,8 @@ fn run_ows(args: &GraspArgs, entries: Vec<Result<Grasp, String>>, values: &[Resu
 }
 
 pub fn run(args: &GraspArgs) -> Result<(), CliError> {
-    if !matches!(args.metric, MetricArg::Ows) && (args.mesh.is_some() || args.disturbances.is_some())
+    if !matches!(args.metric, MetricArg::Ows)
+        && (args.mesh.is_some() || args.disturbances.is_some())
     {
         return Err(CliError::Usage(
             "--mesh and --disturbances are for --metric ows".into(),

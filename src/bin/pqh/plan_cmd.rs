@@ -114,8 +114,10 @@ pub fn run_plan(
     label: &str,
 ) -> Result<PlanReport, CliError> {
     let bar = progress::bar(config.samples, label);
-    let report = plan_with_progress(mesh, space, config, method, |done| bar.set_position(done as u64))
-        .map_err(|e| CliError::Geometry(e.to_string()));
+    let report = plan_with_progress(mesh, space, config, method, |done| {
+        bar.set_position(done as u64)
+    })
+    .map_err(|e| CliError::Geometry(e.to_string()));
     bar.finish_and_clear();
     report
 }
@@ -163,7 +165,13 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
         metric: metric(args.metric),
         seed: args.seed,
     };
-    let partial = run_plan(&mesh, space.as_ref(), &config, PlanMethod::Partial, "partial")?;
+    let partial = run_plan(
+        &mesh,
+        space.as_ref(),
+        &config,
+        PlanMethod::Partial,
+        "partial",
+    )?;
     let full_samples = args.full_samples.unwrap_or(args.samples).min(args.samples);
     let comparison = if full_samples > 0 {
         let short = PlanConfig {
@@ -175,7 +183,13 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
         let partial_short = if full_samples == args.samples {
             partial.clone()
         } else {
-            run_plan(&mesh, space.as_ref(), &short, PlanMethod::Partial, "partial")?
+            run_plan(
+                &mesh,
+                space.as_ref(),
+                &short,
+                PlanMethod::Partial,
+                "partial",
+            )?
         };
         Some((full, partial_short))
     } else {
@@ -238,9 +252,10 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
                 r.force_closure,
                 r.quality_time.as_secs_f64(),
                 r.other_time.as_secs_f64(),
-                r.best
-                    .as_ref()
-                    .map_or("none".to_string(), |b| format!("{:.6} (#{})", b.value, b.sample))
+                r.best.as_ref().map_or("none".to_string(), |b| format!(
+                    "{:.6} (#{})",
+                    b.value, b.sample
+                ))
             );
         }
         if let (Some(s), Some(same)) = (speedup, same_best) {

@@ -286,7 +286,9 @@ impl ObjectWrenchSpace {
     /// [`EllipsoidError`] when the disturbances span fewer than six dimensions.
     pub fn ellipsoid(&self) -> Result<&CentredEllipsoid<6>, EllipsoidError> {
         self.ellipsoid
-            .get_or_init(|| CentredEllipsoid::try_enclosing(&self.disturbances, ELLIPSOID_TOLERANCE))
+            .get_or_init(|| {
+                CentredEllipsoid::try_enclosing(&self.disturbances, ELLIPSOID_TOLERANCE)
+            })
             .as_ref()
             .map_err(Clone::clone)
     }
