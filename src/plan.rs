@@ -143,7 +143,7 @@ impl From<QualityError> for PlanError {
 /// One metric by one method, with its reusable buffers.
 enum Scorer<'a> {
     Gws(Box<Evaluator>),
-    Ows(OwsEvaluator, &'a ObjectWrenchSpace),
+    Ows(Box<OwsEvaluator>, &'a ObjectWrenchSpace),
 }
 
 impl Scorer<'_> {
@@ -205,10 +205,10 @@ pub fn plan_with_progress(
     let started = Instant::now();
     let mut scorer = match (config.metric, method) {
         (PlanMetric::Ows, m) => Scorer::Ows(
-            OwsEvaluator::new(match m {
+            Box::new(OwsEvaluator::new(match m {
                 PlanMethod::Partial => OwsMethod::Partial,
                 PlanMethod::Full => OwsMethod::BruteForce,
-            }),
+            })),
             space.ok_or(PlanError::NoWrenchSpace)?,
         ),
         (metric, m) => Scorer::Gws(Box::new(Evaluator::new(
