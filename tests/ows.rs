@@ -244,7 +244,7 @@ fn partial_equals_brute_force_on_a_generated_box() {
 
 #[test]
 fn partial_equals_brute_force_on_real_meshes() {
-    for (name, grasps) in [("spot.obj", 400), ("teapot.obj", 400)] {
+    for (name, grasps) in [("spot.obj", 1000), ("teapot.obj", 1000)] {
         if let Some(mesh) = real_mesh(name) {
             let closure = partial_equals_brute_force(&mesh, grasps, 3);
             assert!(
