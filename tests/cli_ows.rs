@@ -293,3 +293,30 @@ fn bench_ows_reports_every_method_and_agreement() {
         assert!(report["ellipsoid_relative_error"]["max"].as_f64().unwrap() <= 1e-9);
     }
 }
+
+#[test]
+fn options_that_would_be_ignored_are_errors() {
+    for (args, message) in [
+        (
+            vec!["grasp", "--zero-wrench"],
+            "--zero-wrench is for --metric qinf",
+        ),
+        (
+            vec![
+                "grasp",
+                "--metric",
+                "ows",
+                "--disturbances",
+                "x.csv",
+                "--ows-edges",
+                "4",
+            ],
+            "--ows-edges are for --metric ows --mesh",
+        ),
+    ] {
+        let out = pqh(&args, FOUR_FACES);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains(message), "{args:?}: {stderr}");
+    }
+}

@@ -393,6 +393,15 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
             "--mesh and --disturbances are for --metric ows".into(),
         ));
     }
+    // Options that would be silently ignored are errors instead.
+    if args.zero_wrench && !matches!(args.metric, MetricArg::Qinf) {
+        return Err(CliError::Usage("--zero-wrench is for --metric qinf".into()));
+    }
+    if (args.ows_friction.is_some() || args.ows_edges.is_some()) && args.mesh.is_none() {
+        return Err(CliError::Usage(
+            "--ows-friction and --ows-edges are for --metric ows --mesh".into(),
+        ));
+    }
     let text = read_input(&args.file)?;
     let values = split(&text);
     let entries: Vec<Result<Grasp, String>> = values

@@ -46,7 +46,8 @@ pub struct PlanArgs {
     /// Grasps sampled
     #[arg(long, default_value_t = 200)]
     pub samples: usize,
-    /// Samples for the full-hull run (the first ones; 0: skip it) [default: --samples]
+    /// Samples for the full-hull run (the first ones; 0: skip it) [default: --samples; for qinf,
+    /// 2: the full method materialises all k^m Minkowski points, tens of seconds per grasp at k = 8]
     #[arg(long)]
     pub full_samples: Option<usize>,
     /// Metric to maximise
@@ -172,7 +173,11 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
         PlanMethod::Partial,
         "partial",
     )?;
-    let full_samples = args.full_samples.unwrap_or(args.samples).min(args.samples);
+    let default_full = match args.metric {
+        PlanMetricArg::Qinf => 2,
+        _ => args.samples,
+    };
+    let full_samples = args.full_samples.unwrap_or(default_full).min(args.samples);
     let comparison = if full_samples > 0 {
         let short = PlanConfig {
             samples: full_samples,
