@@ -168,10 +168,18 @@ fn name(method: Method) -> &'static str {
 /// Evaluates `set` one grasp after another with one evaluator.
 fn evaluate_all(set: &[Grasp], metric: Metric, method: Method) -> Result<Vec<Quality>, CliError> {
     let mut evaluator = Evaluator::new(metric, method);
-    set.iter()
-        .map(|g| evaluator.evaluate(g))
+    let bar = crate::progress::bar(set.len(), name(method));
+    let results = set
+        .iter()
+        .map(|g| {
+            let q = evaluator.evaluate(g);
+            bar.inc(1);
+            q
+        })
         .collect::<Result<_, _>>()
-        .map_err(|e| CliError::Geometry(e.to_string()))
+        .map_err(|e| CliError::Geometry(e.to_string()));
+    bar.finish_and_clear();
+    results
 }
 
 /// The pool sizes: `--threads`, or 1 and the available parallelism.

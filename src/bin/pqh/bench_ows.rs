@@ -128,10 +128,18 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
 
     let evaluate = |method: OwsMethod, set: &[Grasp]| -> Result<Vec<OwsQuality>, CliError> {
         let mut evaluator = OwsEvaluator::new(method);
-        set.iter()
-            .map(|g| evaluator.evaluate(g, &space))
+        let bar = crate::progress::bar(set.len(), &format!("{method:?}"));
+        let results = set
+            .iter()
+            .map(|g| {
+                let q = evaluator.evaluate(g, &space);
+                bar.inc(1);
+                q
+            })
             .collect::<Result<_, _>>()
-            .map_err(|e| CliError::Geometry(e.to_string()))
+            .map_err(|e| CliError::Geometry(e.to_string()));
+        bar.finish_and_clear();
+        results
     };
     // Partial first, so the others cannot warm caches for it.
     let partial = evaluate(OwsMethod::Partial, &grasps)?;
