@@ -211,6 +211,7 @@ fn partial_equals_full_on_ten_thousand_random_grasps() {
 fn q_inf_implicit_equals_materialised() {
     let mut rng = Rng::new(77);
     let mut force_closure = 0;
+    let mut by_gjk = 0;
     for case in 0..16 {
         let (m, k) = [(3, 4), (3, 6), (4, 4), (3, 8)][case % 4];
         let grasp = random_grasp(&mut rng, m, k);
@@ -228,9 +229,12 @@ fn q_inf_implicit_equals_materialised() {
                 &format!("case {case} (m = {m}, k = {k}, zero {with_zero_wrench})"),
             );
             force_closure += usize::from(a.force_closure);
+            // Separated by the support-function GJK, no hull built.
+            by_gjk += usize::from(!a.force_closure && a.stats.facets_created == 0);
         }
     }
     assert!(force_closure > 0);
+    assert!(by_gjk > 0, "the GJK path was not exercised");
 }
 
 #[test]
@@ -243,4 +247,42 @@ fn batch_keeps_input_order() {
         let expected = one.evaluate(grasp).unwrap();
         assert_eq!(result.as_ref().unwrap().value, expected.value);
     }
+}
+
+/// A flat Minkowski sum too large to materialise (an antipodal pinch, rank 5, with 1100² > 2²⁰
+/// points): not force closure, with the distance found by the support-function GJK instead of an
+/// error.
+#[test]
+fn q_inf_of_a_flat_sum_too_large_to_materialise() {
+    let pinch = Grasp::try_new(
+        vec![
+            Contact::try_new([-1.0, 0.0, 0.0], [1.0, 0.0, 0.0], None).unwrap(),
+            Contact::try_new([1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], None).unwrap(),
+        ],
+        FrictionModel::try_new(0.5, 1100).unwrap(),
+    )
+    .unwrap();
+    let q = Evaluator::new(
+        Metric::QInf {
+            with_zero_wrench: false,
+        },
+        Method::Partial,
+    )
+    .evaluate(&pinch)
+    .unwrap();
+    assert!(!q.force_closure);
+    // The two cones' sum contains the origin's neighbourhood within the flat: distance 0.
+    assert!(q.value.abs() < 1e-9, "{}", q.value);
+    // The full method refuses to materialise it.
+    let full = Evaluator::new(
+        Metric::QInf {
+            with_zero_wrench: false,
+        },
+        Method::Full,
+    )
+    .evaluate(&pinch);
+    assert!(matches!(
+        full,
+        Err(pqhull::grasp::quality::QualityError::MinkowskiTooLarge { .. })
+    ));
 }

@@ -4,7 +4,8 @@ use super::{Quality, QualityError, degenerate, no_hull_stats};
 use crate::grasp::snap::SnappedCones;
 use crate::hull::dot;
 use crate::predicates::Sign;
-use crate::strategy::{ClosestToOrigin, PointSource};
+use crate::strategy::nearest::min_norm_point;
+use crate::strategy::{ClosestToOrigin, PointSource, Stats};
 use crate::{FacetId, Hull, HullError};
 use std::time::Instant;
 
@@ -189,13 +190,9 @@ fn seed_directions() -> Vec<[f64; 6]> {
     directions
 }
 
-pub(super) fn partial(
-    cones: &SnappedCones,
-    with_zero_wrench: bool,
-) -> Result<Quality, QualityError> {
-    let started = Instant::now();
-    let sets = contact_sets(cones, with_zero_wrench);
-    let mut source = MinkowskiSource {
+/// The implicit sum of `sets`.
+fn minkowski_source(sets: Vec<Vec<[f64; 6]>>) -> MinkowskiSource {
+    MinkowskiSource {
         sizes: sets
             .iter()
             .map(|set| set.iter().map(|w| dot(w, w).sqrt()).fold(0.0, f64::max))
@@ -203,13 +200,116 @@ pub(super) fn partial(
         candidates: vec![Vec::new(); sets.len()],
         choice: Vec::new(),
         sets,
-    };
+    }
+}
+
+/// Iterations of [`outside_by_gjk`] before it leaves the question to the partial hull.
+const GJK_ITERATIONS: usize = 64;
+
+/// GJK on the support function: when the origin lies clearly outside the sum, its distance and
+/// the support points spanning the nearest face — without building a hull, whose growth over the
+/// sum's finely faceted boundary costs up to 10⁵ inserted points there. `None` when the origin
+/// is inside, within rounding of the boundary, or not separated within [`GJK_ITERATIONS`].
+///
+/// The verdict "outside" is certified by a separating plane: `v·p ≤ h(v) < 0` for every point
+/// `p` of the sum, with `h(v)` the support value of the direction `v` from the current nearest
+/// point toward the origin, and a margin above the rounding of `h`. The distance is the length of
+/// a point of the sum (an upper bound) within a relative `1e−13` of the plane's distance (a lower
+/// bound), the accuracy of the partial hull's own outside certificate.
+fn outside_by_gjk(
+    source: &mut MinkowskiSource,
+    seeds: &[[f64; 6]],
+) -> Option<(f64, Vec<[f64; 6]>, usize)> {
+    match gjk(source, seeds, GJK_ITERATIONS) {
+        Gjk::Separated {
+            distance,
+            face,
+            inserted,
+        } => Some((distance, face, inserted)),
+        Gjk::Touching { .. } | Gjk::Undecided => None,
+    }
+}
+
+/// What [`gjk`] found.
+enum Gjk {
+    /// The origin is outside, at `distance` from the point of the sum spanned by `face`.
+    Separated {
+        distance: f64,
+        face: Vec<[f64; 6]>,
+        inserted: usize,
+    },
+    /// A point of the sum within rounding of the origin (inside, or on the boundary).
+    Touching {
+        face: Vec<[f64; 6]>,
+        inserted: usize,
+    },
+    /// Neither within the iteration budget.
+    Undecided,
+}
+
+/// The support-function GJK behind [`outside_by_gjk`] (see there for the certificate).
+fn gjk(source: &mut MinkowskiSource, seeds: &[[f64; 6]], iterations: usize) -> Gjk {
+    let scale: f64 = source.sizes.iter().sum();
+    let mut corral: Vec<[f64; 6]> = seeds.to_vec();
+    let mut inserted = 0;
+    for _ in 0..iterations {
+        let nearest = min_norm_point(corral.len(), |i| corral[i], &[0.0; 6]);
+        let x = nearest.point;
+        let distance = nearest.distance;
+        let face = || nearest.support().iter().map(|&i| corral[i]).collect();
+        if distance <= 1e-9 * scale {
+            return Gjk::Touching {
+                face: face(),
+                inserted,
+            };
+        }
+        let v = x.map(|c| -c);
+        let s = source.support(&v).expect("a contact has cone edges");
+        inserted += 1;
+        let height = dot(&v, &s); // h(v) = max over the sum of v·p
+        // Rounding of h: each of the m summed terms carries ~1e−16 of its size.
+        if height >= -1e-12 * scale * distance {
+            return Gjk::Undecided; // no separating plane with margin: the exact path decides
+        }
+        let lower = -height / distance; // distance of the separating plane from the origin
+        if distance - lower <= 1e-13 * distance {
+            return Gjk::Separated {
+                distance,
+                face: face(),
+                inserted,
+            };
+        }
+        let kept: Vec<[f64; 6]> = face();
+        if kept.contains(&s) {
+            return Gjk::Undecided; // no progress in floating point
+        }
+        corral = kept;
+        corral.push(s);
+    }
+    Gjk::Undecided
+}
+
+pub(super) fn partial(
+    cones: &SnappedCones,
+    with_zero_wrench: bool,
+) -> Result<Quality, QualityError> {
+    let started = Instant::now();
+    let mut source = minkowski_source(contact_sets(cones, with_zero_wrench));
     let mut seeds: Vec<[f64; 6]> = Vec::new();
     for d in seed_directions() {
         let p = source.support(&d).expect("non-empty");
         if !seeds.contains(&p) {
             seeds.push(p);
         }
+    }
+    if let Some((distance, face, inserted)) = outside_by_gjk(&mut source, &seeds) {
+        let stats = Stats {
+            points_processed: seeds.len() + inserted,
+            facets_created: 0,
+            expansions: 0,
+            elapsed: started.elapsed(),
+        };
+        return Ok(Quality::new(-distance, face.into_iter(), stats));
     }
     let strategy = ClosestToOrigin::with_source([0.0; 6], source);
     match Hull::try_with_strategy(&seeds, strategy) {
@@ -222,10 +322,37 @@ pub(super) fn partial(
             // The sum spans fewer than 6 dimensions: not force closure; its distance from the
             // materialised set (flat sums are small: a rank-deficient grasp's edges).
             let mut all = Vec::new();
-            materialise(cones, with_zero_wrench, &mut all)?;
-            let mut quality = degenerate(&all, started);
-            quality.stats = no_hull_stats(all.len(), started);
-            Ok(quality)
+            match materialise(cones, with_zero_wrench, &mut all) {
+                Ok(()) => {
+                    let mut quality = degenerate(&all, started);
+                    quality.stats = no_hull_stats(all.len(), started);
+                    Ok(quality)
+                }
+                // Too many to materialise: the origin is within rounding of the flat sum (else
+                // GJK would have separated it), so its distance is 0 up to rounding; GJK with a
+                // larger budget says which face holds the touching point.
+                Err(too_large @ QualityError::MinkowskiTooLarge { .. }) => {
+                    let mut source = minkowski_source(contact_sets(cones, with_zero_wrench));
+                    match gjk(&mut source, &seeds, 16 * GJK_ITERATIONS) {
+                        Gjk::Separated {
+                            distance,
+                            face,
+                            inserted,
+                        } => Ok(Quality::new(
+                            -distance,
+                            face.into_iter(),
+                            no_hull_stats(seeds.len() + inserted, started),
+                        )),
+                        Gjk::Touching { face, inserted } => Ok(Quality::new(
+                            0.0,
+                            face.into_iter(),
+                            no_hull_stats(seeds.len() + inserted, started),
+                        )),
+                        Gjk::Undecided => Err(too_large),
+                    }
+                }
+                Err(e) => Err(e),
+            }
         }
         Err(e) => unreachable!("snapped wrenches are finite: {e}"),
     }
