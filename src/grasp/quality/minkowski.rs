@@ -251,8 +251,7 @@ enum Gjk {
 fn gjk(source: &mut MinkowskiSource, seeds: &[[f64; 6]], iterations: usize) -> Gjk {
     let scale: f64 = source.sizes.iter().sum();
     let mut corral: Vec<[f64; 6]> = seeds.to_vec();
-    let mut inserted = 0;
-    for _ in 0..iterations {
+    for inserted in 0..iterations {
         let nearest = min_norm_point(corral.len(), |i| corral[i], &[0.0; 6]);
         let x = nearest.point;
         let distance = nearest.distance;
@@ -265,7 +264,7 @@ fn gjk(source: &mut MinkowskiSource, seeds: &[[f64; 6]], iterations: usize) -> G
         }
         let v = x.map(|c| -c);
         let s = source.support(&v).expect("a contact has cone edges");
-        inserted += 1;
+        let inserted = inserted + 1;
         let height = dot(&v, &s); // h(v) = max over the sum of v·p
         // Rounding of h: each of the m summed terms carries ~1e−16 of its size.
         if height >= -1e-12 * scale * distance {
