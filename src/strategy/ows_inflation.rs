@@ -84,6 +84,8 @@ pub struct OwsInflation<'a, const D: usize> {
     orphans: Vec<u32>,
     /// Older facets that received disturbances in a fallback search, to queue again.
     requeue: Vec<FacetId>,
+    /// The facets an expansion created (scratch).
+    created: Vec<FacetId>,
     answer: Option<(f64, FacetId, usize)>,
 }
 
@@ -166,6 +168,7 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
             owner: Vec::new(),
             orphans: Vec::new(),
             requeue: Vec::new(),
+            created: Vec::new(),
             answer: None,
         }
     }
@@ -213,7 +216,11 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
 
     /// After an expansion: re-key what changed.
     fn after_expansion(&mut self, hull: &mut Hull<D>) {
-        let created = hull.last_created().to_vec();
+        // The created ids are copied out (the re-keying refines normals through `&mut Hull`)
+        // into a buffer kept across expansions.
+        let mut created = std::mem::take(&mut self.created);
+        created.clear();
+        created.extend_from_slice(hull.last_created());
         match self.disturbances {
             Disturbances::Rays(_) => {
                 for k in 0..hull.last_removed().len() {
@@ -230,6 +237,7 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
             }
             Disturbances::Support(index) => self.key_by_support(hull, index, &created),
         }
+        self.created = created;
     }
 
     /// Assigns every disturbance in `self.orphans` to the facet among `candidates` its ray leaves

@@ -147,10 +147,15 @@ impl<const D: usize> SupportIndex<D> {
         }
         let v_norm = dot(v, v).sqrt();
         let mut best = (f64::NEG_INFINITY, 0usize);
-        // Depth-first, the child with the larger bound first; at most a few dozen levels.
-        let mut stack: Vec<(u32, f64)> = Vec::with_capacity(64);
-        stack.push((0, self.bound(0, v, v_norm)));
-        while let Some((n, bound)) = stack.pop() {
+        // Depth-first, the child with the larger bound first. Median splits make the tree at most
+        // 33 levels deep for a u32-indexed set, and each level leaves one sibling waiting, so a
+        // fixed array holds the stack: a query allocates nothing (it runs once per new facet).
+        let mut stack = [(0u32, 0.0f64); 40];
+        let mut len = 1;
+        stack[0] = (0, self.bound(0, v, v_norm));
+        while len > 0 {
+            len -= 1;
+            let (n, bound) = stack[len];
             if bound <= best.0 {
                 continue;
             }
@@ -166,13 +171,14 @@ impl<const D: usize> SupportIndex<D> {
                 }
                 Some((left, right)) => {
                     let (bl, br) = (self.bound(left, v, v_norm), self.bound(right, v, v_norm));
-                    if bl > br {
-                        stack.push((right, br));
-                        stack.push((left, bl));
+                    let (first, second) = if bl > br {
+                        ((right, br), (left, bl))
                     } else {
-                        stack.push((left, bl));
-                        stack.push((right, br));
-                    }
+                        ((left, bl), (right, br))
+                    };
+                    stack[len] = first;
+                    stack[len + 1] = second;
+                    len += 2;
                 }
             }
         }
