@@ -272,13 +272,21 @@ fn bench_ows_reports_every_method_and_agreement() {
     assert_eq!(report["disturbances"], 8 * 4);
     assert_eq!(report["compared_with_brute"], 10);
     assert_eq!(report["disagreements"], 0);
+    assert_eq!(report["compared_with_rays"], 20);
+    assert_eq!(report["rays_disagreements"], 0);
     let methods: Vec<&str> = report["methods"]
         .as_array()
         .unwrap()
         .iter()
         .map(|m| m["method"].as_str().unwrap())
         .collect();
-    for m in ["partial", "brute", "ellipsoid", "q1-partial"] {
+    for m in [
+        "partial",
+        "brute",
+        "ellipsoid",
+        "q1-partial",
+        "partial-rays",
+    ] {
         assert!(methods.contains(&m), "{methods:?}");
     }
     let closure = report["force_closure"].as_u64().unwrap();

@@ -1,24 +1,22 @@
 //! `pqh bench ows`: the seed paper's OWS evaluation (its Fig. 8 and 9), every method side by side.
 
+use crate::bench_cmd::{mean, median};
 use crate::error::CliError;
 use crate::grasp_cmd::describe_space;
+use crate::plan_cmd::load_object;
 use clap::Args;
 use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod, OwsQuality, relative_error};
 use pqhull::grasp::quality::{Evaluator, Method, Metric};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
-use pqhull::mesh::Mesh;
 use pqhull::rbox::Rng;
 use serde_json::{Value, json};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Instant;
-
-/// The mesh used when `--mesh` is not given, relative to the working directory (the project root).
-pub const DEFAULT_MESH: &str = "../shared/meshes/spot.obj";
 
 #[derive(Debug, Args)]
 pub struct OwsArgs {
     /// Object mesh (OBJ or STL) [default: ../shared/meshes/spot.obj when present, else a
-    /// generated ellipsoid-like sphere]
+    /// generated ellipsoid]
     #[arg(long)]
     pub mesh: Option<PathBuf>,
     /// Random grasps (contacts sampled on the surface by area)
@@ -27,6 +25,10 @@ pub struct OwsArgs {
     /// At most this many of them for the brute-force method (it is slow)
     #[arg(long, default_value_t = 20)]
     pub brute_grasps: usize,
+    /// At most this many for Algorithm 2 as published (`partial-rays`: every disturbance
+    /// assigned to a facet; tens of ms per grasp on a mesh)
+    #[arg(long, default_value_t = 20)]
+    pub rays_grasps: usize,
     /// Contacts per grasp
     #[arg(long, default_value_t = 4)]
     pub contacts: usize,
@@ -47,20 +49,6 @@ pub struct OwsArgs {
     pub json: bool,
 }
 
-fn load_mesh(args: &OwsArgs) -> Result<(Mesh, String), CliError> {
-    match &args.mesh {
-        Some(path) => Mesh::load(path)
-            .map(|m| (m, path.display().to_string()))
-            .map_err(|e| CliError::Input(e.to_string())),
-        None if Path::new(DEFAULT_MESH).exists() => Mesh::load(DEFAULT_MESH)
-            .map(|m| (m, DEFAULT_MESH.to_string()))
-            .map_err(|e| CliError::Input(e.to_string())),
-        None => Mesh::uv_sphere(0.5, 24, 48)
-            .map(|m| (m, "generated sphere (24 × 48)".to_string()))
-            .map_err(|e| CliError::Input(e.to_string())),
-    }
-}
-
 fn quantiles(values: &mut [f64]) -> Value {
     values.sort_by(f64::total_cmp);
     let at = |q: f64| {
@@ -79,14 +67,11 @@ fn micros(q: &OwsQuality) -> f64 {
 }
 
 fn summary(name: &str, times: &mut [f64]) -> Value {
-    let grasps = times.len();
-    let mean = times.iter().sum::<f64>() / times.len().max(1) as f64;
-    times.sort_by(f64::total_cmp);
     json!({
         "method": name,
-        "grasps": grasps,
-        "median_us": times.get(times.len() / 2),
-        "mean_us": mean,
+        "grasps": times.len(),
+        "mean_us": mean(times.iter().copied()),
+        "median_us": median(times),
     })
 }
 
@@ -98,7 +83,7 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
     }
     let friction = FrictionModel::try_new(args.friction, args.edges)
         .map_err(|e| CliError::Usage(format!("--friction/--edges: {e}")))?;
-    let (mesh, mesh_name) = load_mesh(args)?;
+    let (mesh, mesh_name) = load_object(args.mesh.as_deref())?;
     let started = Instant::now();
     let mut space = ObjectWrenchSpace::from_mesh(&mesh, friction)
         .map_err(|e| CliError::Input(format!("{mesh_name}: {e}")))?;
@@ -151,16 +136,24 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
         .map_err(|e| CliError::Geometry(e.to_string()))?;
     let brute_set = &grasps[..args.brute_grasps.min(grasps.len())];
     let brute = evaluate(OwsMethod::BruteForce, brute_set)?;
+    let rays = evaluate(
+        OwsMethod::PartialRays,
+        &grasps[..args.rays_grasps.min(grasps.len())],
+    )?;
     let ellipsoid = evaluate(OwsMethod::Ellipsoid, &grasps)?;
 
-    let disagreements = partial
-        .iter()
-        .zip(&brute)
-        .filter(|(p, b)| match (p.value, b.value) {
-            (Some(x), Some(y)) => (x - y).abs() > 1e-9 * y.max(1e-4),
-            (x, y) => x.is_some() != y.is_some(),
-        })
-        .count();
+    let disagree = |other: &[OwsQuality]| {
+        partial
+            .iter()
+            .zip(other)
+            .filter(|(p, b)| match (p.value, b.value) {
+                (Some(x), Some(y)) => (x - y).abs() > 1e-9 * y.max(1e-4),
+                (x, y) => x.is_some() != y.is_some(),
+            })
+            .count()
+    };
+    let disagreements = disagree(&brute);
+    let rays_disagreements = disagree(&rays);
     let force_closure = partial.iter().filter(|q| q.force_closure).count();
     let mut errors: Vec<f64> = partial
         .iter()
@@ -183,6 +176,10 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
     let mut partial_on_brute: Vec<f64> = partial_times[..brute.len()].to_vec();
     let mut brute_times: Vec<f64> = brute.iter().map(micros).collect();
     let mut ellipsoid_times: Vec<f64> = ellipsoid.iter().map(micros).collect();
+    let mut rays_times: Vec<f64> = rays.iter().map(micros).collect();
+    let mut partial_on_rays: Vec<f64> = partial_times[..rays.len()].to_vec();
+    let mut rays_closure = closure_times(&rays);
+    let mut partial_closure_on_rays = closure_times(&partial[..rays.len()]);
     let rows = vec![
         summary("partial", &mut partial_times),
         summary("brute", &mut brute_times),
@@ -190,9 +187,13 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
         summary("q1-partial", &mut q1_times),
         summary("partial-fc", &mut partial_closure),
         summary("brute-fc", &mut brute_closure),
+        summary("partial-rays", &mut rays_times),
+        summary("partial-rays-fc", &mut rays_closure),
     ];
-    let median = |v: &Value| v["median_us"].as_f64().unwrap_or(f64::NAN);
+    let median_of = |v: &Value| v["median_us"].as_f64().unwrap_or(f64::NAN);
     let partial_brute_median = summary("", &mut partial_on_brute);
+    let partial_rays_median = summary("", &mut partial_on_rays);
+    let partial_rays_closure = summary("", &mut partial_closure_on_rays);
     let partial_brute_closure = summary("", &mut partial_closure_on_brute);
     let report = json!({
         "mesh": mesh_name,
@@ -208,12 +209,17 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
         "force_closure": force_closure,
         "disagreements": disagreements,
         "compared_with_brute": brute.len(),
+        "rays_disagreements": rays_disagreements,
+        "compared_with_rays": rays.len(),
         "methods": rows,
         "ratios": {
-            "brute_over_partial": median(&rows[1]) / median(&partial_brute_median),
+            "brute_over_partial": median_of(&rows[1]) / median_of(&partial_brute_median),
             "brute_over_partial_force_closure":
-                median(&rows[5]) / median(&partial_brute_closure),
-            "partial_over_q1": median(&rows[0]) / median(&rows[3]),
+                median_of(&rows[5]) / median_of(&partial_brute_closure),
+            "partial_over_q1": median_of(&rows[0]) / median_of(&rows[3]),
+            "rays_over_partial": median_of(&rows[6]) / median_of(&partial_rays_median),
+            "rays_over_partial_force_closure":
+                median_of(&rows[7]) / median_of(&partial_rays_closure),
         },
         "ellipsoid_relative_error": quantiles(&mut errors),
     });
@@ -233,23 +239,24 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
     );
     println!(
         "force closure: {force_closure}; partial vs brute force: {disagreements} disagreements \
-         of {}",
-        brute.len()
+         of {}; vs partial-rays: {rays_disagreements} of {}",
+        brute.len(),
+        rays.len()
     );
     println!(
         "(the ellipsoid of the disturbances took {ellipsoid_ms:.1} ms, once per object; \
          '-fc' rows: force-closure grasps only)"
     );
     println!(
-        "{:<12} {:>7} {:>12} {:>12}",
+        "{:<16} {:>7} {:>12} {:>12}",
         "method", "grasps", "median µs", "mean µs"
     );
     for row in &rows {
         println!(
-            "{:<12} {:>7} {:>12.1} {:>12.1}",
+            "{:<16} {:>7} {:>12.1} {:>12.1}",
             row["method"].as_str().unwrap_or(""),
             row["grasps"].as_u64().unwrap_or(0),
-            median(row),
+            median_of(row),
             row["mean_us"].as_f64().unwrap_or(f64::NAN)
         );
     }
@@ -260,6 +267,12 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
         ratio("brute_over_partial"),
         ratio("brute_over_partial_force_closure"),
         ratio("partial_over_q1")
+    );
+    println!(
+        "partial-rays (Algorithm 2 as published) / partial (same grasps): {:.1}× (force closure \
+         only: {:.1}×)",
+        ratio("rays_over_partial"),
+        ratio("rays_over_partial_force_closure")
     );
     let e = &report["ellipsoid_relative_error"];
     let q = |key: &str| {

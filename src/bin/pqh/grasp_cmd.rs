@@ -3,6 +3,7 @@
 
 use crate::error::CliError;
 use clap::{Args, ValueEnum};
+use pqhull::Stats;
 use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod, OwsQuality, SpaceOrigin};
 use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, QualityError};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
@@ -200,36 +201,62 @@ pub fn parse_grasp(value: &Value) -> Result<Grasp, String> {
     builder.build().map_err(|e| e.to_string())
 }
 
-pub fn quality_json(index: usize, result: &Result<Quality, QualityError>) -> Value {
+/// The output line of grasp `index`: its verdict, value and work, or the error that stopped it.
+fn result_line<T>(
+    index: usize,
+    result: &Result<T, QualityError>,
+    fields: impl Fn(&T) -> (bool, Option<f64>, Stats),
+) -> Value {
     match result {
-        Ok(q) => json!({
-            "index": index,
-            "force_closure": q.force_closure,
-            "quality": q.value,
-            "stats": {
-                "points_processed": q.stats.points_processed,
-                "facets_created": q.stats.facets_created,
-                "elapsed_us": q.stats.elapsed.as_secs_f64() * 1e6,
-            }
-        }),
+        Ok(q) => {
+            let (force_closure, quality, stats) = fields(q);
+            json!({
+                "index": index,
+                "force_closure": force_closure,
+                "quality": quality,
+                "stats": {
+                    "points_processed": stats.points_processed,
+                    "facets_created": stats.facets_created,
+                    "elapsed_us": stats.elapsed.as_secs_f64() * 1e6,
+                }
+            })
+        }
         Err(e) => json!({"index": index, "error": e.to_string()}),
     }
 }
 
-pub fn ows_json(index: usize, result: &Result<OwsQuality, QualityError>) -> Value {
-    match result {
-        Ok(q) => json!({
-            "index": index,
-            "force_closure": q.force_closure,
-            "quality": q.value,
-            "stats": {
-                "points_processed": q.stats.points_processed,
-                "facets_created": q.stats.facets_created,
-                "elapsed_us": q.stats.elapsed.as_secs_f64() * 1e6,
-            }
-        }),
-        Err(e) => json!({"index": index, "error": e.to_string()}),
-    }
+/// Evaluates every parsed grasp on `threads` workers (one evaluator each, with a progress bar)
+/// and returns the output lines in input order; entries that did not parse keep their error.
+fn evaluate_lines<E, T: Send>(
+    entries: &[Result<Grasp, String>],
+    threads: Option<usize>,
+    new_evaluator: impl Fn() -> E + Sync + Send,
+    evaluate: impl Fn(&mut E, &Grasp) -> Result<T, QualityError> + Sync + Send,
+    fields: impl Fn(&T) -> (bool, Option<f64>, Stats),
+) -> Result<Vec<Value>, CliError> {
+    let bar = crate::progress::bar(entries.len(), "grasps");
+    let results = with_threads(threads, || {
+        use rayon::prelude::*;
+        entries
+            .par_iter()
+            .map_init(&new_evaluator, |ev, g| {
+                let result = g.as_ref().ok().map(|g| evaluate(ev, g));
+                bar.inc(1);
+                result
+            })
+            .collect::<Vec<_>>()
+    })?;
+    bar.finish_and_clear();
+    Ok(entries
+        .iter()
+        .zip(&results)
+        .enumerate()
+        .map(|(index, (entry, result))| match (entry, result) {
+            (Err(message), _) => json!({"index": index, "error": message}),
+            (Ok(_), Some(result)) => result_line(index, result, &fields),
+            (Ok(_), None) => unreachable!("every parsed grasp is evaluated"),
+        })
+        .collect())
 }
 
 /// Runs `work` on `threads` workers (default: rayon's global pool, all cores).
@@ -357,32 +384,13 @@ fn run_ows(
             space.frame(&g).map_err(|e| e.to_string())
         })
         .collect();
-    let bar = crate::progress::bar(framed.len(), "grasps");
-    let results = with_threads(args.threads, || {
-        use rayon::prelude::*;
-        framed
-            .par_iter()
-            .map_init(
-                || OwsEvaluator::new(method),
-                |ev, g| {
-                    let result = g.as_ref().ok().map(|g| ev.evaluate(g, &space));
-                    bar.inc(1);
-                    result
-                },
-            )
-            .collect::<Vec<_>>()
-    })?;
-    bar.finish_and_clear();
-    Ok(framed
-        .iter()
-        .zip(&results)
-        .enumerate()
-        .map(|(index, (entry, result))| match (entry, result) {
-            (Err(message), _) => json!({"index": index, "error": message}),
-            (Ok(_), Some(result)) => ows_json(index, result),
-            (Ok(_), None) => unreachable!("every parsed grasp is evaluated"),
-        })
-        .collect())
+    evaluate_lines(
+        &framed,
+        args.threads,
+        || OwsEvaluator::new(method),
+        |ev, g| ev.evaluate(g, &space),
+        |q: &OwsQuality| (q.force_closure, q.value, q.stats),
+    )
 }
 
 pub fn run(args: &GraspArgs) -> Result<(), CliError> {
@@ -418,32 +426,13 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
                 _ => Metric::Q1,
             };
             let method = method(args.method)?;
-            let bar = crate::progress::bar(entries.len(), "grasps");
-            let results = with_threads(args.threads, || {
-                use rayon::prelude::*;
-                entries
-                    .par_iter()
-                    .map_init(
-                        || Evaluator::new(metric, method),
-                        |ev, g| {
-                            let result = g.as_ref().ok().map(|g| ev.evaluate(g));
-                            bar.inc(1);
-                            result
-                        },
-                    )
-                    .collect::<Vec<Option<Result<Quality, QualityError>>>>()
-            })?;
-            bar.finish_and_clear();
-            entries
-                .iter()
-                .zip(&results)
-                .enumerate()
-                .map(|(index, (entry, result))| match (entry, result) {
-                    (Err(message), _) => json!({"index": index, "error": message}),
-                    (Ok(_), Some(result)) => quality_json(index, result),
-                    (Ok(_), None) => unreachable!("every parsed grasp is evaluated"),
-                })
-                .collect()
+            evaluate_lines(
+                &entries,
+                args.threads,
+                || Evaluator::new(metric, method),
+                |ev, g| ev.evaluate(g),
+                |q: &Quality| (q.force_closure, Some(q.value), q.stats),
+            )?
         }
     };
     let stdout = std::io::stdout();
