@@ -22,6 +22,7 @@
 //! let partial = plan(&object, None, &config, PlanMethod::Partial)?;
 //! let full = plan(&object, None, &config, PlanMethod::Full)?;
 //! // Same samples, same metric values: the same best grasp.
+//! assert!(partial.same_best_as(&full));
 //! let (a, b) = (partial.best.unwrap(), full.best.unwrap());
 //! assert_eq!(a.sample, b.sample);
 //! assert!((a.value - b.value).abs() <= 1e-12 * b.value.abs().max(1e-2));
@@ -97,6 +98,26 @@ pub struct PlanReport {
     pub other_time: Duration,
     /// Facets created by all the evaluations.
     pub facets_created: usize,
+}
+
+impl PlanReport {
+    /// Whether `other` — a plan over the same samples by another method — chose the same best
+    /// grasp: the same sample, or one with the same value (within 1e−9 relative: an exact tie that
+    /// rounding broke the other way). Both finding none counts as the same.
+    pub fn same_best_as(&self, other: &PlanReport) -> bool {
+        match (&self.best, &other.best) {
+            (Some(a), Some(b)) => {
+                a.sample == b.sample || (a.value - b.value).abs() <= 1e-9 * b.value.abs().max(1e-3)
+            }
+            (None, None) => true,
+            _ => false,
+        }
+    }
+
+    /// Seconds of quality evaluation per sample.
+    pub fn quality_seconds_per_sample(&self) -> f64 {
+        self.quality_time.as_secs_f64() / self.samples as f64
+    }
 }
 
 /// Why a plan could not run.

@@ -54,18 +54,11 @@ struct MetricRun {
 
 impl MetricRun {
     fn speedup(&self) -> f64 {
-        let per = |r: &PlanReport| r.quality_time.as_secs_f64() / r.samples as f64;
-        per(&self.full) / per(&self.partial_short)
+        self.full.quality_seconds_per_sample() / self.partial_short.quality_seconds_per_sample()
     }
 
     fn agree(&self) -> bool {
-        match (&self.full.best, &self.partial_short.best) {
-            (Some(a), Some(b)) => {
-                a.sample == b.sample || (a.value - b.value).abs() <= 1e-9 * b.value.abs().max(1e-3)
-            }
-            (None, None) => true,
-            _ => false,
-        }
+        self.full.same_best_as(&self.partial_short)
     }
 }
 

@@ -207,20 +207,12 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
         _ => None,
     };
 
-    let same_best = comparison.as_ref().map(|(full, partial_short)| {
-        match (&full.best, &partial_short.best) {
-            // The same sample, or (an exact tie broken differently by rounding) the same value.
-            (Some(a), Some(b)) => {
-                a.sample == b.sample || (a.value - b.value).abs() <= 1e-9 * b.value.abs().max(1e-3)
-            }
-            (None, None) => true,
-            _ => false,
-        }
-    });
-    let per_sample = |r: &PlanReport| r.quality_time.as_secs_f64() / r.samples as f64;
-    let speedup = comparison
+    let same_best = comparison
         .as_ref()
-        .map(|(full, short)| per_sample(full) / per_sample(short));
+        .map(|(full, partial_short)| full.same_best_as(partial_short));
+    let speedup = comparison.as_ref().map(|(full, short)| {
+        full.quality_seconds_per_sample() / short.quality_seconds_per_sample()
+    });
     if args.json {
         let document = json!({
             "mesh": name,
