@@ -1,9 +1,13 @@
 //! End-to-end tests of the `pqh` binary: documented output and error behaviour.
 
+#[path = "support/cli.rs"]
+#[allow(dead_code)] // each test binary uses part of it
+mod cli_support;
+
+use cli_support::{file, pqh};
 use serde_json::Value;
-use std::io::Write;
 use std::path::PathBuf;
-use std::process::{Command, Output, Stdio};
+use std::process::Output;
 
 const SQUARE: &str = "\
 # the square [-1, 1]^2 and an interior point
@@ -14,31 +18,6 @@ const SQUARE: &str = "\
 
 0.2 0.1
 ";
-
-/// Runs `pqh` with `args`, feeding `stdin` (empty if `None`).
-fn pqh(args: &[&str], stdin: Option<&str>) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_pqh"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("spawn pqh");
-    let mut input = child.stdin.take().expect("stdin");
-    // pqh may exit (on a usage error) before reading its input: a closed pipe is fine.
-    if let Err(e) = input.write_all(stdin.unwrap_or("").as_bytes()) {
-        assert_eq!(e.kind(), std::io::ErrorKind::BrokenPipe, "write stdin: {e}");
-    }
-    drop(input);
-    child.wait_with_output().expect("wait for pqh")
-}
-
-/// Writes `contents` to a file unique to this test and returns its path.
-fn file(name: &str, contents: &str) -> PathBuf {
-    let path = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-{name}"));
-    std::fs::write(&path, contents).expect("write test input");
-    path
-}
 
 fn stdout(o: &Output) -> String {
     String::from_utf8(o.stdout.clone()).expect("utf-8 stdout")

@@ -1,30 +1,16 @@
 //! End-to-end tests of `pqh grasp --metric ows` (the object wrench space metric).
 
+#[path = "support/cli.rs"]
+#[allow(dead_code)] // each test binary uses part of it
+mod cli_support;
+
+use cli_support::file;
 use serde_json::Value;
-use std::io::Write;
-use std::path::PathBuf;
-use std::process::{Command, Output, Stdio};
+use std::process::Output;
 
+/// `pqh` with `stdin`.
 fn pqh(args: &[&str], stdin: &str) -> Output {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_pqh"))
-        .args(args)
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("spawn pqh");
-    let mut input = child.stdin.take().expect("stdin");
-    if let Err(e) = input.write_all(stdin.as_bytes()) {
-        assert_eq!(e.kind(), std::io::ErrorKind::BrokenPipe, "write stdin: {e}");
-    }
-    drop(input);
-    child.wait_with_output().expect("wait for pqh")
-}
-
-fn file(name: &str, contents: &str) -> PathBuf {
-    let path = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-ows-{name}"));
-    std::fs::write(&path, contents).expect("write test input");
-    path
+    cli_support::pqh(args, Some(stdin))
 }
 
 fn lines(output: &Output) -> Vec<Value> {

@@ -1,18 +1,16 @@
 //! End-to-end tests of `pqh plan` and `pqh demo` (the planner demo).
 
+#[path = "support/cli.rs"]
+#[allow(dead_code)] // each test binary uses part of it
+mod cli_support;
+
+use cli_support::temp;
 use serde_json::Value;
 use std::path::PathBuf;
-use std::process::{Command, Output};
+use std::process::Output;
 
 fn pqh(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_pqh"))
-        .args(args)
-        .output()
-        .expect("run pqh")
-}
-
-fn temp(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join(format!("cli-plan-{name}"))
+    cli_support::pqh(args, None)
 }
 
 /// A bar [−0.5, 0.5] × [−0.2, 0.2] × [−0.1, 0.1], counter-clockwise seen from outside.
