@@ -1,11 +1,10 @@
 //! `ClosestToOrigin`: the PQHGWS algorithm (Liu & Carpin, Algorithm 1), made exact.
 
 use super::nearest::{min_norm_point, nearest_in_simplex};
-use super::{Stats, Step, Strategy};
+use super::{Queued, Stats, Step, Strategy};
 use crate::hull::{FacetId, Hull, dot};
 use crate::predicates::Sign;
 use crate::viz::TraceContext;
-use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
 /// Grows the hull toward a query point (default: the origin) and stops as soon as the facet nearest
@@ -181,9 +180,10 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
     /// its exact key is computed when it reaches the top.
     fn enqueue(&mut self, hull: &Hull<D>, id: FacetId) {
         self.queue.push(Entry {
-            beyond: hull.distance_upper_bound(id, &self.query),
+            key: hull.distance_upper_bound(id, &self.query),
             id,
             serial: hull.facet(id).serial(),
+            data: (),
         });
     }
 
@@ -217,9 +217,9 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
             }
             hull.trace_choice(
                 id,
-                Some(("distance of the query beyond the plane", entry.beyond)),
+                Some(("distance of the query beyond the plane", entry.key)),
                 || {
-                    if entry.beyond > 0.0 {
+                    if entry.key > 0.0 {
                         "the query lies farthest beyond this facet's plane"
                     } else {
                         "nearest plane to the query (the query is beneath every queued plane)"
@@ -526,29 +526,5 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
     }
 }
 
-/// A queued facet, ordered by how far the query lies beyond its plane (largest first).
-#[derive(Clone, Copy, Debug)]
-struct Entry {
-    beyond: f64,
-    id: FacetId,
-    serial: u64,
-}
-
-impl PartialEq for Entry {
-    fn eq(&self, other: &Self) -> bool {
-        self.cmp(other) == Ordering::Equal
-    }
-}
-impl Eq for Entry {}
-impl PartialOrd for Entry {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
-impl Ord for Entry {
-    fn cmp(&self, other: &Self) -> Ordering {
-        self.beyond
-            .total_cmp(&other.beyond)
-            .then(other.serial.cmp(&self.serial))
-    }
-}
+/// A queued facet, keyed by how far the query lies beyond its plane (largest first).
+type Entry = Queued<()>;

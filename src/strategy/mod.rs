@@ -101,3 +101,34 @@ pub trait Strategy<const D: usize> {
         crate::viz::TraceContext::default()
     }
 }
+
+/// A facet waiting in a strategy's priority queue (`BinaryHeap`, a max-heap): the largest `key`
+/// first, ties to the older facet (smaller serial) so the order is deterministic. `serial` tells
+/// an entry whose facet was since removed (its slot possibly reused) from a live one; `data` is
+/// whatever the strategy keeps with it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Queued<T> {
+    pub(crate) key: f64,
+    pub(crate) id: crate::hull::FacetId,
+    pub(crate) serial: u64,
+    pub(crate) data: T,
+}
+
+impl<T> PartialEq for Queued<T> {
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other) == std::cmp::Ordering::Equal
+    }
+}
+impl<T> Eq for Queued<T> {}
+impl<T> PartialOrd for Queued<T> {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+impl<T> Ord for Queued<T> {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        self.key
+            .total_cmp(&other.key)
+            .then(other.serial.cmp(&self.serial))
+    }
+}

@@ -1,10 +1,9 @@
 //! `OwsInflation`: the PQHOWS algorithm (Liu & Carpin, Algorithm 2), made exact.
 
-use super::{Stats, Step, Strategy, SupportIndex};
+use super::{Queued, Stats, Step, Strategy, SupportIndex};
 use crate::hull::{FacetId, Hull, dot};
 use crate::predicates::Sign;
 use crate::viz::TraceContext;
-use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
 /// Grows the hull until it can tell how far a set of *disturbances* can be inflated before the
@@ -191,12 +190,12 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
             if let Some((h, disturbance)) = index.support(&toward)
                 && h > 0.0
             {
-                self.queue.push(Entry {
-                    factor: facet.offset().max(0.0) / h,
+                self.queue.push(Entry::factored(
+                    facet.offset().max(0.0) / h,
                     id,
-                    serial: facet.serial(),
-                    disturbance: disturbance as u32,
-                });
+                    facet.serial(),
+                    disturbance as u32,
+                ));
             }
         }
     }
@@ -307,12 +306,8 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
             })
             .min_by(|a, b| a.0.total_cmp(&b.0));
         if let Some((factor, disturbance)) = best {
-            self.queue.push(Entry {
-                factor,
-                id,
-                serial: facet.serial(),
-                disturbance,
-            });
+            self.queue
+                .push(Entry::factored(factor, id, facet.serial(), disturbance));
         }
     }
 
@@ -362,10 +357,10 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
                 continue;
             }
             let id = entry.id;
-            hull.trace_choice(id, Some(("inflation factor", entry.factor)), || {
+            hull.trace_choice(id, Some(("inflation factor", entry.factor())), || {
                 format!(
                     "smallest inflation factor (disturbance {} reaches this facet's plane first)",
-                    entry.disturbance
+                    entry.data
                 )
             });
             if hull.facet(id).outside_len() > 0 || hull.claim_beyond(id) {
@@ -373,13 +368,14 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
                 self.after_expansion(hull);
                 return Step::Continue;
             }
-            self.answer = Some((entry.factor, id, entry.disturbance as usize));
+            self.answer = Some((entry.factor(), id, entry.data as usize));
             self.phase = Phase::Done;
             hull.trace_stop(Some(id), || {
                 format!(
                     "nothing lies beyond the facet with the smallest inflation factor: Q = {} \
                      certified (disturbance {})",
-                    entry.factor, entry.disturbance
+                    entry.factor(),
+                    entry.data
                 )
             });
             return Step::Stop;
@@ -457,32 +453,21 @@ impl<const D: usize> Strategy<D> for OwsInflation<'_, D> {
     }
 }
 
-/// A queued facet, ordered by its smallest inflation factor (smallest first).
-#[derive(Clone, Copy, Debug)]
-struct Entry {
-    factor: f64,
-    id: FacetId,
-    serial: u64,
-    disturbance: u32,
-}
+/// A queued facet keyed by minus its smallest inflation factor (so the smallest factor is on
+/// top of the max-heap), with the disturbance that attains it.
+type Entry = Queued<u32>;
 
-impl PartialEq for Entry {
-    fn eq(&self, other: &Self) -> bool {
-        self.cmp(other) == Ordering::Equal
+impl Entry {
+    fn factored(factor: f64, id: FacetId, serial: u64, disturbance: u32) -> Entry {
+        Queued {
+            key: -factor,
+            id,
+            serial,
+            data: disturbance,
+        }
     }
-}
-impl Eq for Entry {}
-impl PartialOrd for Entry {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
-impl Ord for Entry {
-    fn cmp(&self, other: &Self) -> Ordering {
-        // BinaryHeap is a max-heap: reverse so the smallest factor is on top.
-        other
-            .factor
-            .total_cmp(&self.factor)
-            .then(other.serial.cmp(&self.serial))
+
+    fn factor(&self) -> f64 {
+        -self.key
     }
 }
