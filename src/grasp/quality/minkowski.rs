@@ -251,6 +251,8 @@ enum Gjk {
 fn gjk(source: &mut MinkowskiSource, seeds: &[[f64; 6]], iterations: usize) -> Gjk {
     let scale: f64 = source.sizes.iter().sum();
     let mut corral: Vec<[f64; 6]> = seeds.to_vec();
+    // The next corral is built here and swapped in: two buffers per grasp, none per iteration.
+    let mut next: Vec<[f64; 6]> = Vec::with_capacity(8);
     for inserted in 0..iterations {
         let nearest = min_norm_point(corral.len(), |i| corral[i], &[0.0; 6]);
         let x = nearest.point;
@@ -278,12 +280,13 @@ fn gjk(source: &mut MinkowskiSource, seeds: &[[f64; 6]], iterations: usize) -> G
                 inserted,
             };
         }
-        let kept: Vec<[f64; 6]> = face();
-        if kept.contains(&s) {
+        next.clear();
+        next.extend(nearest.support().iter().map(|&i| corral[i]));
+        if next.contains(&s) {
             return Gjk::Undecided; // no progress in floating point
         }
-        corral = kept;
-        corral.push(s);
+        next.push(s);
+        std::mem::swap(&mut corral, &mut next);
     }
     Gjk::Undecided
 }
