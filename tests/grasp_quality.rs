@@ -191,6 +191,7 @@ fn partial_equals_full_on_ten_thousand_random_grasps() {
     let mut partial = Evaluator::new(Metric::Q1, Method::Partial);
     let mut full = Evaluator::new(Metric::Q1, Method::Full);
     let mut force_closure = 0;
+    let mut by_gjk = 0;
     for case in 0..cases {
         let m = 2 + rng.index(3);
         let k = 3 + rng.index(4);
@@ -199,11 +200,18 @@ fn partial_equals_full_on_ten_thousand_random_grasps() {
         let b = full.evaluate(&grasp).unwrap();
         agree(&a, &b, &format!("case {case} (m = {m}, k = {k})"));
         force_closure += usize::from(a.force_closure);
+        by_gjk += usize::from(a.stats.facets_created == 0 && b.stats.facets_created > 0);
     }
     // Both kinds are exercised.
     assert!(
         force_closure > cases / 20 && force_closure < cases - cases / 20,
         "{force_closure}"
+    );
+    // Most grasps that are not force closure were separated by GJK, with no hull.
+    assert!(
+        by_gjk > (cases - force_closure) / 2,
+        "{by_gjk} of {} by GJK",
+        cases - force_closure
     );
 }
 

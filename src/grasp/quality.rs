@@ -21,6 +21,12 @@
 //! are floating point: the distance to an exactly chosen facet (relative error ~1e−15), or the
 //! nearest point by Wolfe's algorithm (~1e−13) when the grasp is not force closure.
 //!
+//! Before any hull, the partial method runs GJK on the wrenches' support function: when it finds
+//! a separating plane with a margin above rounding, and the plane's distance within 1e−13
+//! relative of a point of the hull, the grasp is certified not force closure and that distance is
+//! the answer (a median 12 µs instead of 1.2 ms at 4 contacts × 32 edges). Force-closure grasps,
+//! and origins within rounding of the boundary, go on to the exact partial hull.
+//!
 //! ```
 //! use pqhull::grasp::quality::{Evaluator, Method, Metric};
 //! use pqhull::grasp::{Contact, FrictionModel, Grasp};
@@ -50,10 +56,12 @@ use super::snap::{SnappedCones, snapped_union};
 use crate::strategy::nearest::{min_norm_point, nearest_in_simplex};
 use crate::strategy::{ClosestToOrigin, Stats};
 use crate::{Hull, HullError};
+use separation::{GJK_ITERATIONS, Gjk, gjk, largest_norm, support_of};
 use std::fmt;
 use std::time::Instant;
 
 mod minkowski;
+mod separation;
 pub use minkowski::MINKOWSKI_MATERIALISE_LIMIT;
 
 /// Which metric to evaluate.
@@ -378,6 +386,25 @@ fn degenerate(w: &[[f64; 6]], started: Instant) -> Quality {
 }
 
 fn partial_q1(w: &[[f64; 6]], started: Instant, buffers: &mut HullBuffers) -> Quality {
+    // Most grasps that are not force closure are separated from the origin by GJK, certified,
+    // without a hull; the rest (force closure, or the origin within rounding of the boundary) go
+    // on to the exact partial hull.
+    if let Gjk::Separated {
+        distance,
+        face,
+        inserted,
+    } = gjk(
+        |v| support_of(w, v),
+        largest_norm(w),
+        &w[..1],
+        GJK_ITERATIONS,
+    ) {
+        return Quality::new(
+            -distance,
+            face.into_iter(),
+            no_hull_stats(1 + inserted, started),
+        );
+    }
     match HullBuffers::build(&mut buffers.hull, w, &mut buffers.nearest) {
         Ok((_, result)) => Quality::new(
             result.signed_distance,

@@ -1,10 +1,10 @@
 //! Q∞ over the Minkowski sum ⊕_i W_i, implicitly (support function) or materialised.
 
+use super::separation::{GJK_ITERATIONS, Gjk, gjk};
 use super::{Quality, QualityError, degenerate, no_hull_stats};
 use crate::grasp::snap::SnappedCones;
 use crate::hull::dot;
 use crate::predicates::Sign;
-use crate::strategy::nearest::min_norm_point;
 use crate::strategy::{ClosestToOrigin, PointSource, Stats};
 use crate::{FacetId, Hull, HullError};
 use std::time::Instant;
@@ -203,24 +203,16 @@ fn minkowski_source(sets: Vec<Vec<[f64; 6]>>) -> MinkowskiSource {
     }
 }
 
-/// Iterations of [`outside_by_gjk`] before it leaves the question to the partial hull.
-const GJK_ITERATIONS: usize = 64;
-
-/// GJK on the support function: when the origin lies clearly outside the sum, its distance and
-/// the support points spanning the nearest face — without building a hull, whose growth over the
-/// sum's finely faceted boundary costs up to 10⁵ inserted points there. `None` when the origin
-/// is inside, within rounding of the boundary, or not separated within [`GJK_ITERATIONS`].
-///
-/// The verdict "outside" is certified by a separating plane: `v·p ≤ h(v) < 0` for every point
-/// `p` of the sum, with `h(v)` the support value of the direction `v` from the current nearest
-/// point toward the origin, and a margin above the rounding of `h`. The distance is the length of
-/// a point of the sum (an upper bound) within a relative `1e−13` of the plane's distance (a lower
-/// bound), the accuracy of the partial hull's own outside certificate.
+/// When the origin lies clearly outside the sum: its distance and the support points spanning
+/// the nearest face, without building a hull, whose growth over the sum's finely faceted
+/// boundary costs up to 10⁵ inserted points there. `None` when the origin is inside, within
+/// rounding of the boundary, or not separated within [`GJK_ITERATIONS`] (see [`gjk`] for the
+/// certificate).
 fn outside_by_gjk(
     source: &mut MinkowskiSource,
     seeds: &[[f64; 6]],
 ) -> Option<(f64, Vec<[f64; 6]>, usize)> {
-    match gjk(source, seeds, GJK_ITERATIONS) {
+    match minkowski_gjk(source, seeds, GJK_ITERATIONS) {
         Gjk::Separated {
             distance,
             face,
@@ -230,65 +222,16 @@ fn outside_by_gjk(
     }
 }
 
-/// What [`gjk`] found.
-enum Gjk {
-    /// The origin is outside, at `distance` from the point of the sum spanned by `face`.
-    Separated {
-        distance: f64,
-        face: Vec<[f64; 6]>,
-        inserted: usize,
-    },
-    /// A point of the sum within rounding of the origin (inside, or on the boundary).
-    Touching {
-        face: Vec<[f64; 6]>,
-        inserted: usize,
-    },
-    /// Neither within the iteration budget.
-    Undecided,
-}
-
-/// The support-function GJK behind [`outside_by_gjk`] (see there for the certificate).
-fn gjk(source: &mut MinkowskiSource, seeds: &[[f64; 6]], iterations: usize) -> Gjk {
+/// [`gjk`] over the sum's support function; its points are bounded by the sum of the contacts'
+/// largest norms.
+fn minkowski_gjk(source: &mut MinkowskiSource, seeds: &[[f64; 6]], iterations: usize) -> Gjk {
     let scale: f64 = source.sizes.iter().sum();
-    let mut corral: Vec<[f64; 6]> = seeds.to_vec();
-    // The next corral is built here and swapped in: two buffers per grasp, none per iteration.
-    let mut next: Vec<[f64; 6]> = Vec::with_capacity(8);
-    for inserted in 0..iterations {
-        let nearest = min_norm_point(corral.len(), |i| corral[i], &[0.0; 6]);
-        let x = nearest.point;
-        let distance = nearest.distance;
-        let face = || nearest.support().iter().map(|&i| corral[i]).collect();
-        if distance <= 1e-9 * scale {
-            return Gjk::Touching {
-                face: face(),
-                inserted,
-            };
-        }
-        let v = x.map(|c| -c);
-        let s = source.support(&v).expect("a contact has cone edges");
-        let inserted = inserted + 1;
-        let height = dot(&v, &s); // h(v) = max over the sum of v·p
-        // Rounding of h: each of the m summed terms carries ~1e−16 of its size.
-        if height >= -1e-12 * scale * distance {
-            return Gjk::Undecided; // no separating plane with margin: the exact path decides
-        }
-        let lower = -height / distance; // distance of the separating plane from the origin
-        if distance - lower <= 1e-13 * distance {
-            return Gjk::Separated {
-                distance,
-                face: face(),
-                inserted,
-            };
-        }
-        next.clear();
-        next.extend(nearest.support().iter().map(|&i| corral[i]));
-        if next.contains(&s) {
-            return Gjk::Undecided; // no progress in floating point
-        }
-        next.push(s);
-        std::mem::swap(&mut corral, &mut next);
-    }
-    Gjk::Undecided
+    gjk(
+        |v| source.support(v).expect("a contact has cone edges"),
+        scale,
+        seeds,
+        iterations,
+    )
 }
 
 pub(super) fn partial(
@@ -335,7 +278,7 @@ pub(super) fn partial(
                 // larger budget says which face holds the touching point.
                 Err(too_large @ QualityError::MinkowskiTooLarge { .. }) => {
                     let mut source = minkowski_source(contact_sets(cones, with_zero_wrench));
-                    match gjk(&mut source, &seeds, 16 * GJK_ITERATIONS) {
+                    match minkowski_gjk(&mut source, &seeds, 16 * GJK_ITERATIONS) {
                         Gjk::Separated {
                             distance,
                             face,
