@@ -52,7 +52,7 @@
 //! ```
 
 use super::Grasp;
-use super::snap::{SnappedCones, snapped_union};
+use super::snap::{SnappedCones, pyramid_labels, snapped_union};
 use crate::strategy::nearest::{min_norm_point, nearest_in_simplex};
 use crate::strategy::{ClosestToOrigin, Stats};
 use crate::{Hull, HullError};
@@ -194,6 +194,8 @@ pub struct Evaluator {
     method: Method,
     cones: SnappedCones,
     wrenches: Vec<[f64; 6]>,
+    /// The contact of every wrench, when `wrenches` holds the snapped pyramids.
+    pyramids: Vec<u32>,
     buffers: HullBuffers,
 }
 
@@ -205,22 +207,21 @@ pub(crate) struct HullBuffers {
 }
 
 impl HullBuffers {
-    /// The hull of `w` grown by `strategy`, in the reused arena.
+    /// The hull of `w` grown by `strategy`, in the reused arena. `pyramids`, when given, names
+    /// the contact of every wrench: each contact's wrenches must lie *exactly* in one 2-D affine
+    /// plane, as snapped friction pyramids do (see [`Hull::rebuild_with_flats`]).
     pub(crate) fn build<'h, S: crate::Strategy<6>>(
         hull: &'h mut Option<Hull<6>>,
         w: &[[f64; 6]],
+        pyramids: Option<&[u32]>,
         strategy: S,
     ) -> Result<(&'h Hull<6>, S::Output), HullError> {
-        match hull {
-            Some(h) => {
-                let output = h.rebuild_with_strategy(w, strategy)?;
-                Ok((h, output))
-            }
-            None => {
-                let (h, output) = Hull::try_with_strategy(w, strategy)?;
-                Ok((hull.insert(h), output))
-            }
-        }
+        let h = hull.get_or_insert_with(Hull::empty);
+        let output = match pyramids {
+            Some(contact_of) => h.rebuild_with_flats(w, contact_of, 2, strategy)?,
+            None => h.rebuild_with_strategy(w, strategy)?,
+        };
+        Ok((h, output))
     }
 }
 
@@ -232,6 +233,7 @@ impl Evaluator {
             method,
             cones: SnappedCones::default(),
             wrenches: Vec::new(),
+            pyramids: Vec::new(),
             buffers: HullBuffers::default(),
         }
     }
@@ -261,13 +263,15 @@ impl Evaluator {
         let mut quality = match self.metric {
             Metric::Q1 => {
                 snapped_union(&self.cones, &mut self.wrenches);
-                self.explicit(started)?
+                let edges = self.cones.angles.len();
+                pyramid_labels(grasp.contact_count(), edges, &mut self.pyramids);
+                self.explicit(started, true)?
             }
             Metric::QInf { with_zero_wrench } => match self.method {
                 Method::Partial => minkowski::partial(&self.cones, with_zero_wrench)?,
                 _ => {
                     minkowski::materialise(&self.cones, with_zero_wrench, &mut self.wrenches)?;
-                    self.explicit(started)?
+                    self.explicit(started, false)?
                 }
             },
         };
@@ -275,12 +279,14 @@ impl Evaluator {
         Ok(quality)
     }
 
-    /// The metric over the explicit point set in `self.wrenches`.
-    fn explicit(&mut self, started: Instant) -> Result<Quality, QualityError> {
+    /// The metric over the explicit point set in `self.wrenches`, whose friction pyramids are
+    /// labelled in `self.pyramids` when `pyramids`.
+    fn explicit(&mut self, started: Instant, pyramids: bool) -> Result<Quality, QualityError> {
         let w = &self.wrenches;
+        let pyramids = pyramids.then_some(self.pyramids.as_slice());
         match self.method {
-            Method::Partial => Ok(partial_q1(w, started, &mut self.buffers)),
-            Method::Full => Ok(full_q1(w, started, &mut self.buffers)),
+            Method::Partial => Ok(partial_q1(w, pyramids, started, &mut self.buffers)),
+            Method::Full => Ok(full_q1(w, pyramids, started, &mut self.buffers)),
             #[cfg(feature = "qhull")]
             Method::Qhull => qhull_q1(w, started),
         }
@@ -342,8 +348,8 @@ pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Quality, 
     }
     let started = Instant::now();
     let mut quality = match method {
-        Method::Partial => partial_q1(wrenches, started, &mut HullBuffers::default()),
-        Method::Full => full_q1(wrenches, started, &mut HullBuffers::default()),
+        Method::Partial => partial_q1(wrenches, None, started, &mut HullBuffers::default()),
+        Method::Full => full_q1(wrenches, None, started, &mut HullBuffers::default()),
         #[cfg(feature = "qhull")]
         Method::Qhull => qhull_q1(wrenches, started)?,
     };
@@ -385,7 +391,13 @@ fn degenerate(w: &[[f64; 6]], started: Instant) -> Quality {
     Quality::new(-nearest.distance, support, no_hull_stats(w.len(), started))
 }
 
-fn partial_q1(w: &[[f64; 6]], started: Instant, buffers: &mut HullBuffers) -> Quality {
+/// Q1 of `w` by the partial hull; `pyramids` as in [`HullBuffers::build`].
+fn partial_q1(
+    w: &[[f64; 6]],
+    pyramids: Option<&[u32]>,
+    started: Instant,
+    buffers: &mut HullBuffers,
+) -> Quality {
     // Most grasps that are not force closure are separated from the origin by GJK, certified,
     // without a hull; the rest (force closure, or the origin within rounding of the boundary) go
     // on to the exact partial hull.
@@ -405,7 +417,7 @@ fn partial_q1(w: &[[f64; 6]], started: Instant, buffers: &mut HullBuffers) -> Qu
             no_hull_stats(1 + inserted, started),
         );
     }
-    match HullBuffers::build(&mut buffers.hull, w, &mut buffers.nearest) {
+    match HullBuffers::build(&mut buffers.hull, w, pyramids, &mut buffers.nearest) {
         Ok((_, result)) => Quality::new(
             result.signed_distance,
             result.closest_facet_vertices.iter().map(|&v| w[v]),
@@ -418,8 +430,15 @@ fn partial_q1(w: &[[f64; 6]], started: Instant, buffers: &mut HullBuffers) -> Qu
     }
 }
 
-fn full_q1(w: &[[f64; 6]], started: Instant, buffers: &mut HullBuffers) -> Quality {
-    let hull = match HullBuffers::build(&mut buffers.hull, w, crate::FarthestPoint::new()) {
+/// Q1 of `w` from the full hull; `pyramids` as in [`HullBuffers::build`].
+fn full_q1(
+    w: &[[f64; 6]],
+    pyramids: Option<&[u32]>,
+    started: Instant,
+    buffers: &mut HullBuffers,
+) -> Quality {
+    let strategy = crate::FarthestPoint::new();
+    let hull = match HullBuffers::build(&mut buffers.hull, w, pyramids, strategy) {
         Ok((hull, ())) => hull,
         Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
             return degenerate(w, started);

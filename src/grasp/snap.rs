@@ -111,11 +111,20 @@ pub(crate) fn snapped_union(cones: &SnappedCones, out: &mut Vec<[f64; 6]>) {
     }
 }
 
+/// The contact of every wrench of [`snapped_union`] (`contacts` pyramids of `edges` wrenches):
+/// the flats to declare to the hull engine, each pyramid lying exactly in one 2-D affine plane
+/// (see the module docs).
+pub(crate) fn pyramid_labels(contacts: usize, edges: usize, out: &mut Vec<u32>) {
+    out.clear();
+    out.extend((0..contacts as u32).flat_map(|i| std::iter::repeat_n(i, edges)));
+}
+
 #[cfg(test)]
 mod tests {
-    use crate::Hull;
-    use crate::HullError;
+    use super::pyramid_labels;
     use crate::grasp::{Contact, FrictionModel, Grasp};
+    use crate::rbox::Rng;
+    use crate::{ClosestToOrigin, FarthestPoint, Hull, HullError};
 
     fn grasp(k: usize) -> Grasp {
         let contacts = vec![
@@ -158,5 +167,88 @@ mod tests {
             Err(e) => panic!("{e}"),
         };
         assert!(raw_rank > 2, "raw rank {raw_rank}");
+    }
+
+    /// A grasp with `m` contacts at random points with random normals and tangents.
+    fn random_grasp(rng: &mut Rng, m: usize, k: usize) -> Grasp {
+        let mut vector = |rng: &mut Rng| std::array::from_fn(|_| rng.uniform_in(-1.0, 1.0));
+        let contacts = (0..m)
+            .map(|_| {
+                let position: [f64; 3] = vector(rng);
+                let normal: [f64; 3] = vector(rng);
+                let tangent = (rng.uniform() < 0.5).then(|| vector(rng));
+                Contact::try_new(position, normal, tangent)
+                    .or_else(|_| Contact::try_new(position, normal, None))
+                    .unwrap()
+            })
+            .collect();
+        Grasp::builder(
+            contacts,
+            FrictionModel::try_new(rng.uniform_in(0.2, 1.0), k).unwrap(),
+        )
+        .torque_scale(rng.uniform_in(0.3, 2.0))
+        .build()
+        .unwrap()
+    }
+
+    /// Declaring the pyramids as flats changes no hull, and the claim holds exactly: `check`
+    /// verifies every point of every flat a facet is taken to contain with the exact predicate.
+    #[test]
+    fn declared_pyramids_hold_exactly_and_change_no_hull() {
+        let mut rng = Rng::new(42);
+        let mut hinted = Hull::<6>::empty();
+        let mut flats = Vec::new();
+        let mut wrenches = Vec::new();
+        let mut contains_a_flat = 0;
+        for case in 0..60 {
+            let (m, k) = (2 + case % 4, 3 + rng.index(10));
+            let grasp = random_grasp(&mut rng, m, k);
+            grasp.snapped_wrenches_into(&mut wrenches);
+            pyramid_labels(m, k, &mut flats);
+            let plain = match Hull::try_new(&wrenches) {
+                Ok(hull) => hull,
+                Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
+                    continue;
+                }
+                Err(e) => panic!("case {case}: {e}"),
+            };
+            hinted
+                .rebuild_with_flats(&wrenches, &flats, 2, FarthestPoint::new())
+                .unwrap();
+            hinted
+                .check()
+                .unwrap_or_else(|e| panic!("case {case}: {e}"));
+            let facets = |hull: &Hull<6>| {
+                let mut all: Vec<[usize; 6]> = hull
+                    .facets()
+                    .map(|(_, f)| {
+                        let mut v = f.vertices();
+                        v.sort_unstable();
+                        v
+                    })
+                    .collect();
+                all.sort_unstable();
+                all
+            };
+            assert_eq!(facets(&hinted), facets(&plain), "case {case}");
+            contains_a_flat += hinted
+                .facets()
+                .filter(|(_, f)| f.flats.iter().any(|&g| g != crate::hull::NO_FLAT))
+                .count();
+            // The partial strategy reaches the same answer, bit for bit.
+            let a = hinted
+                .rebuild_with_flats(&wrenches, &flats, 2, ClosestToOrigin::new())
+                .unwrap();
+            let (_, b) = Hull::try_with_strategy(&wrenches, ClosestToOrigin::new()).unwrap();
+            assert_eq!(a.signed_distance, b.signed_distance, "case {case}");
+            assert_eq!(
+                a.closest_facet_vertices, b.closest_facet_vertices,
+                "case {case}"
+            );
+        }
+        assert!(
+            contains_a_flat > 100,
+            "{contains_a_flat} facets contain a pyramid"
+        );
     }
 }

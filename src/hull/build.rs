@@ -1,8 +1,9 @@
 //! Input validation, scaling and the initial simplex.
 
 use super::expand::Scratch;
+use super::facet::MAX_FLATS;
 use super::facet::{Facet, FacetId, dot};
-use super::{Hull, HullError};
+use super::{Hull, HullError, NO_FLAT};
 use crate::predicates::{FacetPlane, Sign, affinely_independent_subset, orientation};
 use crate::strategy::Stats;
 use std::time::Instant;
@@ -10,7 +11,14 @@ use std::time::Instant;
 impl<const D: usize> Hull<D> {
     /// Validates the input, scales it, builds the initial simplex and the first outside sets.
     pub(crate) fn try_initial(input: &[[f64; D]]) -> Result<Self, HullError> {
-        let mut hull = Hull {
+        let mut hull = Self::empty();
+        hull.initialise(input)?;
+        Ok(hull)
+    }
+
+    /// A hull with no point and no facet, to be filled by [`initialise`](Self::initialise).
+    pub(crate) fn empty() -> Self {
+        Hull {
             points: Vec::new(),
             scale: 1.0,
             facets: Vec::new(),
@@ -22,10 +30,10 @@ impl<const D: usize> Hull<D> {
             stats: Stats::default(),
             started: Instant::now(),
             scratch: Scratch::default(),
+            flat_of: Vec::new(),
+            flat_dim: 0,
             trace: None,
-        };
-        hull.initialise(input)?;
-        Ok(hull)
+        }
     }
 
     /// [`try_initial`](Self::try_initial) into this hull's storage: every facet slot is freed (its
@@ -153,6 +161,7 @@ impl<const D: usize> Hull<D> {
         let precise = error <= 1e-11 * largest;
         let normal = plane.cofactors().map(|c| c * inv_norm);
         let offset = dot(&normal, &coords[0]) / self.scale;
+        let flats = self.flats_within(&vertices);
         let serial = self.next_serial;
         self.next_serial += 1;
         self.stats.facets_created += 1;
@@ -165,6 +174,7 @@ impl<const D: usize> Hull<D> {
             normal,
             precise,
             offset,
+            flats,
             outside,
             farthest: None,
             alive: true,
@@ -195,6 +205,9 @@ impl<const D: usize> Hull<D> {
         let mut undecided = false;
         for &id in candidates {
             let facet = &self.facets[id.index()];
+            if self.on_its_flat(facet, p) {
+                continue; // exactly on the plane
+            }
             let (value, bound) = facet.plane.evaluate(&point);
             if value > bound {
                 let distance = value * facet.inv_norm;
@@ -234,6 +247,51 @@ impl<const D: usize> Hull<D> {
     pub(crate) fn side(&self, id: FacetId, x: &[f64; D]) -> Sign {
         let facet = &self.facets[id.index()];
         facet.plane.side(x, || self.coords(&facet.vertices))
+    }
+
+    /// Exact side of input point `p` relative to facet `id`: [`side`](Self::side), or `Zero` at
+    /// once when the facet contains the declared flat holding `p`.
+    pub(crate) fn side_of_index(&self, id: FacetId, p: u32) -> Sign {
+        let facet = &self.facets[id.index()];
+        if self.on_its_flat(facet, p) {
+            return Sign::Zero;
+        }
+        facet
+            .plane
+            .side(&self.points[p as usize], || self.coords(&facet.vertices))
+    }
+
+    /// Whether input point `p` lies in a declared flat that `facet`'s hyperplane contains.
+    #[inline]
+    fn on_its_flat(&self, facet: &Facet<D>, p: u32) -> bool {
+        match self.flat_of.get(p as usize) {
+            Some(&flat) if flat != NO_FLAT => facet.flats.contains(&flat),
+            _ => false,
+        }
+    }
+
+    /// The declared flats with at least `flat_dim + 1` points among `vertices` (so, the vertices
+    /// being affinely independent, contained in their hyperplane), padded with [`NO_FLAT`].
+    fn flats_within(&self, vertices: &[u32; D]) -> [u32; MAX_FLATS] {
+        let mut flats = [NO_FLAT; MAX_FLATS];
+        if self.flat_of.is_empty() {
+            return flats;
+        }
+        let flat = |v: u32| self.flat_of.get(v as usize).copied().unwrap_or(NO_FLAT);
+        let mut found = 0;
+        for (i, &v) in vertices.iter().enumerate() {
+            let f = flat(v);
+            // Count each flat once, at its first vertex.
+            if f == NO_FLAT || vertices[..i].iter().any(|&u| flat(u) == f) {
+                continue;
+            }
+            let members = vertices[i..].iter().filter(|&&u| flat(u) == f).count();
+            if members > self.flat_dim && found < MAX_FLATS {
+                flats[found] = f;
+                found += 1;
+            }
+        }
+        flats
     }
 }
 

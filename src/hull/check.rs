@@ -1,7 +1,7 @@
 //! The public validator: every invariant the engine promises, checked from scratch.
 
 use super::facet::{FacetId, dot};
-use super::{Hull, InvariantViolation};
+use super::{Hull, InvariantViolation, NO_FLAT};
 use crate::predicates::Sign;
 
 impl<const D: usize> Hull<D> {
@@ -15,6 +15,8 @@ impl<const D: usize> Hull<D> {
     ///   [`Hull::refine_normals`](crate::Hull::refine_normals) would install;
     /// * every input point lies weakly inside every live facet (exact predicate), except the points
     ///   in outside sets, which must lie strictly beyond their own facet (partial hulls);
+    /// * every point of a declared affine flat that a facet is taken to contain (see the
+    ///   engine's flat hints, used for friction pyramids) lies exactly on the facet's plane;
     /// * the arena's live count matches.
     ///
     /// Cost: one exact predicate per (point, facet) pair, so use it in tests, not in hot loops.
@@ -86,6 +88,22 @@ impl<const D: usize> Hull<D> {
                         "point {p} is in facet {}'s outside set but not beyond it",
                         id.0
                     ));
+                }
+            }
+        }
+        // The flat hints are trusted by the engine; here they are checked with the exact
+        // predicate alone.
+        for &id in &live {
+            for &flat in self.facet(id).flats.iter().filter(|&&f| f != NO_FLAT) {
+                let members = (0..self.flat_of.len()).filter(|&p| self.flat_of[p] == flat);
+                for p in members {
+                    if self.side(id, &self.points[p]) != Sign::Zero {
+                        return fail(format!(
+                            "point {p} of declared flat {flat} is off facet {}, which is taken \
+                             to contain the flat",
+                            id.0
+                        ));
+                    }
                 }
             }
         }

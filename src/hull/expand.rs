@@ -131,7 +131,7 @@ impl<const D: usize> Hull<D> {
             let mut outside = std::mem::take(&mut self.facets[other].outside);
             let before = outside.len();
             outside.retain(|&p| {
-                let beyond = self.side(id, &self.points[p as usize]) == Sign::Positive;
+                let beyond = self.side_of_index(id, p) == Sign::Positive;
                 if beyond {
                     claimed.push(p);
                 }
@@ -174,7 +174,6 @@ impl<const D: usize> Hull<D> {
     fn collect_visible(&mut self, start: FacetId, p: u32) {
         self.epoch = self.epoch.wrapping_add(1);
         let epoch = self.epoch;
-        let point = self.points[p as usize];
         let scratch = &mut self.scratch;
         scratch.removed.clear();
         scratch.horizon.clear();
@@ -191,7 +190,7 @@ impl<const D: usize> Hull<D> {
                 let visible = if neighbor.mark == epoch {
                     neighbor.visible
                 } else {
-                    let visible = self.side(n, &point) != Sign::Negative;
+                    let visible = self.side_of_index(n, p) != Sign::Negative;
                     let neighbor = &mut self.facets[n.index()];
                     neighbor.mark = epoch;
                     neighbor.visible = visible;

@@ -21,6 +21,10 @@ impl FacetId {
     pub(crate) const NONE: FacetId = FacetId(u32::MAX);
 }
 
+/// At most this many declared flats, each of dimension ≥ 1 (so with ≥ 2 vertices), fit in the
+/// D ≤ 8 vertices of one facet.
+pub(crate) const MAX_FLATS: usize = 4;
+
 /// A simplicial facet of a hull: D vertices, D neighbours, an outward plane.
 ///
 /// Neighbour `i` is the facet across the ridge opposite vertex `i`. The vertex order is oriented:
@@ -41,6 +45,9 @@ pub struct Facet<const D: usize> {
     pub(crate) precise: bool,
     /// Offset in the caller's coordinates.
     pub(crate) offset: f64,
+    /// Declared flats (see `Hull::rebuild_with_flats`) that this facet's hyperplane contains,
+    /// padded with `NO_FLAT`.
+    pub(crate) flats: [u32; MAX_FLATS],
     /// Input indices of the points assigned to this facet (each strictly beyond it).
     pub(crate) outside: Vec<u32>,
     /// Position in `outside` of the point farthest beyond, with its orientation value.

@@ -30,6 +30,9 @@ pub use facet::{Facet, FacetId};
 use crate::predicates::Sign;
 use crate::strategy::{FarthestPoint, Stats, Step, Strategy};
 pub(crate) use facet::dot;
+
+/// No declared flat (see [`Hull::rebuild_with_flats`]).
+pub(crate) const NO_FLAT: u32 = u32::MAX;
 use std::time::Instant;
 
 /// A convex hull in dimension `D` (2 ≤ D ≤ 8), full or partial depending on the strategy that grew
@@ -64,6 +67,11 @@ pub struct Hull<const D: usize> {
     stats: Stats,
     started: Instant,
     scratch: expand::Scratch<D>,
+    /// Per input point, the declared affine flat holding it ([`NO_FLAT`] for none); empty when
+    /// nothing was declared (see [`Hull::rebuild_with_flats`]).
+    flat_of: Vec<u32>,
+    /// The dimension of every declared flat.
+    flat_dim: usize,
     /// The run being recorded, if any ([`Hull::try_with_strategy_traced`]); `None` costs each
     /// trace hook one branch.
     trace: Option<Box<crate::viz::Trace<D>>>,
@@ -133,6 +141,38 @@ impl<const D: usize> Hull<D> {
         points: &[[f64; D]],
         strategy: S,
     ) -> Result<S::Output, HullError> {
+        self.flat_of.clear();
+        self.initialise(points)?;
+        Ok(self.run_in_place(strategy))
+    }
+
+    /// [`rebuild_with_strategy`](Self::rebuild_with_strategy) for points of which some are known
+    /// to lie, *exactly*, in common affine flats of dimension `flat_dim`: `flat_of[i]` names the
+    /// flat holding point `i` ([`NO_FLAT`] for none; missing entries count as none).
+    ///
+    /// A facet with `flat_dim + 1` vertices in one flat contains that flat (a facet's vertices
+    /// are affinely independent, so those vertices span it), and every other point of the flat
+    /// lies exactly on the facet's hyperplane: the engine then answers `Zero` without arithmetic.
+    /// The friction pyramids of a grasp are such flats (`flat_dim` 2, made exact by snapping): a
+    /// point of a pyramid tested against a facet through three of its edges is the common case in
+    /// which the floating-point filter fails and exact arithmetic is needed.
+    ///
+    /// Crate-private because the claim is trusted, not checked: a point declared in a flat it is
+    /// not in makes wrong hulls. Callers prove it by construction (see `grasp::snap`).
+    pub(crate) fn rebuild_with_flats<S: Strategy<D>>(
+        &mut self,
+        points: &[[f64; D]],
+        flat_of: &[u32],
+        flat_dim: usize,
+        strategy: S,
+    ) -> Result<S::Output, HullError> {
+        debug_assert!(
+            (1..D).contains(&flat_dim),
+            "flats of dimension 1..D − 1, got {flat_dim}"
+        );
+        self.flat_of.clear();
+        self.flat_of.extend_from_slice(flat_of);
+        self.flat_dim = flat_dim;
         self.initialise(points)?;
         Ok(self.run_in_place(strategy))
     }

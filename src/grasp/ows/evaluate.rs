@@ -3,6 +3,7 @@
 use super::ObjectWrenchSpace;
 use crate::grasp::Grasp;
 use crate::grasp::quality::{HullBuffers, Method, QualityError, q1_of_wrenches};
+use crate::grasp::snap::pyramid_labels;
 use crate::hull::{Hull, HullError};
 use crate::predicates::Sign;
 use crate::strategy::{OwsInflation, Stats, inflation_factor};
@@ -76,6 +77,8 @@ pub fn relative_error(approximate: f64, exact: f64) -> f64 {
 pub struct OwsEvaluator {
     method: OwsMethod,
     wrenches: Vec<[f64; 6]>,
+    /// The contact of every wrench (its friction pyramid, an exact flat for the hull engine).
+    pyramids: Vec<u32>,
     /// The grasp hull's arena, reused from grasp to grasp.
     hull: Option<Hull<6>>,
 }
@@ -86,6 +89,7 @@ impl OwsEvaluator {
         OwsEvaluator {
             method,
             wrenches: Vec::new(),
+            pyramids: Vec::new(),
             hull: None,
         }
     }
@@ -118,7 +122,10 @@ impl OwsEvaluator {
         }
         let started = Instant::now();
         grasp.snapped_wrenches_into(&mut self.wrenches);
-        let mut quality = ows_with(&self.wrenches, space, self.method, &mut self.hull)?;
+        let edges = grasp.friction().cone_edges();
+        pyramid_labels(grasp.contact_count(), edges, &mut self.pyramids);
+        let pyramids = Some(self.pyramids.as_slice());
+        let mut quality = ows_with(&self.wrenches, pyramids, space, self.method, &mut self.hull)?;
         quality.stats.elapsed = started.elapsed();
         Ok(quality)
     }
@@ -134,7 +141,7 @@ pub fn ows_of_wrenches(
     method: OwsMethod,
 ) -> Result<OwsQuality, QualityError> {
     let started = Instant::now();
-    let mut quality = ows_with(wrenches, space, method, &mut None)?;
+    let mut quality = ows_with(wrenches, None, space, method, &mut None)?;
     quality.stats.elapsed = started.elapsed();
     Ok(quality)
 }
@@ -148,8 +155,10 @@ fn not_force_closure(stats: Stats) -> OwsQuality {
     }
 }
 
+/// `pyramids` as in [`HullBuffers::build`].
 fn ows_with(
     wrenches: &[[f64; 6]],
+    pyramids: Option<&[u32]>,
     space: &ObjectWrenchSpace,
     method: OwsMethod,
     hull: &mut Option<Hull<6>>,
@@ -160,25 +169,28 @@ fn ows_with(
     match method {
         OwsMethod::Partial => Ok(partial(
             wrenches,
+            pyramids,
             OwsInflation::with_index(space.support_index()),
             hull,
         )),
         OwsMethod::PartialRays => Ok(partial(
             wrenches,
+            pyramids,
             OwsInflation::new(space.disturbances()),
             hull,
         )),
-        OwsMethod::BruteForce => Ok(brute_force(wrenches, space, hull)),
+        OwsMethod::BruteForce => Ok(brute_force(wrenches, pyramids, space, hull)),
         OwsMethod::Ellipsoid => ellipsoid(wrenches, space),
     }
 }
 
 fn partial(
     wrenches: &[[f64; 6]],
+    pyramids: Option<&[u32]>,
     strategy: OwsInflation<'_, 6>,
     hull: &mut Option<Hull<6>>,
 ) -> OwsQuality {
-    match HullBuffers::build(hull, wrenches, strategy) {
+    match HullBuffers::build(hull, wrenches, pyramids, strategy) {
         Ok((_, result)) => OwsQuality {
             force_closure: result.is_force_closure(),
             value: result.value,
@@ -195,10 +207,11 @@ fn partial(
 
 fn brute_force(
     wrenches: &[[f64; 6]],
+    pyramids: Option<&[u32]>,
     space: &ObjectWrenchSpace,
     hull: &mut Option<Hull<6>>,
 ) -> OwsQuality {
-    let hull = match HullBuffers::build(hull, wrenches, crate::FarthestPoint::new()) {
+    let hull = match HullBuffers::build(hull, wrenches, pyramids, crate::FarthestPoint::new()) {
         Ok((hull, ())) => hull,
         Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
             return not_force_closure(Stats::default());
