@@ -171,7 +171,7 @@ mod tests {
 
     /// A grasp with `m` contacts at random points with random normals and tangents.
     fn random_grasp(rng: &mut Rng, m: usize, k: usize) -> Grasp {
-        let mut vector = |rng: &mut Rng| std::array::from_fn(|_| rng.uniform_in(-1.0, 1.0));
+        let vector = |rng: &mut Rng| std::array::from_fn(|_| rng.uniform_in(-1.0, 1.0));
         let contacts = (0..m)
             .map(|_| {
                 let position: [f64; 3] = vector(rng);
