@@ -54,28 +54,33 @@ impl Wide {
         }
     }
 
-    /// `self += a · m`, or `self -= a · m` when `subtract`.
+    /// `self += a · m`, or `self -= a · m` when `subtract`: one pass over the limbs, the product
+    /// limb by limb into a carry (addition) or a borrow (subtraction), so no temporary is built.
     fn add_product(&mut self, a: i64, subtract: bool, m: &Wide, len: usize) {
         if a == 0 {
             return;
         }
-        let mut product = Wide::ZERO;
         let factor = u128::from(a.unsigned_abs());
-        let mut carry = 0u128;
-        for (out, &limb) in product.0[..len].iter_mut().zip(&m.0) {
-            let t = u128::from(limb) * factor + carry;
-            *out = t as u64;
-            carry = t >> 64;
-        }
-        if (a < 0) != subtract {
-            product.negate(len);
-        }
-        let mut carry = 0u64;
-        for (limb, &p) in self.0[..len].iter_mut().zip(&product.0) {
-            let (s1, c1) = limb.overflowing_add(p);
-            let (s2, c2) = s1.overflowing_add(carry);
-            *limb = s2;
-            carry = u64::from(c1) + u64::from(c2);
+        // Arithmetic modulo 2^(64·len): the unsigned product of |a| and m's two's-complement
+        // limbs is |a|·m modulo it, added or subtracted according to the sign.
+        let negative = (a < 0) != subtract;
+        let mut product_carry = 0u128;
+        let mut carry = 0u64; // or borrow
+        for (limb, &factor_limb) in self.0[..len].iter_mut().zip(&m.0) {
+            let t = u128::from(factor_limb) * factor + product_carry;
+            let p = t as u64;
+            product_carry = t >> 64;
+            if negative {
+                let (d1, b1) = limb.overflowing_sub(p);
+                let (d2, b2) = d1.overflowing_sub(carry);
+                *limb = d2;
+                carry = u64::from(b1) + u64::from(b2);
+            } else {
+                let (s1, c1) = limb.overflowing_add(p);
+                let (s2, c2) = s1.overflowing_add(carry);
+                *limb = s2;
+                carry = u64::from(c1) + u64::from(c2);
+            }
         }
     }
 
