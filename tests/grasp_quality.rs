@@ -239,6 +239,10 @@ fn q_inf_implicit_equals_materialised() {
             force_closure += usize::from(a.force_closure);
             // Separated by the support-function GJK, no hull built.
             by_gjk += usize::from(!a.force_closure && a.stats.facets_created == 0);
+            if with_zero_wrench && !a.force_closure {
+                // The origin, a point of the sum, is on its boundary.
+                assert_eq!((a.value, b.value), (0.0, 0.0), "case {case}");
+            }
         }
     }
     assert!(force_closure > 0);
@@ -293,4 +297,41 @@ fn q_inf_of_a_flat_sum_too_large_to_materialise() {
         full,
         Err(pqhull::grasp::quality::QualityError::MinkowskiTooLarge { .. })
     ));
+}
+
+/// Flat sums small enough to materialise: the partial method's GJK (no hull, nothing
+/// materialised) agrees with Wolfe's algorithm over the full materialised sum, both for a pinch
+/// whose flat sum holds the origin and for one that misses it.
+#[test]
+fn q_inf_of_flat_sums_agrees_with_the_materialised_sum() {
+    let pinch = |offset: f64| {
+        Grasp::try_new(
+            vec![
+                Contact::try_new([-1.0, offset, 0.0], [1.0, 0.0, 0.0], None).unwrap(),
+                Contact::try_new([1.0, 0.0, 0.0], [-1.0, 0.2, 0.0], None).unwrap(),
+            ],
+            FrictionModel::try_new(0.3, 12).unwrap(),
+        )
+        .unwrap()
+    };
+    for offset in [0.0, 0.4] {
+        for with_zero_wrench in [false, true] {
+            let metric = Metric::QInf { with_zero_wrench };
+            let grasp = pinch(offset);
+            let a = Evaluator::new(metric, Method::Partial)
+                .evaluate(&grasp)
+                .unwrap();
+            let b = Evaluator::new(metric, Method::Full)
+                .evaluate(&grasp)
+                .unwrap();
+            let what = format!("offset {offset}, zero {with_zero_wrench}");
+            agree(&a, &b, &what);
+            assert!(!a.force_closure, "{what}");
+            assert_eq!(a.stats.facets_created, 0, "{what}: no hull");
+            assert!(
+                a.stats.points_processed < 144,
+                "{what}: nothing materialised"
+            );
+        }
+    }
 }

@@ -56,7 +56,7 @@ use super::snap::{SnappedCones, pyramid_labels, snapped_union};
 use crate::strategy::nearest::{min_norm_point, nearest_in_simplex};
 use crate::strategy::{ClosestToOrigin, Stats};
 use crate::{Hull, HullError};
-use separation::{GJK_ITERATIONS, Gjk, gjk, largest_norm, support_of};
+use separation::{GJK_ITERATIONS, Gjk, TOUCHING, Verdict, largest_norm, support_of};
 use std::fmt;
 use std::time::Instant;
 
@@ -197,6 +197,7 @@ pub struct Evaluator {
     /// The contact of every wrench, when `wrenches` holds the snapped pyramids.
     pyramids: Vec<u32>,
     buffers: HullBuffers,
+    minkowski: minkowski::MinkowskiBuffers,
 }
 
 /// The hull and partial strategy a Q1 evaluation reuses from one wrench set to the next.
@@ -204,6 +205,7 @@ pub struct Evaluator {
 pub(crate) struct HullBuffers {
     hull: Option<Hull<6>>,
     nearest: ClosestToOrigin<6>,
+    gjk: Gjk,
 }
 
 impl HullBuffers {
@@ -235,6 +237,7 @@ impl Evaluator {
             wrenches: Vec::new(),
             pyramids: Vec::new(),
             buffers: HullBuffers::default(),
+            minkowski: minkowski::MinkowskiBuffers::default(),
         }
     }
 
@@ -268,7 +271,9 @@ impl Evaluator {
                 self.explicit(started, true)?
             }
             Metric::QInf { with_zero_wrench } => match self.method {
-                Method::Partial => minkowski::partial(&self.cones, with_zero_wrench)?,
+                Method::Partial => {
+                    minkowski::partial(&self.cones, with_zero_wrench, &mut self.minkowski)?
+                }
                 _ => {
                     minkowski::materialise(&self.cones, with_zero_wrench, &mut self.wrenches)?;
                     self.explicit(started, false)?
@@ -401,21 +406,13 @@ fn partial_q1(
     // Most grasps that are not force closure are separated from the origin by GJK, certified,
     // without a hull; the rest (force closure, or the origin within rounding of the boundary) go
     // on to the exact partial hull.
-    if let Gjk::Separated {
-        distance,
-        face,
-        inserted,
-    } = gjk(
-        |v| support_of(w, v),
-        largest_norm(w),
-        &w[..1],
-        GJK_ITERATIONS,
-    ) {
-        return Quality::new(
-            -distance,
-            face.into_iter(),
-            no_hull_stats(1 + inserted, started),
-        );
+    let gjk = &mut buffers.gjk;
+    let support = |v: &[f64; 6]| support_of(w, v);
+    if let Verdict::Separated { distance, inserted } =
+        gjk.run(support, largest_norm(w), &w[..1], GJK_ITERATIONS, TOUCHING)
+    {
+        let stats = no_hull_stats(1 + inserted, started);
+        return Quality::new(-distance, gjk.face().iter().copied(), stats);
     }
     match HullBuffers::build(&mut buffers.hull, w, pyramids, &mut buffers.nearest) {
         Ok((_, result)) => Quality::new(

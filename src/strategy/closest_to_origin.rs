@@ -175,6 +175,19 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
         }
     }
 
+    /// The implicit point source, to refill it between runs of a reused strategy (see the
+    /// `&mut ClosestToOrigin` impl of [`Strategy`]).
+    ///
+    /// ```
+    /// use pqhull::strategy::NoSource;
+    /// use pqhull::ClosestToOrigin;
+    /// let mut strategy = ClosestToOrigin::<2>::new();
+    /// let _: &mut NoSource = strategy.source_mut();
+    /// ```
+    pub fn source_mut(&mut self) -> &mut S {
+        &mut self.source
+    }
+
     /// Queues facet `id` keyed by how far the query lies beyond it — for a facet whose normal is
     /// not precise, a certified upper bound, so that no facet is popped later than it should be;
     /// its exact key is computed when it reaches the top.

@@ -1,30 +1,29 @@
 //! Q∞ over the Minkowski sum ⊕_i W_i, implicitly (support function) or materialised.
 
-use super::separation::{GJK_ITERATIONS, Gjk, gjk};
+use super::separation::{GJK_ITERATIONS, Gjk, TOUCHING, Verdict};
 use super::{Quality, QualityError, degenerate, no_hull_stats};
 use crate::grasp::snap::SnappedCones;
 use crate::hull::dot;
 use crate::predicates::Sign;
-use crate::strategy::{ClosestToOrigin, PointSource, Stats};
+use crate::strategy::{ClosestToOrigin, PointSource};
 use crate::{FacetId, Hull, HullError};
 use std::time::Instant;
 
 /// The most Minkowski points the full and Qhull methods materialise (2^20: 4 contacts × 32 edges).
 pub const MINKOWSKI_MATERIALISE_LIMIT: usize = 1 << 20;
 
-/// Per-contact wrench sets (with the zero wrench if asked).
-fn contact_sets(cones: &SnappedCones, with_zero_wrench: bool) -> Vec<Vec<[f64; 6]>> {
-    (0..cones.generators.len())
-        .map(|i| {
-            let mut set: Vec<[f64; 6]> = (0..cones.angles.len())
-                .map(|j| cones.wrench(i, j))
-                .collect();
-            if with_zero_wrench {
-                set.push([0.0; 6]);
-            }
-            set
-        })
-        .collect()
+/// Refills `sets` with the per-contact wrench sets (with the zero wrench if asked), reusing
+/// their buffers.
+fn fill_sets(sets: &mut Vec<Vec<[f64; 6]>>, cones: &SnappedCones, with_zero_wrench: bool) {
+    let contacts = cones.generators.len();
+    sets.resize_with(contacts, Vec::new);
+    for (i, set) in sets.iter_mut().enumerate() {
+        set.clear();
+        set.extend((0..cones.angles.len()).map(|j| cones.wrench(i, j)));
+        if with_zero_wrench {
+            set.push([0.0; 6]);
+        }
+    }
 }
 
 /// Σ_i sets[i][choice[i]], left to right (exact for snapped wrenches and up to 10 contacts).
@@ -44,7 +43,8 @@ pub(super) fn materialise(
     with_zero_wrench: bool,
     out: &mut Vec<[f64; 6]>,
 ) -> Result<(), QualityError> {
-    let sets = contact_sets(cones, with_zero_wrench);
+    let mut sets = Vec::new();
+    fill_sets(&mut sets, cones, with_zero_wrench);
     let per = sets.first().map_or(0, Vec::len);
     let count = u32::try_from(sets.len())
         .ok()
@@ -72,17 +72,54 @@ pub(super) fn materialise(
     }
 }
 
-/// The Minkowski sum answered through its support function.
-struct MinkowskiSource {
+/// The Minkowski sum answered through its support function; refilled per grasp in place.
+#[derive(Clone, Debug, Default)]
+pub(super) struct MinkowskiSource {
     sets: Vec<Vec<[f64; 6]>>,
     /// Per contact: the largest wrench norm (for the score slack), computed once per grasp.
     sizes: Vec<f64>,
     /// Per contact: (score, edge) of the candidates for the current facet.
     candidates: Vec<Vec<(f64, usize)>>,
     choice: Vec<usize>,
+    /// The odometer over tied candidates in [`PointSource::beyond`].
+    position: Vec<usize>,
+    /// Whether the last contact-set entry is the zero wrench.
+    with_zero_wrench: bool,
 }
 
 impl MinkowskiSource {
+    /// The sum for `cones`' grasp.
+    fn fill(&mut self, cones: &SnappedCones, with_zero_wrench: bool) {
+        fill_sets(&mut self.sets, cones, with_zero_wrench);
+        self.with_zero_wrench = with_zero_wrench;
+        self.sizes.clear();
+        self.sizes.extend(
+            self.sets
+                .iter()
+                .map(|set| set.iter().map(|w| dot(w, w).sqrt()).fold(0.0, f64::max)),
+        );
+        self.candidates.resize_with(self.sets.len(), Vec::new);
+    }
+
+    /// A bound on the norm of every point of the sum.
+    fn scale(&self) -> f64 {
+        self.sizes.iter().sum()
+    }
+
+    /// The support point of the union of the contacts' cone edges (no zero wrench): the hull
+    /// whose force closure Q∞ with the zero wrench shares.
+    fn union_support(&self, direction: &[f64; 6]) -> [f64; 6] {
+        let zero = usize::from(self.with_zero_wrench);
+        let mut best = (f64::NEG_INFINITY, [0.0; 6]);
+        for w in self.sets.iter().flat_map(|set| &set[..set.len() - zero]) {
+            let height = dot(direction, w);
+            if height > best.0 {
+                best = (height, *w);
+            }
+        }
+        best.1
+    }
+
     /// Each contact's support edge for `direction`, into `self.choice`.
     fn support_choice(&mut self, direction: &[f64; 6]) {
         self.choice.clear();
@@ -138,12 +175,14 @@ impl PointSource<6> for MinkowskiSource {
             return Some(top);
         }
         // Near a true facet of the sum: enumerate the (few) tied tuples exactly.
-        let mut position = vec![0usize; self.sets.len()];
-        loop {
+        let mut position = std::mem::take(&mut self.position);
+        position.clear();
+        position.resize(self.sets.len(), 0);
+        let found = 'odometer: loop {
             let mut i = position.len();
             loop {
                 if i == 0 {
-                    return None;
+                    break 'odometer None;
                 }
                 i -= 1;
                 position[i] += 1;
@@ -157,9 +196,11 @@ impl PointSource<6> for MinkowskiSource {
                 position.iter().zip(&self.candidates).map(|(&p, c)| c[p].1),
             );
             if hull.side_of(id, &point) == Sign::Positive {
-                return Some(point);
+                break Some(point);
             }
-        }
+        };
+        self.position = position;
+        found
     }
 
     fn support(&mut self, direction: &[f64; 6]) -> Option<[f64; 6]> {
@@ -170,135 +211,153 @@ impl PointSource<6> for MinkowskiSource {
 
 /// Fixed directions that seed the partial hull: ± every axis (so the hull's coordinate range
 /// covers every Minkowski point) and the 2·15 diagonals e_a ± e_b.
-fn seed_directions() -> Vec<[f64; 6]> {
-    let mut directions = Vec::new();
-    for a in 0..6 {
-        for sign in [1.0, -1.0] {
-            let mut d = [0.0; 6];
-            d[a] = sign;
-            directions.push(d);
+const SEED_DIRECTIONS: [[f64; 6]; 42] = {
+    let mut directions = [[0.0; 6]; 42];
+    let mut n = 0;
+    let mut a = 0;
+    while a < 6 {
+        directions[n][a] = 1.0;
+        directions[n + 1][a] = -1.0;
+        n += 2;
+        let mut b = a + 1;
+        while b < 6 {
+            directions[n][a] = 1.0;
+            directions[n][b] = 1.0;
+            directions[n + 1][a] = 1.0;
+            directions[n + 1][b] = -1.0;
+            n += 2;
+            b += 1;
         }
-        for b in a + 1..6 {
-            for sign in [1.0, -1.0] {
-                let mut d = [0.0; 6];
-                d[a] = 1.0;
-                d[b] = sign;
-                directions.push(d);
-            }
-        }
+        a += 1;
     }
     directions
+};
+
+/// What a Q∞ evaluation by the partial method reuses from grasp to grasp: the implicit source
+/// (inside the strategy, with its queue), the seeds, GJK's corral and the hull's arena.
+#[derive(Clone, Debug)]
+pub(super) struct MinkowskiBuffers {
+    nearest: ClosestToOrigin<6, MinkowskiSource>,
+    seeds: Vec<[f64; 6]>,
+    gjk: Gjk,
+    hull: Option<Hull<6>>,
 }
 
-/// The implicit sum of `sets`.
-fn minkowski_source(sets: Vec<Vec<[f64; 6]>>) -> MinkowskiSource {
-    MinkowskiSource {
-        sizes: sets
-            .iter()
-            .map(|set| set.iter().map(|w| dot(w, w).sqrt()).fold(0.0, f64::max))
-            .collect(),
-        candidates: vec![Vec::new(); sets.len()],
-        choice: Vec::new(),
-        sets,
+impl Default for MinkowskiBuffers {
+    fn default() -> Self {
+        MinkowskiBuffers {
+            nearest: ClosestToOrigin::with_source([0.0; 6], MinkowskiSource::default()),
+            seeds: Vec::new(),
+            gjk: Gjk::default(),
+            hull: None,
+        }
     }
 }
 
-/// When the origin lies clearly outside the sum: its distance and the support points spanning
-/// the nearest face, without building a hull, whose growth over the sum's finely faceted
-/// boundary costs up to 10⁵ inserted points there. `None` when the origin is inside, within
-/// rounding of the boundary, or not separated within [`GJK_ITERATIONS`] (see [`gjk`] for the
-/// certificate).
-fn outside_by_gjk(
-    source: &mut MinkowskiSource,
-    seeds: &[[f64; 6]],
-) -> Option<(f64, Vec<[f64; 6]>, usize)> {
-    match minkowski_gjk(source, seeds, GJK_ITERATIONS) {
-        Gjk::Separated {
-            distance,
-            face,
-            inserted,
-        } => Some((distance, face, inserted)),
-        Gjk::Touching { .. } | Gjk::Undecided => None,
-    }
-}
-
-/// [`gjk`] over the sum's support function; its points are bounded by the sum of the contacts'
-/// largest norms.
-fn minkowski_gjk(source: &mut MinkowskiSource, seeds: &[[f64; 6]], iterations: usize) -> Gjk {
-    let scale: f64 = source.sizes.iter().sum();
-    gjk(
-        |v| source.support(v).expect("a contact has cone edges"),
-        scale,
-        seeds,
-        iterations,
-    )
-}
-
+/// Q∞ of the grasp behind `cones` by the partial hull over the implicit Minkowski sum.
+///
+/// In order, each step only when the previous one cannot decide:
+/// 1. with the zero wrench, GJK on the *union* of the cone edges: a certified separation means
+///    the grasp is not force closure, and then Q∞ = 0 exactly (the origin, a point of the sum,
+///    is on its boundary: the two hulls have the same force closure);
+/// 2. GJK on the sum's support function: a certified separation gives −distance;
+/// 3. the exact partial hull, seeded with the sum's support points along 42 fixed directions;
+/// 4. a sum spanning fewer than six dimensions (no hull) is not force closure: its distance by
+///    GJK, or by Wolfe's algorithm over the materialised sum should GJK not converge.
 pub(super) fn partial(
     cones: &SnappedCones,
     with_zero_wrench: bool,
+    buffers: &mut MinkowskiBuffers,
 ) -> Result<Quality, QualityError> {
     let started = Instant::now();
-    let mut source = minkowski_source(contact_sets(cones, with_zero_wrench));
-    let mut seeds: Vec<[f64; 6]> = Vec::new();
-    for d in seed_directions() {
-        let p = source.support(&d).expect("non-empty");
+    let MinkowskiBuffers {
+        nearest,
+        seeds,
+        gjk,
+        hull,
+    } = buffers;
+    let source = nearest.source_mut();
+    source.fill(cones, with_zero_wrench);
+    if with_zero_wrench {
+        let scale = source.sizes.iter().fold(0.0, |m: f64, &s| m.max(s));
+        let start = [source.union_support(&[1.0, 0.0, 0.0, 0.0, 0.0, 0.0])];
+        let verdict = gjk.run(
+            |v| source.union_support(v),
+            scale,
+            &start,
+            GJK_ITERATIONS,
+            TOUCHING,
+        );
+        if let Verdict::Separated { inserted, .. } = verdict {
+            let origin = std::iter::once([0.0; 6]);
+            return Ok(Quality::new(
+                0.0,
+                origin,
+                no_hull_stats(1 + inserted, started),
+            ));
+        }
+    }
+    seeds.clear();
+    for d in &SEED_DIRECTIONS {
+        let p = source.support(d).expect("a contact has cone edges");
         if !seeds.contains(&p) {
             seeds.push(p);
         }
     }
-    if let Some((distance, face, inserted)) = outside_by_gjk(&mut source, &seeds) {
-        let stats = Stats {
-            points_processed: seeds.len() + inserted,
-            facets_created: 0,
-            expansions: 0,
-            elapsed: started.elapsed(),
-        };
-        return Ok(Quality::new(-distance, face.into_iter(), stats));
+    let scale = source.scale();
+    let support = |v: &[f64; 6]| source.support(v).expect("a contact has cone edges");
+    if let Verdict::Separated { distance, inserted } =
+        gjk.run(support, scale, seeds, GJK_ITERATIONS, TOUCHING)
+    {
+        let stats = no_hull_stats(seeds.len() + inserted, started);
+        return Ok(Quality::new(-distance, gjk.face().iter().copied(), stats));
     }
-    let strategy = ClosestToOrigin::with_source([0.0; 6], source);
-    match Hull::try_with_strategy(&seeds, strategy) {
-        Ok((hull, result)) => Ok(Quality::new(
+    let h = hull.get_or_insert_with(Hull::empty);
+    match h.rebuild_with_strategy(seeds, &mut *nearest) {
+        Ok(result) => Ok(Quality::new(
             result.signed_distance,
-            result.closest_facet_vertices.iter().map(|&v| hull.point(v)),
+            result.closest_facet_vertices.iter().map(|&v| h.point(v)),
             result.stats,
         )),
-        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
-            // The sum spans fewer than 6 dimensions: not force closure; its distance from the
-            // materialised set (flat sums are small: a rank-deficient grasp's edges).
-            let mut all = Vec::new();
-            match materialise(cones, with_zero_wrench, &mut all) {
-                Ok(()) => {
-                    let mut quality = degenerate(&all, started);
-                    quality.stats = no_hull_stats(all.len(), started);
-                    Ok(quality)
-                }
-                // Too many to materialise: the origin is within rounding of the flat sum (else
-                // GJK would have separated it), so its distance is 0 up to rounding; GJK with a
-                // larger budget says which face holds the touching point.
-                Err(too_large @ QualityError::MinkowskiTooLarge { .. }) => {
-                    let mut source = minkowski_source(contact_sets(cones, with_zero_wrench));
-                    match minkowski_gjk(&mut source, &seeds, 16 * GJK_ITERATIONS) {
-                        Gjk::Separated {
-                            distance,
-                            face,
-                            inserted,
-                        } => Ok(Quality::new(
-                            -distance,
-                            face.into_iter(),
-                            no_hull_stats(seeds.len() + inserted, started),
-                        )),
-                        Gjk::Touching { face, inserted } => Ok(Quality::new(
-                            0.0,
-                            face.into_iter(),
-                            no_hull_stats(seeds.len() + inserted, started),
-                        )),
-                        Gjk::Undecided => Err(too_large),
-                    }
-                }
-                Err(e) => Err(e),
-            }
-        }
+        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => flat_sum(
+            cones,
+            with_zero_wrench,
+            nearest.source_mut(),
+            seeds,
+            gjk,
+            started,
+        ),
         Err(e) => unreachable!("snapped wrenches are finite: {e}"),
+    }
+}
+
+/// −(distance from the origin) of a sum spanning fewer than six dimensions, never force closure:
+/// GJK run to convergence (the origin may lie in the sum, so it must not stop at "touching");
+/// should it not converge, Wolfe's algorithm over the materialised sum, when that fits.
+fn flat_sum(
+    cones: &SnappedCones,
+    with_zero_wrench: bool,
+    source: &mut MinkowskiSource,
+    seeds: &[[f64; 6]],
+    gjk: &mut Gjk,
+    started: Instant,
+) -> Result<Quality, QualityError> {
+    let scale = source.scale();
+    let support = |v: &[f64; 6]| source.support(v).expect("a contact has cone edges");
+    match gjk.run(support, scale, seeds, 16 * GJK_ITERATIONS, 0.0) {
+        Verdict::Separated { distance, inserted }
+        | Verdict::Touching { distance, inserted }
+        | Verdict::Stalled { distance, inserted } => Ok(Quality::new(
+            0.0 - distance,
+            gjk.face().iter().copied(),
+            no_hull_stats(seeds.len() + inserted, started),
+        )),
+        Verdict::Undecided => {
+            let mut all = Vec::new();
+            materialise(cones, with_zero_wrench, &mut all)?;
+            let mut quality = degenerate(&all, started);
+            quality.stats = no_hull_stats(all.len(), started);
+            Ok(quality)
+        }
     }
 }

@@ -11,103 +11,124 @@
 use crate::hull::dot;
 use crate::strategy::nearest::{min_norm_point, solve};
 
-/// Iterations of [`separate`] before it leaves the question to the partial hull.
+/// Iterations of [`Gjk::run`] before it leaves the question to the partial hull.
 pub(super) const GJK_ITERATIONS: usize = 64;
 
-/// What [`gjk`] found.
-pub(super) enum Gjk {
-    /// The origin is outside, at `distance` from the point of the set spanned by `face`.
-    Separated {
-        distance: f64,
-        face: Vec<[f64; 6]>,
-        inserted: usize,
-    },
-    /// A point of the set within rounding of the origin (inside, or on the boundary).
-    Touching {
-        face: Vec<[f64; 6]>,
-        inserted: usize,
-    },
-    /// Neither within the iteration budget.
+/// A point of the set within this fraction of the set's size from the origin is "touching".
+pub(super) const TOUCHING: f64 = 1e-9;
+
+/// What [`Gjk::run`] found; the face it names is in [`Gjk::face`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Verdict {
+    /// Certified: the origin is outside, at `distance` from the point of the set spanned by the
+    /// face.
+    Separated { distance: f64, inserted: usize },
+    /// A point of the set (spanned by the face) within `touching · scale` of the origin: inside,
+    /// or on the boundary, or just outside.
+    Touching { distance: f64, inserted: usize },
+    /// No progress in floating point, without a certificate: `distance` is the nearest point
+    /// Wolfe's algorithm converged to (as accurate as Wolfe's algorithm over every point).
+    Stalled { distance: f64, inserted: usize },
+    /// None of these within the iteration budget.
     Undecided,
 }
 
-/// GJK on the support function `support` (a point of the set maximising `direction · p`), from
-/// the points `seeds` of the set. `scale` bounds the norm of every point of the set.
-///
-/// The verdict "outside" ([`Gjk::Separated`]) is certified by a separating plane: `v·p ≤ h(v) < 0`
-/// for every point `p` of the set, with `h(v)` the support value of the direction `v` from the
-/// current nearest point toward the origin, and a margin above the rounding of `h`. The distance
-/// is the length of a point of the set (an upper bound) within a relative `1e−13` of the plane's
-/// distance (a lower bound), the accuracy of the partial hull's own outside certificate.
-///
-/// Allocates two corral buffers per call, none per iteration.
-pub(super) fn gjk(
-    mut support: impl FnMut(&[f64; 6]) -> [f64; 6],
-    scale: f64,
-    seeds: &[[f64; 6]],
-    iterations: usize,
-) -> Gjk {
-    let mut corral: Vec<[f64; 6]> = seeds.to_vec();
-    // The next corral is built here and swapped in.
-    let mut next: Vec<[f64; 6]> = Vec::with_capacity(8);
-    let mut previous = f64::INFINITY;
-    for inserted in 0..iterations {
-        let nearest = min_norm_point(corral.len(), |i| corral[i], &[0.0; 6]);
-        let x = nearest.point;
-        let distance = nearest.distance;
-        let face = || nearest.support().iter().map(|&i| corral[i]).collect();
-        if distance <= 1e-9 * scale {
-            return Gjk::Touching {
-                face: face(),
-                inserted,
-            };
-        }
-        let v = x.map(|c| -c);
-        let s = support(&v);
-        let inserted = inserted + 1;
-        let height = dot(&v, &s); // h(v) = max over the set of v·p
-        // A separating plane needs a margin above the rounding of h (each summed term carries
-        // ~1e−16 of the set's size); without one, s is GJK's next corral point.
-        if height < -1e-12 * scale * distance {
-            let lower = -height / distance; // distance of the separating plane from the origin
-            if distance - lower <= 1e-13 * distance {
-                return Gjk::Separated {
-                    distance,
-                    face: face(),
-                    inserted,
-                };
-            }
-        }
-        next.clear();
-        next.extend(nearest.support().iter().map(|&i| corral[i]));
-        if next.contains(&s) || distance >= previous {
-            // No progress in floating point (s is in the face, or a tie with a point of it
-            // brought it back). The face is usually the right one, and only the
-            // certificate is loose: its gap grows as |error of x along the face| / distance², and
-            // x, a combination of points much larger than itself, carries their rounding. One
-            // projection step makes x orthogonal to the face to working precision; then the
-            // certificate is checked once more.
-            let x = orthogonal_to_face(&next, x);
-            let distance = dot(&x, &x).sqrt();
-            let v = x.map(|c| -c);
-            let height = dot(&v, &support(&v));
-            if distance > 0.0
-                && height < -1e-12 * scale * distance
-                && distance + height / distance <= 1e-13 * distance
-            {
-                return Gjk::Separated {
-                    distance,
-                    face: next,
-                    inserted,
-                };
-            }
-            return Gjk::Undecided;
-        }
-        next.push(s);
-        std::mem::swap(&mut corral, &mut next);
-        previous = distance;
+/// GJK's reusable state: the corral (the current simplex) and the face of the last verdict.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Gjk {
+    corral: Vec<[f64; 6]>,
+    next: Vec<[f64; 6]>,
+}
+
+impl Gjk {
+    /// The points spanning the nearest point of the last [`run`](Self::run) (its final corral
+    /// face); empty after [`Verdict::Undecided`].
+    pub(super) fn face(&self) -> &[[f64; 6]] {
+        &self.corral
     }
-    Gjk::Undecided
+
+    /// GJK on the support function `support` (a point of the set maximising `direction · p`),
+    /// from the points `seeds` of the set. `scale` bounds the norm of every point of the set;
+    /// `touching` (a fraction of it, 0 to never stop there) is how close to the origin a point
+    /// counts as touching it.
+    ///
+    /// The verdict "outside" ([`Verdict::Separated`]) is certified by a separating plane:
+    /// `v·p ≤ h(v) < 0` for every point `p` of the set, with `h(v)` the support value of the
+    /// direction `v` from the current nearest point toward the origin, and a margin above the
+    /// rounding of `h`. The distance is the length of a point of the set (an upper bound) within a
+    /// relative `1e−13` of the plane's distance (a lower bound), the accuracy of the partial hull's
+    /// own outside certificate.
+    ///
+    /// Allocates nothing once its buffers have grown to the seeds' count.
+    pub(super) fn run(
+        &mut self,
+        mut support: impl FnMut(&[f64; 6]) -> [f64; 6],
+        scale: f64,
+        seeds: &[[f64; 6]],
+        iterations: usize,
+        touching: f64,
+    ) -> Verdict {
+        self.corral.clear();
+        self.corral.extend_from_slice(seeds);
+        let mut previous = f64::INFINITY;
+        for inserted in 0..iterations {
+            let nearest = min_norm_point(self.corral.len(), |i| self.corral[i], &[0.0; 6]);
+            let x = nearest.point;
+            let distance = nearest.distance;
+            // The face spanning x, kept in `next` until the verdict or the next corral.
+            self.next.clear();
+            self.next
+                .extend(nearest.support().iter().map(|&i| self.corral[i]));
+            if distance <= touching * scale {
+                std::mem::swap(&mut self.corral, &mut self.next);
+                return Verdict::Touching { distance, inserted };
+            }
+            let v = x.map(|c| -c);
+            let s = support(&v);
+            let inserted = inserted + 1;
+            let height = dot(&v, &s); // h(v) = max over the set of v·p
+            // A separating plane needs a margin above the rounding of h (each summed term carries
+            // ~1e−16 of the set's size); without one, s is GJK's next corral point.
+            if certified(height, distance, scale) {
+                std::mem::swap(&mut self.corral, &mut self.next);
+                return Verdict::Separated { distance, inserted };
+            }
+            if self.next.contains(&s) || distance >= previous {
+                // No progress in floating point (s is in the face, or a tie with a point of it
+                // brought it back). The face is usually the right one, and only the certificate
+                // is loose: its gap grows as |error of x along the face| / distance², and x, a
+                // combination of points much larger than itself, carries their rounding. One
+                // projection step makes x orthogonal to the face to working precision; then the
+                // certificate is checked once more.
+                std::mem::swap(&mut self.corral, &mut self.next);
+                let x = orthogonal_to_face(&self.corral, x);
+                let refined = dot(&x, &x).sqrt();
+                let v = x.map(|c| -c);
+                let height = dot(&v, &support(&v));
+                return if refined > 0.0 && certified(height, refined, scale) {
+                    Verdict::Separated {
+                        distance: refined,
+                        inserted,
+                    }
+                } else {
+                    Verdict::Stalled { distance, inserted }
+                };
+            }
+            self.next.push(s);
+            std::mem::swap(&mut self.corral, &mut self.next);
+            previous = distance;
+        }
+        self.corral.clear();
+        Verdict::Undecided
+    }
+}
+
+/// Whether the plane normal to `v` (|v| = `distance`, toward the origin from a point of the set
+/// at that distance) with support value `height` separates the origin with a margin, and lies
+/// within a relative 1e−13 of that point.
+fn certified(height: f64, distance: f64, scale: f64) -> bool {
+    // The plane's distance from the origin, −h/|v|, is a lower bound on the set's.
+    height < -1e-12 * scale * distance && distance + height / distance <= 1e-13 * distance
 }
 
 /// The point of `points` maximising `direction · p` (the first of ties).
@@ -125,7 +146,7 @@ pub(super) fn support_of(points: &[[f64; 6]], direction: &[f64; 6]) -> [f64; 6] 
     points[best.1]
 }
 
-/// The largest norm of `points` (the `scale` of [`gjk`]).
+/// The largest norm of `points` (the `scale` of [`Gjk::run`]).
 pub(super) fn largest_norm(points: &[[f64; 6]]) -> f64 {
     points.iter().map(|w| dot(w, w)).fold(0.0, f64::max).sqrt()
 }
