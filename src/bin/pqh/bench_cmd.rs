@@ -21,13 +21,16 @@ each number of cone edges k:
           on all --grasps, for every k <= --qinf-max-edges (default 32; 0 turns it off), for
           each --qinf variant (default both: zero-wrench, then plain): force-closure count,
           median, mean and largest time per grasp. Most random grasps are not force closure
-          for the plain variant, and those are its slow cases (up to seconds per grasp at
-          k = 32): use --qinf zero-wrench for a quick run. A grasp the library cannot evaluate
-          is counted in `errors`, not fatal.
+          for the plain variant. A grasp the library cannot evaluate is counted in `errors`,
+          not fatal.
   batch   `evaluate_batch` (Q1, partial) of all --grasps inside a rayon pool of each --threads
           size (default 1 and the available parallelism), rounds interleaved across sizes,
           median of --batch-rounds (0 turns it off): grasps/s and the speed-up over 1 thread.
-          The batch results must equal the sequential ones (counted in `mismatches`).
+          Each timed round evaluates the set `passes` times inside the pool, enough to last
+          200 ms on one thread: waking an idle worker costs milliseconds on a virtual machine,
+          which would otherwise swamp a batch of small grasps (steady throughput is measured).
+          Every pool runs one untimed pass first. The batch results must equal the sequential
+          ones (counted in `mismatches`).
 
 Times are wall clock on whatever else the machine is doing: compare rows of one run.";
 
@@ -200,20 +203,39 @@ fn thread_counts(args: &GwsArgs) -> Result<Vec<usize>, CliError> {
 }
 
 /// Batch throughput of Q1 by the partial method in pools of each size; rounds interleaved across
-/// sizes so a change of load hits them alike.
+/// sizes so a change of load hits them alike. `seconds` is the seconds per pass of a round.
 fn batch(
     set: &[Grasp],
     sequential: &[Quality],
     pools: &[(usize, rayon::ThreadPool)],
     rounds: usize,
 ) -> Vec<Value> {
+    if rounds == 0 {
+        return Vec::new();
+    }
+    // Passes per round: 200 ms of sequential work (see the help text).
+    let sequential_s: f64 = sequential
+        .iter()
+        .map(|q| q.stats.elapsed.as_secs_f64())
+        .sum();
+    let passes = ((0.2 / sequential_s.max(1e-9)).ceil() as usize).clamp(1, 1000);
+    for (_, pool) in pools {
+        pool.install(|| evaluate_batch(set, Metric::Q1, Method::Partial));
+    }
     let mut seconds = vec![Vec::with_capacity(rounds); pools.len()];
     let mut mismatches = vec![0usize; pools.len()];
     for _ in 0..rounds {
         for (i, (_, pool)) in pools.iter().enumerate() {
             let started = Instant::now();
-            let results = pool.install(|| evaluate_batch(set, Metric::Q1, Method::Partial));
-            seconds[i].push(started.elapsed().as_secs_f64());
+            // All passes inside the pool, so its threads are not put back to sleep in between.
+            let results = pool.install(|| {
+                let mut results = Vec::new();
+                for _ in 0..passes {
+                    results = evaluate_batch(set, Metric::Q1, Method::Partial);
+                }
+                results
+            });
+            seconds[i].push(started.elapsed().as_secs_f64() / passes as f64);
             mismatches[i] += results
                 .iter()
                 .zip(sequential)
@@ -236,6 +258,7 @@ fn batch(
                 "threads": threads,
                 "grasps": set.len(),
                 "rounds": rounds,
+                "passes": passes,
                 "median_s": median(&mut seconds[i].clone()),
                 "best_s": seconds[i].iter().copied().fold(f64::INFINITY, f64::min),
                 "grasps_per_s": grasps_per_s,
@@ -496,20 +519,22 @@ fn print_tables(args: &GwsArgs, report: &[Value]) {
     {
         println!();
         println!(
-            "Batch Q1 (partial, evaluate_batch), median of {} rounds",
+            "Batch Q1 (partial, evaluate_batch), median of {} rounds of `passes` passes each \
+             (median_s: per pass)",
             args.batch_rounds
         );
         println!(
-            "{:>4} {:>7} {:>6} {:>10} {:>10} {:>10}",
-            "k", "threads", "grasps", "median_s", "grasps/s", "x 1 thread"
+            "{:>4} {:>7} {:>6} {:>6} {:>10} {:>10} {:>10}",
+            "k", "threads", "grasps", "passes", "median_s", "grasps/s", "x 1 thread"
         );
         for entry in report {
             for b in entry["batch"].as_array().into_iter().flatten() {
                 println!(
-                    "{:>4} {:>7} {:>6} {:>10.4} {:>10.1} {:>10.2}",
+                    "{:>4} {:>7} {:>6} {:>6} {:>10.4} {:>10.1} {:>10.2}",
                     entry["cone_edges"].as_u64().unwrap_or(0),
                     b["threads"].as_u64().unwrap_or(0),
                     b["grasps"].as_u64().unwrap_or(0),
+                    b["passes"].as_u64().unwrap_or(0),
                     num(&b["median_s"]),
                     num(&b["grasps_per_s"]),
                     num(&b["speedup_vs_1_thread"])

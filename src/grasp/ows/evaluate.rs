@@ -2,7 +2,7 @@
 
 use super::ObjectWrenchSpace;
 use crate::grasp::Grasp;
-use crate::grasp::quality::{HullBuffers, Method, QualityError, q1_of_wrenches};
+use crate::grasp::quality::{HullBuffers, Method, QualityError, find_or_make, q1_of_wrenches};
 use crate::grasp::snap::pyramid_labels;
 use crate::hull::{Hull, HullError};
 use crate::predicates::Sign;
@@ -260,8 +260,10 @@ fn ellipsoid(wrenches: &[[f64; 6]], space: &ObjectWrenchSpace) -> Result<OwsQual
     })
 }
 
-/// Q_OWS of every grasp against `space` on all cores (rayon's global pool), results in input
-/// order. Each worker reuses one [`OwsEvaluator`]; the space is shared, not copied.
+/// Q_OWS of every grasp against `space` on all cores (rayon's current pool), results in input
+/// order; the space is shared, not copied. Each worker thread keeps one [`OwsEvaluator`] per
+/// method for the life of the thread, as
+/// [`quality::evaluate_batch`](crate::grasp::quality::evaluate_batch) does.
 pub fn evaluate_batch(
     grasps: &[Grasp],
     space: &ObjectWrenchSpace,
@@ -270,9 +272,18 @@ pub fn evaluate_batch(
     use rayon::prelude::*;
     grasps
         .par_iter()
-        .map_init(
-            || OwsEvaluator::new(method),
-            |evaluator, grasp| evaluator.evaluate(grasp, space),
-        )
+        .map(|grasp| {
+            OWS_EVALUATORS.with_borrow_mut(|kept| {
+                find_or_make(kept, |e| e.method == method, || OwsEvaluator::new(method))
+                    .evaluate(grasp, space)
+            })
+        })
         .collect()
+}
+
+thread_local! {
+    /// The evaluators of [`evaluate_batch`] on this thread, one per method used.
+    static OWS_EVALUATORS: std::cell::RefCell<Vec<OwsEvaluator>> = const {
+        std::cell::RefCell::new(Vec::new())
+    };
 }

@@ -15,7 +15,7 @@ use crate::strategy::nearest::{min_norm_point, solve};
 pub(super) const GJK_ITERATIONS: usize = 64;
 
 /// A point of the set within this fraction of the set's size from the origin is "touching".
-pub(super) const TOUCHING: f64 = 1e-9;
+pub(super) const TOUCHING: f64 = 1e-12;
 
 /// What [`Gjk::run`] found; the face it names is in [`Gjk::face`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -56,8 +56,9 @@ impl Gjk {
     /// `v·p ≤ h(v) < 0` for every point `p` of the set, with `h(v)` the support value of the
     /// direction `v` from the current nearest point toward the origin, and a margin above the
     /// rounding of `h`. The distance is the length of a point of the set (an upper bound) within a
-    /// relative `1e−13` of the plane's distance (a lower bound), the accuracy of the partial hull's
-    /// own outside certificate.
+    /// relative `1e−13` of the plane's distance (a lower bound); when Wolfe's algorithm stalls,
+    /// within `1e−13` relative plus `1e−15·scale` (the partial hull's own outside certificate
+    /// allows `1e−12` of the set's extent).
     ///
     /// Allocates nothing once its buffers have grown to the seeds' count.
     pub(super) fn run(
@@ -89,7 +90,7 @@ impl Gjk {
             let height = dot(&v, &s); // h(v) = max over the set of v·p
             // A separating plane needs a margin above the rounding of h (each summed term carries
             // ~1e−16 of the set's size); without one, s is GJK's next corral point.
-            if certified(height, distance, scale) {
+            if certified(height, distance, scale, 0.0) {
                 std::mem::swap(&mut self.corral, &mut self.next);
                 return Verdict::Separated { distance, inserted };
             }
@@ -105,7 +106,10 @@ impl Gjk {
                 let refined = dot(&x, &x).sqrt();
                 let v = x.map(|c| -c);
                 let height = dot(&v, &support(&v));
-                return if refined > 0.0 && certified(height, refined, scale) {
+                // Wolfe's algorithm can improve no further: the gap may also be a tiny fraction
+                // of the set's size (an origin within 1e−8 of the boundary, whose distance has
+                // few significant digits anyway).
+                return if refined > 0.0 && certified(height, refined, scale, STALL_FLOOR) {
                     Verdict::Separated {
                         distance: refined,
                         inserted,
@@ -123,12 +127,18 @@ impl Gjk {
     }
 }
 
+/// The absolute floor, as a fraction of the set's size, of the distance certificate at a stall:
+/// a thousandth of the partial hull's own outside certificate (`1e−12` of the point set's
+/// extent).
+const STALL_FLOOR: f64 = 1e-15;
+
 /// Whether the plane normal to `v` (|v| = `distance`, toward the origin from a point of the set
-/// at that distance) with support value `height` separates the origin with a margin, and lies
-/// within a relative 1e−13 of that point.
-fn certified(height: f64, distance: f64, scale: f64) -> bool {
+/// at that distance) with support value `height` separates the origin with a margin above the
+/// rounding of `height`, and lies within `1e−13·distance + floor·scale` of that point.
+fn certified(height: f64, distance: f64, scale: f64, floor: f64) -> bool {
     // The plane's distance from the origin, −h/|v|, is a lower bound on the set's.
-    height < -1e-12 * scale * distance && distance + height / distance <= 1e-13 * distance
+    let gap = distance + height / distance;
+    height < -1e-12 * scale * distance && gap <= 1e-13 * distance + floor * scale
 }
 
 /// The point of `points` maximising `direction · p` (the first of ties).
