@@ -272,6 +272,7 @@ fn bench_ows_reports_every_method_and_agreement() {
         "ellipsoid",
         "q1-partial",
         "partial-rays",
+        "q1-partial-fc",
     ] {
         assert!(methods.contains(&m), "{methods:?}");
     }

@@ -170,6 +170,7 @@ fn partial_equals_brute_force(mesh: &Mesh, grasps: usize, seed: u64) -> usize {
     let mut rays = OwsEvaluator::new(OwsMethod::PartialRays);
     let mut ellipsoid = OwsEvaluator::new(OwsMethod::Ellipsoid);
     let mut closure = 0;
+    let mut by_gjk = 0;
     let (mut partial_facets, mut full_facets) = (0, 0);
     for g in 0..grasps {
         let contacts = 2 + rng.index(4); // 2 … 5 contacts
@@ -209,10 +210,18 @@ fn partial_equals_brute_force(mesh: &Mesh, grasps: usize, seed: u64) -> usize {
                 partial_facets += a.stats.facets_created;
                 full_facets += b.stats.facets_created;
             }
-            (None, None) => {}
+            (None, None) => {
+                // Settled by GJK, with no hull, or by the partial hull.
+                by_gjk += usize::from(a.stats.facets_created == 0);
+            }
             other => panic!("grasp {g}: {other:?}"),
         }
     }
+    assert!(
+        by_gjk > (grasps - closure) / 2,
+        "{by_gjk} of {} grasps that are not force closure settled by GJK",
+        grasps - closure
+    );
     // Individual grasps may go either way (the expansion orders differ); in aggregate the
     // partial hull must do less.
     assert!(

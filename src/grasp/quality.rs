@@ -56,7 +56,8 @@ use super::snap::{SnappedCones, pyramid_labels, snapped_union};
 use crate::strategy::nearest::{min_norm_point, nearest_in_simplex};
 use crate::strategy::{ClosestToOrigin, Stats};
 use crate::{Hull, HullError};
-use separation::{GJK_ITERATIONS, Gjk, TOUCHING, Verdict, largest_norm, support_of};
+pub(crate) use separation::Gjk;
+use separation::{GJK_ITERATIONS, TOUCHING, Verdict, largest_norm, support_of};
 use std::fmt;
 use std::time::Instant;
 
@@ -438,6 +439,17 @@ fn degenerate(w: &[[f64; 6]], started: Instant) -> Quality {
     Quality::new(-nearest.distance, support, no_hull_stats(w.len(), started))
 }
 
+/// When GJK certifies that the origin lies outside the hull of `w` (so the grasp is not force
+/// closure): its distance, and the support points GJK inserted; the face spanning the nearest
+/// point is then in `gjk.face()`. `None` when undecided (force closure, or too close to call).
+pub(crate) fn certified_outside(w: &[[f64; 6]], gjk: &mut Gjk) -> Option<(f64, usize)> {
+    let support = |v: &[f64; 6]| support_of(w, v);
+    match gjk.run(support, largest_norm(w), &w[..1], GJK_ITERATIONS, TOUCHING) {
+        Verdict::Separated { distance, inserted } => Some((distance, inserted)),
+        _ => None,
+    }
+}
+
 /// Q1 of `w` by the partial hull; `pyramids` as in [`HullBuffers::build`].
 fn partial_q1(
     w: &[[f64; 6]],
@@ -448,13 +460,9 @@ fn partial_q1(
     // Most grasps that are not force closure are separated from the origin by GJK, certified,
     // without a hull; the rest (force closure, or the origin within rounding of the boundary) go
     // on to the exact partial hull.
-    let gjk = &mut buffers.gjk;
-    let support = |v: &[f64; 6]| support_of(w, v);
-    if let Verdict::Separated { distance, inserted } =
-        gjk.run(support, largest_norm(w), &w[..1], GJK_ITERATIONS, TOUCHING)
-    {
+    if let Some((distance, inserted)) = certified_outside(w, &mut buffers.gjk) {
         let stats = no_hull_stats(1 + inserted, started);
-        return Quality::new(-distance, gjk.face().iter().copied(), stats);
+        return Quality::new(-distance, buffers.gjk.face().iter().copied(), stats);
     }
     match HullBuffers::build(&mut buffers.hull, w, pyramids, &mut buffers.nearest) {
         Ok((_, result)) => Quality::new(

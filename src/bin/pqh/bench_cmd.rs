@@ -132,6 +132,8 @@ struct Row {
     times_us: Vec<f64>,
     points: Vec<usize>,
     facets: Vec<usize>,
+    /// Per grasp: force closure.
+    closure: Vec<bool>,
 }
 
 impl Row {
@@ -139,6 +141,7 @@ impl Row {
         Row {
             method,
             force_closure: results.iter().filter(|q| q.force_closure).count(),
+            closure: results.iter().map(|q| q.force_closure).collect(),
             times_us: results
                 .iter()
                 .map(|q| q.stats.elapsed.as_secs_f64() * 1e6)
@@ -349,6 +352,12 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
             let mut time_ratio: Vec<f64> = (0..n)
                 .map(|i| row.times_us[i] / partial.times_us[i])
                 .collect();
+            // The same over the force-closure grasps alone (the partial method's slow kind:
+            // the others are settled by GJK without a hull).
+            let mut closure_ratio: Vec<f64> = (0..n)
+                .filter(|&i| partial.closure[i])
+                .map(|i| time_ratio[i])
+                .collect();
             let points_ratio = mean((0..n).map(|i| row.points[i] as f64))
                 / mean((0..n).map(|i| partial.points[i] as f64));
             let facets_ratio = mean((0..n).map(|i| row.facets[i] as f64))
@@ -363,6 +372,7 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
                 "mean_points_processed": mean(row.points.iter().map(|&p| p as f64)),
                 "mean_facets_created": mean(row.facets.iter().map(|&p| p as f64)),
                 "time_ratio_vs_partial": median(&mut time_ratio),
+                "force_closure_time_ratio_vs_partial": median(&mut closure_ratio),
                 "points_ratio_vs_partial": points_ratio,
                 "facets_ratio_vs_partial": facets_ratio,
             }));
@@ -441,30 +451,35 @@ fn print_tables(args: &GwsArgs, report: &[Value]) {
         args.contacts, args.seed
     );
     println!(
-        "{:>4} {:>8} {:>6} {:>12} {:>12} {:>10} {:>10} {:>10} {:>10} {:>10}",
+        "{:>4} {:>8} {:>6} {:>4} {:>12} {:>12} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}",
         "k",
         "method",
         "grasps",
+        "fc",
         "median_us",
         "mean_us",
         "points",
         "facets",
         "x time",
+        "x time fc",
         "x points",
         "x facets"
     );
     for entry in report {
         for m in entry["methods"].as_array().expect("array") {
             println!(
-                "{:>4} {:>8} {:>6} {:>12.1} {:>12.1} {:>10.1} {:>10.1} {:>10.1} {:>10.2} {:>10.1}",
+                "{:>4} {:>8} {:>6} {:>4} {:>12.1} {:>12.1} {:>10.1} {:>10.1} {:>10.1} {:>10.1} \
+                 {:>10.2} {:>10.1}",
                 entry["cone_edges"].as_u64().unwrap_or(0),
                 m["method"].as_str().unwrap_or(""),
                 m["grasps"].as_u64().unwrap_or(0),
+                m["force_closure"].as_u64().unwrap_or(0),
                 num(&m["median_us"]),
                 num(&m["mean_us"]),
                 num(&m["mean_points_processed"]),
                 num(&m["mean_facets_created"]),
                 num(&m["time_ratio_vs_partial"]),
+                num(&m["force_closure_time_ratio_vs_partial"]),
                 num(&m["points_ratio_vs_partial"]),
                 num(&m["facets_ratio_vs_partial"])
             );
@@ -477,7 +492,8 @@ fn print_tables(args: &GwsArgs, report: &[Value]) {
         }
     }
     println!(
-        "x = full method / partial, on the grasps both evaluated (time: median of per-grasp ratios)"
+        "x = full method / partial, on the grasps both evaluated (time: median of per-grasp ratios; \
+         x time fc: the same over the force-closure grasps alone)"
     );
     if report
         .iter()

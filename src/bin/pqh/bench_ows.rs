@@ -170,6 +170,12 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
             .collect()
     };
     let mut partial_closure = closure_times(&partial);
+    let mut q1_closure: Vec<f64> = q1_times
+        .iter()
+        .zip(&partial)
+        .filter(|(_, p)| p.force_closure)
+        .map(|(&t, _)| t)
+        .collect();
     let mut brute_closure = closure_times(&brute);
     let mut partial_closure_on_brute = closure_times(&partial[..brute.len()]);
     let mut partial_times: Vec<f64> = partial.iter().map(micros).collect();
@@ -189,6 +195,7 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
         summary("brute-fc", &mut brute_closure),
         summary("partial-rays", &mut rays_times),
         summary("partial-rays-fc", &mut rays_closure),
+        summary("q1-partial-fc", &mut q1_closure),
     ];
     let median_of = |v: &Value| v["median_us"].as_f64().unwrap_or(f64::NAN);
     let partial_brute_median = summary("", &mut partial_on_brute);
@@ -217,6 +224,7 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
             "brute_over_partial_force_closure":
                 median_of(&rows[5]) / median_of(&partial_brute_closure),
             "partial_over_q1": median_of(&rows[0]) / median_of(&rows[3]),
+            "partial_over_q1_force_closure": median_of(&rows[4]) / median_of(&rows[8]),
             "rays_over_partial": median_of(&rows[6]) / median_of(&partial_rays_median),
             "rays_over_partial_force_closure":
                 median_of(&rows[7]) / median_of(&partial_rays_closure),
@@ -263,10 +271,11 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
     let ratio = |key: &str| report["ratios"][key].as_f64().unwrap_or(f64::NAN);
     println!(
         "brute / partial (same grasps): {:.1}× (force closure only: {:.1}×)   partial OWS / \
-         partial Q1: {:.2}×",
+         partial Q1: {:.2}× (force closure only: {:.2}×)",
         ratio("brute_over_partial"),
         ratio("brute_over_partial_force_closure"),
-        ratio("partial_over_q1")
+        ratio("partial_over_q1"),
+        ratio("partial_over_q1_force_closure")
     );
     println!(
         "partial-rays (Algorithm 2 as published) / partial (same grasps): {:.1}× (force closure \

@@ -2,7 +2,9 @@
 
 use super::ObjectWrenchSpace;
 use crate::grasp::Grasp;
-use crate::grasp::quality::{HullBuffers, Method, QualityError, find_or_make, q1_of_wrenches};
+use crate::grasp::quality::{
+    Gjk, HullBuffers, Method, QualityError, certified_outside, find_or_make, q1_of_wrenches,
+};
 use crate::grasp::snap::pyramid_labels;
 use crate::hull::{Hull, HullError};
 use crate::predicates::Sign;
@@ -81,6 +83,8 @@ pub struct OwsEvaluator {
     pyramids: Vec<u32>,
     /// The grasp hull's arena, reused from grasp to grasp.
     hull: Option<Hull<6>>,
+    /// GJK's corral, for grasps it settles without a hull.
+    gjk: Gjk,
 }
 
 impl OwsEvaluator {
@@ -91,6 +95,7 @@ impl OwsEvaluator {
             wrenches: Vec::new(),
             pyramids: Vec::new(),
             hull: None,
+            gjk: Gjk::default(),
         }
     }
 
@@ -125,7 +130,14 @@ impl OwsEvaluator {
         let edges = grasp.friction().cone_edges();
         pyramid_labels(grasp.contact_count(), edges, &mut self.pyramids);
         let pyramids = Some(self.pyramids.as_slice());
-        let mut quality = ows_with(&self.wrenches, pyramids, space, self.method, &mut self.hull)?;
+        let mut quality = ows_with(
+            &self.wrenches,
+            pyramids,
+            space,
+            self.method,
+            &mut self.hull,
+            &mut self.gjk,
+        )?;
         quality.stats.elapsed = started.elapsed();
         Ok(quality)
     }
@@ -141,7 +153,14 @@ pub fn ows_of_wrenches(
     method: OwsMethod,
 ) -> Result<OwsQuality, QualityError> {
     let started = Instant::now();
-    let mut quality = ows_with(wrenches, None, space, method, &mut None)?;
+    let mut quality = ows_with(
+        wrenches,
+        None,
+        space,
+        method,
+        &mut None,
+        &mut Gjk::default(),
+    )?;
     quality.stats.elapsed = started.elapsed();
     Ok(quality)
 }
@@ -162,11 +181,19 @@ fn ows_with(
     space: &ObjectWrenchSpace,
     method: OwsMethod,
     hull: &mut Option<Hull<6>>,
+    gjk: &mut Gjk,
 ) -> Result<OwsQuality, QualityError> {
     if wrenches.iter().flatten().any(|x| !x.is_finite()) {
         return Err(QualityError::NonFiniteWrench);
     }
     match method {
+        // A grasp GJK certifies not force closure has no OWS value: no hull needed. (Not for
+        // `PartialRays`, kept as published for comparison.)
+        OwsMethod::Partial
+            if !wrenches.is_empty() && certified_outside(wrenches, gjk).is_some() =>
+        {
+            Ok(not_force_closure(Stats::default()))
+        }
         OwsMethod::Partial => Ok(partial(
             wrenches,
             pyramids,

@@ -35,7 +35,7 @@ pub(super) enum Verdict {
 
 /// GJK's reusable state: the corral (the current simplex) and the face of the last verdict.
 #[derive(Clone, Debug, Default)]
-pub(super) struct Gjk {
+pub(crate) struct Gjk {
     corral: Vec<[f64; 6]>,
     next: Vec<[f64; 6]>,
 }
