@@ -78,9 +78,10 @@ impl<const D: usize> Hull<D> {
         self.points
             .extend(input.iter().map(|p| p.map(|x| x * scale)));
         let simplex = initial_simplex(&self.points)?;
+        let simplex = &simplex[..=D];
 
         let mut interior = [0.0; D];
-        for &s in &simplex {
+        for &s in simplex {
             for (c, x) in interior.iter_mut().zip(&self.points[s]) {
                 *c += x / (D + 1) as f64;
             }
@@ -341,7 +342,10 @@ fn exact_power_of_two_scale<const D: usize>(points: &[[f64; D]]) -> f64 {
 /// farthest apart along the axes, then repeatedly the point farthest from the affine hull of those
 /// chosen. Floating point only picks candidates; the result is verified with the exact predicate,
 /// and exact rank computation takes over when the greedy choice is flat.
-fn initial_simplex<const D: usize>(points: &[[f64; D]]) -> Result<Vec<usize>, HullError> {
+///
+/// The first D + 1 entries are the simplex (D ≤ 8). Fixed arrays, not vectors: a rebuilt hull
+/// (one per grasp in a batch) allocates nothing here.
+fn initial_simplex<const D: usize>(points: &[[f64; D]]) -> Result<[usize; 9], HullError> {
     if let Some(simplex) = greedy_simplex(points) {
         let mut vertices = [[0.0; D]; D];
         for (v, &s) in vertices.iter_mut().zip(&simplex) {
@@ -358,11 +362,13 @@ fn initial_simplex<const D: usize>(points: &[[f64; D]]) -> Result<Vec<usize>, Hu
             dimension: D,
         });
     }
-    Ok(independent)
+    let mut simplex = [0; 9];
+    simplex[..=D].copy_from_slice(&independent[..=D]);
+    Ok(simplex)
 }
 
-fn greedy_simplex<const D: usize>(points: &[[f64; D]]) -> Option<Vec<usize>> {
-    let mut extremes = Vec::with_capacity(2 * D);
+fn greedy_simplex<const D: usize>(points: &[[f64; D]]) -> Option<[usize; 9]> {
+    let mut extremes = [0usize; 16];
     for axis in 0..D {
         let by_axis = |a: &&[f64; D], b: &&[f64; D]| a[axis].total_cmp(&b[axis]);
         let (lo, _) = points
@@ -373,9 +379,10 @@ fn greedy_simplex<const D: usize>(points: &[[f64; D]]) -> Option<Vec<usize>> {
             .iter()
             .enumerate()
             .max_by(|a, b| by_axis(&a.1, &b.1))?;
-        extremes.push(lo);
-        extremes.push(hi);
+        extremes[2 * axis] = lo;
+        extremes[2 * axis + 1] = hi;
     }
+    let extremes = &extremes[..2 * D];
     let mut best = (0.0, 0, 0);
     for (i, &a) in extremes.iter().enumerate() {
         for &b in &extremes[i + 1..] {
@@ -388,15 +395,17 @@ fn greedy_simplex<const D: usize>(points: &[[f64; D]]) -> Option<Vec<usize>> {
     if best.0 == 0.0 {
         return None;
     }
-    let mut chosen = vec![best.1, best.2];
+    let mut chosen = [0usize; 9];
+    chosen[0] = best.1;
+    chosen[1] = best.2;
     // Orthonormal basis of the directions spanned so far (modified Gram–Schmidt).
-    let mut basis: Vec<[f64; D]> = Vec::with_capacity(D);
-    push_direction(&mut basis, sub(&points[best.2], &points[best.1]));
+    let mut basis = Basis::<D>::default();
+    basis.push_direction(sub(&points[best.2], &points[best.1]));
     let origin = points[best.1];
-    while chosen.len() < D + 1 {
+    for slot in &mut chosen[2..=D] {
         let mut far = (0.0, usize::MAX);
         for (i, p) in points.iter().enumerate() {
-            let r = residual(&basis, sub(p, &origin));
+            let r = basis.residual(sub(p, &origin));
             let d = dot(&r, &r);
             if d > far.0 {
                 far = (d, i);
@@ -405,10 +414,49 @@ fn greedy_simplex<const D: usize>(points: &[[f64; D]]) -> Option<Vec<usize>> {
         if far.1 == usize::MAX {
             return None;
         }
-        chosen.push(far.1);
-        push_direction(&mut basis, sub(&points[far.1], &origin));
+        *slot = far.1;
+        basis.push_direction(sub(&points[far.1], &origin));
     }
     Some(chosen)
+}
+
+/// An orthonormal basis of at most 8 directions, in place.
+struct Basis<const D: usize> {
+    directions: [[f64; D]; 8],
+    len: usize,
+}
+
+impl<const D: usize> Default for Basis<D> {
+    fn default() -> Self {
+        Basis {
+            directions: [[0.0; D]; 8],
+            len: 0,
+        }
+    }
+}
+
+impl<const D: usize> Basis<D> {
+    /// `v` minus its projection on the basis.
+    fn residual(&self, mut v: [f64; D]) -> [f64; D] {
+        for b in &self.directions[..self.len] {
+            let c = dot(b, &v);
+            for (x, y) in v.iter_mut().zip(b) {
+                *x -= c * y;
+            }
+        }
+        v
+    }
+
+    /// Adds the normalised residual of `v`, if it is not zero.
+    fn push_direction(&mut self, v: [f64; D]) {
+        // Two passes of Gram–Schmidt keep the basis orthogonal to working precision.
+        let r = self.residual(self.residual(v));
+        let n = dot(&r, &r).sqrt();
+        if n > 0.0 && self.len < self.directions.len() {
+            self.directions[self.len] = r.map(|x| x / n);
+            self.len += 1;
+        }
+    }
 }
 
 fn sub<const D: usize>(a: &[f64; D], b: &[f64; D]) -> [f64; D] {
@@ -418,23 +466,4 @@ fn sub<const D: usize>(a: &[f64; D], b: &[f64; D]) -> [f64; D] {
 fn distance_squared<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
     let d = sub(a, b);
     dot(&d, &d)
-}
-
-fn residual<const D: usize>(basis: &[[f64; D]], mut v: [f64; D]) -> [f64; D] {
-    for b in basis {
-        let c = dot(b, &v);
-        for (x, y) in v.iter_mut().zip(b) {
-            *x -= c * y;
-        }
-    }
-    v
-}
-
-fn push_direction<const D: usize>(basis: &mut Vec<[f64; D]>, v: [f64; D]) {
-    // Two passes of Gram–Schmidt keep the basis orthogonal to working precision.
-    let r = residual(basis, residual(basis, v));
-    let n = dot(&r, &r).sqrt();
-    if n > 0.0 {
-        basis.push(r.map(|x| x / n));
-    }
 }
