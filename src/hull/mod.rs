@@ -119,7 +119,9 @@ impl<const D: usize> Hull<D> {
     /// [`try_with_strategy`](Self::try_with_strategy) for new `points`, in this hull's storage:
     /// the facet arena, the outside-set buffers, the point buffer and the expansion scratch are
     /// reused, so evaluating many similar point sets (a grasp planner's candidates) allocates
-    /// nothing in steady state beyond what the strategy itself does.
+    /// nothing in steady state beyond what the strategy itself does — except one box per facet
+    /// whose floating-point filter fails (its exact-arithmetic cache), which generic input never
+    /// needs (`tests/allocation.rs`).
     ///
     /// ```
     /// use pqhull::{ClosestToOrigin, Hull};
