@@ -85,8 +85,17 @@ pub struct OwsInflation<'a, const D: usize> {
     requeue: Vec<FacetId>,
     /// The facets an expansion created (scratch).
     created: Vec<FacetId>,
+    /// The last support point found ([`key_exactly`](Self::key_exactly)'s first incumbent).
+    hint: Option<usize>,
     answer: Option<(f64, FacetId, usize)>,
 }
+
+/// The `data` of a queue entry keyed by a lower bound only (see `key_by_support`).
+const UNKEYED: u32 = u32::MAX;
+
+/// Depth of the ball-tree nodes whose bounds give a facet's first, lower-bound key (at most 4
+/// node bounds instead of a full support query).
+const BOUND_DEPTH: usize = 2;
 
 /// How facets are keyed (see the type's docs).
 #[derive(Clone, Copy, Debug)]
@@ -168,6 +177,7 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
             orphans: Vec::new(),
             requeue: Vec::new(),
             created: Vec::new(),
+            hint: None,
             answer: None,
         }
     }
@@ -180,23 +190,45 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
         }
     }
 
-    /// Refines and queues `ids` by the support function: the smallest factor of any disturbance
-    /// against each plane.
+    /// Refines and queues `ids` by the support function, lazily: each facet first by a lower
+    /// bound of its key, `offset / h⁺(−n)` with `h⁺ ≥ h` from the top of the ball tree; its exact
+    /// key (the smallest factor of any disturbance against its plane) is computed only when that
+    /// bound reaches the top of the queue ([`key_exactly`](Self::key_exactly)). An exact entry on
+    /// top is then at most every other entry's bound, hence every other key: most facets never
+    /// need a full support query.
     fn key_by_support(&mut self, hull: &mut Hull<D>, index: &SupportIndex<D>, ids: &[FacetId]) {
         for &id in ids {
             hull.refine_normal(id);
             let facet = hull.facet(id);
             let toward = facet.normal().map(|c| -c);
-            if let Some((h, disturbance)) = index.support(&toward)
-                && h > 0.0
-            {
-                self.queue.push(Entry::factored(
-                    facet.offset().max(0.0) / h,
-                    id,
-                    facet.serial(),
-                    disturbance as u32,
-                ));
+            let upper = index.upper_bound(&toward, BOUND_DEPTH);
+            if upper > 0.0 {
+                // Division rounds monotonically: offset / h⁺ ≤ offset / h for h⁺ ≥ h > 0.
+                let factor = facet.offset().max(0.0) / upper;
+                self.queue
+                    .push(Entry::factored(factor, id, facet.serial(), UNKEYED));
             }
+            // upper ≤ 0: no disturbance reaches this plane (h ≤ h⁺ ≤ 0), as for an exact key.
+        }
+    }
+
+    /// Queues facet `id` (current, normal refined) by its exact key.
+    fn key_exactly(&mut self, hull: &Hull<D>, index: &SupportIndex<D>, id: FacetId) {
+        let facet = hull.facet(id);
+        let toward = facet.normal().map(|c| -c);
+        // Facets keyed one after another are often adjacent, with close normals: the last
+        // support point is a good first incumbent for the branch and bound.
+        let support = index.support_near(&toward, self.hint);
+        self.hint = support.map(|(_, at)| at);
+        if let Some((h, disturbance)) = support
+            && h > 0.0
+        {
+            self.queue.push(Entry::factored(
+                facet.offset().max(0.0) / h,
+                id,
+                facet.serial(),
+                disturbance as u32,
+            ));
         }
     }
 
@@ -357,6 +389,12 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
                 continue;
             }
             let id = entry.id;
+            if entry.data == UNKEYED {
+                if let Disturbances::Support(index) = self.disturbances {
+                    self.key_exactly(hull, index, id);
+                }
+                continue;
+            }
             hull.trace_choice(id, Some(("inflation factor", entry.factor())), || {
                 format!(
                     "smallest inflation factor (disturbance {} reaches this facet's plane first)",

@@ -37,6 +37,8 @@ pub struct SupportIndex<const D: usize> {
     points: Vec<[f64; D]>,
     /// Original index of each reordered point.
     original: Vec<u32>,
+    /// Reordered position of each original point (the inverse of `original`).
+    position: Vec<u32>,
     nodes: Vec<Node<D>>,
 }
 
@@ -47,6 +49,9 @@ struct Node<const D: usize> {
     radius: f64,
     /// |centre|, for the rounding slack of the bound.
     centre_norm: f64,
+    /// The node's bounding box.
+    lo: [f64; D],
+    hi: [f64; D],
     start: u32,
     end: u32,
     /// Children (indices into `nodes`), or `None` for a leaf.
@@ -59,10 +64,15 @@ impl<const D: usize> SupportIndex<D> {
         let mut index = SupportIndex {
             points: points.to_vec(),
             original: (0..points.len() as u32).collect(),
+            position: Vec::new(),
             nodes: Vec::new(),
         };
         if !points.is_empty() {
             index.build(0, points.len());
+        }
+        index.position = vec![0; points.len()];
+        for (at, &i) in index.original.iter().enumerate() {
+            index.position[i as usize] = at as u32;
         }
         index
     }
@@ -108,6 +118,8 @@ impl<const D: usize> SupportIndex<D> {
             centre,
             radius,
             centre_norm: dot(&centre, &centre).sqrt(),
+            lo,
+            hi,
             start: start as u32,
             end: end as u32,
             children: None,
@@ -137,16 +149,89 @@ impl<const D: usize> SupportIndex<D> {
     fn bound(&self, n: u32, v: &[f64; D], v_norm: f64) -> f64 {
         let node = &self.nodes[n as usize];
         let reach = v_norm * node.radius;
-        dot(v, &node.centre) + reach + 1e-12 * (v_norm * node.centre_norm + reach)
+        let slack = 1e-12 * (v_norm * node.centre_norm + reach);
+        let ball = dot(v, &node.centre) + reach;
+        let corner: f64 = (0..D)
+            .map(|c| {
+                if v[c] >= 0.0 {
+                    v[c] * node.hi[c]
+                } else {
+                    v[c] * node.lo[c]
+                }
+            })
+            .sum();
+        ball.min(corner) + slack
+    }
+
+    /// A cheap upper bound on [`support`](Self::support)`(v)`'s value: the largest ball-and-box
+    /// bound over the tree's nodes `depth` levels down (at most 2^depth nodes; depth ≤ 8), each
+    /// node's bound capped by its ancestors' (so the bound never grows with depth).
+    /// `f64::NEG_INFINITY` for an empty set.
+    ///
+    /// ```
+    /// use pqhull::strategy::SupportIndex;
+    /// let points: Vec<[f64; 2]> = (0..500).map(|i| [(i as f64).cos(), (i as f64).sin()]).collect();
+    /// let index = SupportIndex::new(&points);
+    /// let v = [0.3, -0.8];
+    /// let (value, _) = index.support(&v).unwrap();
+    /// assert!(index.upper_bound(&v, 3) >= value);
+    /// ```
+    pub fn upper_bound(&self, v: &[f64; D], depth: usize) -> f64 {
+        if self.points.is_empty() {
+            return f64::NEG_INFINITY;
+        }
+        let v_norm = dot(v, v).sqrt();
+        let mut best = f64::NEG_INFINITY;
+        // (node, level, the smallest bound on the path from the root: a parent's bound holds for
+        // its children's points too, and a child's ball can reach beyond its parent's).
+        let mut stack = [(0u32, 0usize, f64::INFINITY); 10];
+        let mut len = 1;
+        let depth = depth.min(8);
+        while len > 0 {
+            len -= 1;
+            let (n, level, above) = stack[len];
+            let bound = self.bound(n, v, v_norm).min(above);
+            match self.nodes[n as usize].children {
+                Some((left, right)) if level < depth => {
+                    stack[len] = (left, level + 1, bound);
+                    stack[len + 1] = (right, level + 1, bound);
+                    len += 2;
+                }
+                _ => best = best.max(bound),
+            }
+        }
+        best
     }
 
     /// `max_p v·p` and the (original) index of a point attaining it; `None` for an empty set.
     pub fn support(&self, v: &[f64; D]) -> Option<(f64, usize)> {
+        self.support_near(v, None)
+    }
+
+    /// [`support`](Self::support), starting from point `hint` (an original index) as the best so
+    /// far: the same answer, found sooner when the hint is nearly as good — as the support point
+    /// of a neighbouring direction is, for a strategy querying the normals of adjacent facets
+    /// one after another. A hint out of range is ignored.
+    ///
+    /// ```
+    /// use pqhull::strategy::SupportIndex;
+    /// let points = [[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.7, 0.7]];
+    /// let index = SupportIndex::new(&points);
+    /// assert_eq!(index.support_near(&[1.0, 1.0], Some(0)), index.support(&[1.0, 1.0]));
+    /// assert_eq!(index.support_near(&[1.0, 1.0], Some(9)), Some((1.4, 3)));
+    /// ```
+    pub fn support_near(&self, v: &[f64; D], hint: Option<usize>) -> Option<(f64, usize)> {
         if self.points.is_empty() {
             return None;
         }
         let v_norm = dot(v, v).sqrt();
         let mut best = (f64::NEG_INFINITY, 0usize);
+        if let Some(&at) = hint.and_then(|h| self.position.get(h)) {
+            best = (
+                dot(v, &self.points[at as usize]),
+                self.original[at as usize] as usize,
+            );
+        }
         // Depth-first, the child with the larger bound first. Median splits make the tree at most
         // 33 levels deep for a u32-indexed set, and each level leaves one sibling waiting, so a
         // fixed array holds the stack: a query allocates nothing (it runs once per new facet).
@@ -170,7 +255,11 @@ impl<const D: usize> SupportIndex<D> {
                     }
                 }
                 Some((left, right)) => {
-                    let (bl, br) = (self.bound(left, v, v_norm), self.bound(right, v, v_norm));
+                    // A parent's bound holds for its children's points too.
+                    let (bl, br) = (
+                        self.bound(left, v, v_norm).min(bound),
+                        self.bound(right, v, v_norm).min(bound),
+                    );
                     let (first, second) = if bl > br {
                         ((right, br), (left, bl))
                     } else {
@@ -214,6 +303,21 @@ mod tests {
                 assert_eq!(value, scan, "{family}");
                 let again: f64 = v.iter().zip(&points[at]).map(|(a, b)| a * b).sum();
                 assert_eq!(again, value);
+                // Any hint, good or bad, gives the same maximum.
+                for hint in [0, at, n / 2, n - 1, n + 5] {
+                    let (near, _) = index.support_near(v, Some(hint)).unwrap();
+                    assert_eq!(near, scan, "{family}, hint {hint}");
+                }
+                // The cheap bound is a bound at every depth, and tightens with depth.
+                let bounds: Vec<f64> = (0..=8).map(|d| index.upper_bound(v, d)).collect();
+                assert!(
+                    bounds.iter().all(|&b| b >= scan),
+                    "{family}: {bounds:?} < {scan}"
+                );
+                assert!(
+                    bounds.windows(2).all(|w| w[1] <= w[0]),
+                    "{family}: {bounds:?}"
+                );
             }
         }
         assert!(
