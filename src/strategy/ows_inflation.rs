@@ -47,7 +47,9 @@ use std::collections::BinaryHeap;
 /// of disturbances. [`OwsInflation::with_index`] keys each facet instead by the smallest factor of
 /// *any* disturbance against its plane, `offset / h(−n)` with `h` the support function of the
 /// disturbances, answered by a [`SupportIndex`] in far fewer than one dot product per
-/// disturbance. The two keys differ only on facets that are not the minimum: the smallest key is
+/// disturbance (lazily: a facet waits under a lower bound of its key, from the top of the tree,
+/// until that bound reaches the top of the queue). The two keys differ only on facets that are
+/// not the minimum: the smallest key is
 /// the same facet and the same number in both (`min_F offset_F / h(−n_F)` is the largest `r`
 /// with `−r·d` inside the partial hull for every `d`, which is also the smallest factor of any
 /// disturbance at its exit facet), so both expand the same facets and stop with the same value.
