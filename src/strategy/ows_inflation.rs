@@ -237,7 +237,10 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
     /// Sets up the inflation phase over the live facets.
     fn begin_inflation(&mut self, hull: &mut Hull<D>) {
         self.phase = Phase::Inflate;
-        let live: Vec<FacetId> = hull.facets().map(|(id, _)| id).collect();
+        // The live ids, in the buffer `after_expansion` uses (kept across runs).
+        let mut live = std::mem::take(&mut self.created);
+        live.clear();
+        live.extend(hull.facets().map(|(id, _)| id));
         match self.disturbances {
             Disturbances::Rays(d) => {
                 self.orphans.extend(0..d.len() as u32);
@@ -245,6 +248,7 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
             }
             Disturbances::Support(index) => self.key_by_support(hull, index, &live),
         }
+        self.created = live;
     }
 
     /// After an expansion: re-key what changed.
