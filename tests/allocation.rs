@@ -139,3 +139,56 @@ fn hull_rebuilds_allocate_nothing_in_steady_state() {
     assert!(facets > 1000, "{facets} facets: the hulls did work");
     assert_eq!(allocations() - before, 0);
 }
+
+/// Q_OWS by the partial method on a generated sphere: grasps GJK settles allocate nothing; the
+/// others only the exact caches and the strategy's queue, which a fresh `OwsInflation` grows per
+/// grasp (seen: about 27 per force-closure grasp on spot).
+#[test]
+fn ows_partial_allocates_nothing_for_grasps_gjk_settles() {
+    use pqhull::grasp::Contact;
+    use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod};
+    use pqhull::mesh::Mesh;
+    let mesh = Mesh::uv_sphere(0.3, 8, 12).unwrap();
+    let friction = FrictionModel::try_new(0.5, 8).unwrap();
+    let space = ObjectWrenchSpace::from_mesh(&mesh, friction).unwrap();
+    let mut rng = Rng::new(4);
+    let set: Vec<Grasp> = (0..80)
+        .map(|_| {
+            let contacts = mesh
+                .sample_surface(&mut rng, 3)
+                .iter()
+                .map(|s| Contact::try_new(s.position, s.inward_normal, None).unwrap())
+                .collect();
+            space
+                .frame(&Grasp::try_new(contacts, friction).unwrap())
+                .unwrap()
+        })
+        .collect();
+    let mut evaluator = OwsEvaluator::new(OwsMethod::Partial);
+    let closure: Vec<bool> = set
+        .iter()
+        .map(|g| evaluator.evaluate(g, &space).unwrap().force_closure)
+        .collect();
+    let (mut fc, mut fc_allocations, mut other, mut other_allocations) = (0, 0, 0, 0);
+    for (g, &is_closure) in set.iter().zip(&closure) {
+        let before = allocations();
+        evaluator.evaluate(g, &space).unwrap();
+        let used = allocations() - before;
+        if is_closure {
+            fc += 1;
+            fc_allocations += used;
+        } else {
+            other += 1;
+            other_allocations += used;
+        }
+    }
+    assert!(fc > 5 && other > 5, "{fc} force closure, {other} not");
+    assert_eq!(
+        other_allocations, 0,
+        "grasps settled by GJK allocate nothing"
+    );
+    assert!(
+        fc_allocations <= 100 * fc,
+        "{fc_allocations} allocations for {fc} force-closure grasps"
+    );
+}

@@ -5,7 +5,7 @@ use crate::grasp::Grasp;
 use crate::grasp::quality::{
     Gjk, HullBuffers, Method, QualityError, certified_outside, find_or_make, q1_of_wrenches,
 };
-use crate::grasp::snap::pyramid_labels;
+use crate::grasp::snap::{SnappedCones, pyramid_labels, snapped_union};
 use crate::hull::{Hull, HullError};
 use crate::predicates::Sign;
 use crate::strategy::{OwsInflation, Stats, inflation_factor};
@@ -79,6 +79,8 @@ pub fn relative_error(approximate: f64, exact: f64) -> f64 {
 pub struct OwsEvaluator {
     method: OwsMethod,
     wrenches: Vec<[f64; 6]>,
+    /// The snapped cone generators behind `wrenches`.
+    cones: SnappedCones,
     /// The contact of every wrench (its friction pyramid, an exact flat for the hull engine).
     pyramids: Vec<u32>,
     /// The grasp hull's arena, reused from grasp to grasp.
@@ -93,6 +95,7 @@ impl OwsEvaluator {
         OwsEvaluator {
             method,
             wrenches: Vec::new(),
+            cones: SnappedCones::default(),
             pyramids: Vec::new(),
             hull: None,
             gjk: Gjk::default(),
@@ -126,7 +129,9 @@ impl OwsEvaluator {
             });
         }
         let started = Instant::now();
-        grasp.snapped_wrenches_into(&mut self.wrenches);
+        // As `Grasp::snapped_wrenches_into`, in this evaluator's buffers.
+        self.cones.fill(grasp);
+        snapped_union(&self.cones, &mut self.wrenches);
         let edges = grasp.friction().cone_edges();
         pyramid_labels(grasp.contact_count(), edges, &mut self.pyramids);
         let pyramids = Some(self.pyramids.as_slice());
