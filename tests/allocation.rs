@@ -141,8 +141,8 @@ fn hull_rebuilds_allocate_nothing_in_steady_state() {
 }
 
 /// Q_OWS by the partial method on a generated sphere: grasps GJK settles allocate nothing; the
-/// others only the exact caches and the strategy's queue, which a fresh `OwsInflation` grows per
-/// grasp (seen: about 27 per force-closure grasp on spot).
+/// others only the exact caches (the evaluator parks its `OwsInflation` between grasps; seen:
+/// about 14 per force-closure grasp on spot).
 #[test]
 fn ows_partial_allocates_nothing_for_grasps_gjk_settles() {
     use pqhull::grasp::Contact;

@@ -169,6 +169,33 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
         Self::with(Disturbances::Support(index))
     }
 
+    /// This strategy's buffers (queue, assignments, scratch) under a new index, for the next
+    /// run: evaluating many grasps against one object wrench space then allocates no new queue.
+    pub(crate) fn rebind_index<'b>(self, index: &'b SupportIndex<D>) -> OwsInflation<'b, D> {
+        self.rebind(Disturbances::Support(index))
+    }
+
+    /// This strategy's buffers with no disturbances (the [`Default`]), to keep between runs
+    /// without borrowing anything.
+    pub(crate) fn park(self) -> OwsInflation<'static, D> {
+        self.rebind(Disturbances::Rays(&[]))
+    }
+
+    fn rebind<'b>(self, disturbances: Disturbances<'b, D>) -> OwsInflation<'b, D> {
+        OwsInflation {
+            disturbances,
+            phase: Phase::ContainOrigin,
+            queue: self.queue,
+            assigned: self.assigned,
+            owner: self.owner,
+            orphans: self.orphans,
+            requeue: self.requeue,
+            created: self.created,
+            hint: None,
+            answer: None,
+        }
+    }
+
     fn with(disturbances: Disturbances<'a, D>) -> Self {
         OwsInflation {
             disturbances,
@@ -439,6 +466,7 @@ impl<const D: usize> Strategy<D> for OwsInflation<'_, D> {
 
     fn start(&mut self, _hull: &Hull<D>) {
         self.phase = Phase::ContainOrigin;
+        self.hint = None;
         self.queue.clear();
         self.assigned.iter_mut().for_each(Vec::clear);
         self.owner.iter_mut().for_each(|o| *o = u64::MAX);
@@ -470,6 +498,62 @@ impl<const D: usize> Strategy<D> for OwsInflation<'_, D> {
     }
 
     fn finish(self, hull: &Hull<D>) -> OwsResult<D> {
+        self.result(hull)
+    }
+}
+
+/// No disturbances at all: nothing to resist, so a force-closure hull gets an infinite value
+/// (and a hull without force closure none). Useful only as a strategy's parked state between
+/// runs.
+impl<const D: usize> Default for OwsInflation<'static, D> {
+    fn default() -> Self {
+        OwsInflation::new(&[])
+    }
+}
+
+/// A borrowed `OwsInflation` runs the same way and keeps its buffers (queue, assignments,
+/// scratch) for the next run.
+///
+/// ```
+/// use pqhull::Hull;
+/// use pqhull::strategy::OwsInflation;
+/// let square = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]];
+/// let disturbances = [[1.0, 0.0]];
+/// let mut strategy = OwsInflation::new(&disturbances);
+/// let (mut hull, first) = Hull::try_with_strategy(&square, &mut strategy)?;
+/// let wide = square.map(|p| [2.0 * p[0], p[1]]);
+/// let second = hull.rebuild_with_strategy(&wide, &mut strategy)?;
+/// assert!((first.value.unwrap() - 1.0).abs() < 1e-12);
+/// assert!((second.value.unwrap() - 2.0).abs() < 1e-12);
+/// # Ok::<(), pqhull::HullError>(())
+/// ```
+impl<const D: usize> Strategy<D> for &mut OwsInflation<'_, D> {
+    type Output = OwsResult<D>;
+
+    fn start(&mut self, hull: &Hull<D>) {
+        (**self).start(hull);
+    }
+
+    fn step(&mut self, hull: &mut Hull<D>) -> Step {
+        (**self).step(hull)
+    }
+
+    fn refines_all_normals(&self) -> bool {
+        (**self).refines_all_normals()
+    }
+
+    fn trace_context(&self) -> TraceContext<D> {
+        (**self).trace_context()
+    }
+
+    fn finish(self, hull: &Hull<D>) -> OwsResult<D> {
+        self.result(hull)
+    }
+}
+
+impl<const D: usize> OwsInflation<'_, D> {
+    /// The answer of the run that just stopped.
+    fn result(&self, hull: &Hull<D>) -> OwsResult<D> {
         let stats = hull.stats();
         match (self.phase, self.answer) {
             (Phase::Done, Some((value, id, disturbance))) => OwsResult {

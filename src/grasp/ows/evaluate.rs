@@ -83,10 +83,18 @@ pub struct OwsEvaluator {
     cones: SnappedCones,
     /// The contact of every wrench (its friction pyramid, an exact flat for the hull engine).
     pyramids: Vec<u32>,
-    /// The grasp hull's arena, reused from grasp to grasp.
+    buffers: OwsBuffers,
+}
+
+/// What an [`OwsEvaluator`] reuses from grasp to grasp.
+#[derive(Clone, Debug, Default)]
+struct OwsBuffers {
+    /// The grasp hull's arena.
     hull: Option<Hull<6>>,
     /// GJK's corral, for grasps it settles without a hull.
     gjk: Gjk,
+    /// The partial method's strategy, parked between grasps (its queue and scratch).
+    inflation: OwsInflation<'static, 6>,
 }
 
 impl OwsEvaluator {
@@ -97,8 +105,7 @@ impl OwsEvaluator {
             wrenches: Vec::new(),
             cones: SnappedCones::default(),
             pyramids: Vec::new(),
-            hull: None,
-            gjk: Gjk::default(),
+            buffers: OwsBuffers::default(),
         }
     }
 
@@ -140,8 +147,7 @@ impl OwsEvaluator {
             pyramids,
             space,
             self.method,
-            &mut self.hull,
-            &mut self.gjk,
+            &mut self.buffers,
         )?;
         quality.stats.elapsed = started.elapsed();
         Ok(quality)
@@ -158,14 +164,7 @@ pub fn ows_of_wrenches(
     method: OwsMethod,
 ) -> Result<OwsQuality, QualityError> {
     let started = Instant::now();
-    let mut quality = ows_with(
-        wrenches,
-        None,
-        space,
-        method,
-        &mut None,
-        &mut Gjk::default(),
-    )?;
+    let mut quality = ows_with(wrenches, None, space, method, &mut OwsBuffers::default())?;
     quality.stats.elapsed = started.elapsed();
     Ok(quality)
 }
@@ -185,8 +184,7 @@ fn ows_with(
     pyramids: Option<&[u32]>,
     space: &ObjectWrenchSpace,
     method: OwsMethod,
-    hull: &mut Option<Hull<6>>,
-    gjk: &mut Gjk,
+    buffers: &mut OwsBuffers,
 ) -> Result<OwsQuality, QualityError> {
     if wrenches.iter().flatten().any(|x| !x.is_finite()) {
         return Err(QualityError::NonFiniteWrench);
@@ -195,31 +193,32 @@ fn ows_with(
         // A grasp GJK certifies not force closure has no OWS value: no hull needed. (Not for
         // `PartialRays`, kept as published for comparison.)
         OwsMethod::Partial
-            if !wrenches.is_empty() && certified_outside(wrenches, gjk).is_some() =>
+            if !wrenches.is_empty() && certified_outside(wrenches, &mut buffers.gjk).is_some() =>
         {
             Ok(not_force_closure(Stats::default()))
         }
-        OwsMethod::Partial => Ok(partial(
-            wrenches,
-            pyramids,
-            OwsInflation::with_index(space.support_index()),
-            hull,
-        )),
+        OwsMethod::Partial => {
+            let parked = std::mem::take(&mut buffers.inflation);
+            let mut strategy = parked.rebind_index(space.support_index());
+            let quality = partial(wrenches, pyramids, &mut strategy, &mut buffers.hull);
+            buffers.inflation = strategy.park();
+            Ok(quality)
+        }
         OwsMethod::PartialRays => Ok(partial(
             wrenches,
             pyramids,
             OwsInflation::new(space.disturbances()),
-            hull,
+            &mut buffers.hull,
         )),
-        OwsMethod::BruteForce => Ok(brute_force(wrenches, pyramids, space, hull)),
+        OwsMethod::BruteForce => Ok(brute_force(wrenches, pyramids, space, &mut buffers.hull)),
         OwsMethod::Ellipsoid => ellipsoid(wrenches, space),
     }
 }
 
-fn partial(
+fn partial<S: crate::Strategy<6, Output = crate::strategy::OwsResult<6>>>(
     wrenches: &[[f64; 6]],
     pyramids: Option<&[u32]>,
-    strategy: OwsInflation<'_, 6>,
+    strategy: S,
     hull: &mut Option<Hull<6>>,
 ) -> OwsQuality {
     match HullBuffers::build(hull, wrenches, pyramids, strategy) {
