@@ -145,23 +145,17 @@ fn hull_rebuilds_allocate_nothing_in_steady_state() {
 /// about 14 per force-closure grasp on spot).
 #[test]
 fn ows_partial_allocates_nothing_for_grasps_gjk_settles() {
-    use pqhull::grasp::Contact;
     use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod};
-    use pqhull::mesh::Mesh;
+    use pqhull::mesh::{Mesh, SurfaceSampler};
     let mesh = Mesh::uv_sphere(0.3, 8, 12).unwrap();
     let friction = FrictionModel::try_new(0.5, 8).unwrap();
     let space = ObjectWrenchSpace::from_mesh(&mesh, friction).unwrap();
     let mut rng = Rng::new(4);
+    let sampler = SurfaceSampler::new(&mesh);
     let set: Vec<Grasp> = (0..80)
         .map(|_| {
-            let contacts = mesh
-                .sample_surface(&mut rng, 3)
-                .iter()
-                .map(|s| Contact::try_new(s.position, s.inward_normal, None).unwrap())
-                .collect();
-            space
-                .frame(&Grasp::try_new(contacts, friction).unwrap())
-                .unwrap()
+            let fingers = Grasp::random_on_surface(&mut rng, &sampler, 3, friction).unwrap();
+            space.frame(&fingers).unwrap()
         })
         .collect();
     let mut evaluator = OwsEvaluator::new(OwsMethod::Partial);

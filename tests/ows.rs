@@ -5,7 +5,7 @@ use pqhull::grasp::ows::{
 };
 use pqhull::grasp::quality::QualityError;
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
-use pqhull::mesh::Mesh;
+use pqhull::mesh::{Mesh, SurfaceSampler};
 use pqhull::rbox::Rng;
 use std::path::PathBuf;
 
@@ -165,6 +165,7 @@ fn partial_equals_brute_force(mesh: &Mesh, grasps: usize, seed: u64) -> usize {
     let space =
         ObjectWrenchSpace::from_mesh(mesh, FrictionModel::try_new(0.4, 4).unwrap()).unwrap();
     let mut rng = Rng::new(seed);
+    let sampler = SurfaceSampler::new(mesh);
     let mut partial = OwsEvaluator::new(OwsMethod::Partial);
     let mut brute = OwsEvaluator::new(OwsMethod::BruteForce);
     let mut rays = OwsEvaluator::new(OwsMethod::PartialRays);
@@ -175,15 +176,9 @@ fn partial_equals_brute_force(mesh: &Mesh, grasps: usize, seed: u64) -> usize {
     for g in 0..grasps {
         let contacts = 2 + rng.index(4); // 2 … 5 contacts
         let k = 3 + rng.index(4); // 3 … 6 edges
-        let samples = mesh.sample_surface(&mut rng, contacts);
-        let contacts: Vec<Contact> = samples
-            .iter()
-            .map(|s| Contact::try_new(s.position, s.inward_normal, None).unwrap())
-            .collect();
         let friction = FrictionModel::try_new(rng.uniform_in(0.2, 1.0), k).unwrap();
-        let grasp = space
-            .frame(&Grasp::try_new(contacts, friction).unwrap())
-            .unwrap();
+        let fingers = Grasp::random_on_surface(&mut rng, &sampler, contacts, friction).unwrap();
+        let grasp = space.frame(&fingers).unwrap();
         let a = partial.evaluate(&grasp, &space).unwrap();
         let b = brute.evaluate(&grasp, &space).unwrap();
         assert_eq!(a.force_closure, b.force_closure, "grasp {g}");
@@ -275,6 +270,7 @@ fn a_flat_sheet_is_never_force_closure() {
     let friction = FrictionModel::try_new(0.5, 4).unwrap();
     let space = ObjectWrenchSpace::from_mesh(&mesh, friction).unwrap();
     let mut rng = Rng::new(9);
+    let sampler = SurfaceSampler::new(&mesh);
     for method in [
         OwsMethod::Partial,
         OwsMethod::PartialRays,
@@ -282,14 +278,8 @@ fn a_flat_sheet_is_never_force_closure() {
     ] {
         let mut evaluator = OwsEvaluator::new(method);
         for _ in 0..50 {
-            let contacts = mesh
-                .sample_surface(&mut rng, 4)
-                .iter()
-                .map(|s| Contact::try_new(s.position, s.inward_normal, None).unwrap())
-                .collect();
-            let grasp = space
-                .frame(&Grasp::try_new(contacts, friction).unwrap())
-                .unwrap();
+            let fingers = Grasp::random_on_surface(&mut rng, &sampler, 4, friction).unwrap();
+            let grasp = space.frame(&fingers).unwrap();
             let q = evaluator.evaluate(&grasp, &space).unwrap();
             assert!(!q.force_closure && q.value.is_none());
         }
@@ -407,16 +397,11 @@ fn batch_results_are_in_input_order_and_match_one_by_one() {
     let friction = FrictionModel::try_new(0.5, 6).unwrap();
     let space = ObjectWrenchSpace::from_mesh(&sphere, friction).unwrap();
     let mut rng = Rng::new(21);
+    let sampler = SurfaceSampler::new(&sphere);
     let grasps: Vec<Grasp> = (0..40)
         .map(|_| {
-            let contacts = sphere
-                .sample_surface(&mut rng, 4)
-                .iter()
-                .map(|s| Contact::try_new(s.position, s.inward_normal, None).unwrap())
-                .collect();
-            space
-                .frame(&Grasp::try_new(contacts, friction).unwrap())
-                .unwrap()
+            let fingers = Grasp::random_on_surface(&mut rng, &sampler, 4, friction).unwrap();
+            space.frame(&fingers).unwrap()
         })
         .collect();
     let batch = evaluate_batch(&grasps, &space, OwsMethod::Partial);

@@ -1,6 +1,8 @@
-//! Seeded random grasps on a box, the test object of the seed paper's GWS evaluation.
+//! Seeded random grasps: on a box (the test object of the seed paper's GWS evaluation) and on a
+//! mesh's surface.
 
-use super::{Contact, FrictionModel, Grasp};
+use super::{Contact, FrictionModel, Grasp, GraspError};
+use crate::mesh::SurfaceSampler;
 use crate::rbox::Rng;
 
 impl Grasp {
@@ -47,5 +49,43 @@ impl Grasp {
             .torque_scale(rho)
             .build()
             .expect("random_on_box: at least one contact")
+    }
+
+    /// A random grasp with `contacts` fingers at area-uniform points of a mesh's surface
+    /// (`sampler`, built once per mesh), each pushing along its triangle's inward normal (default
+    /// tangent), in the default torque frame; [`ObjectWrenchSpace::frame`] puts it in an object's
+    /// frame. The points are `sampler`'s next `contacts` samples, so the same `rng` state gives
+    /// the same grasp as [`Mesh::sample_surface`].
+    ///
+    /// [`ObjectWrenchSpace::frame`]: crate::grasp::ows::ObjectWrenchSpace::frame
+    /// [`Mesh::sample_surface`]: crate::mesh::Mesh::sample_surface
+    ///
+    /// ```
+    /// use pqhull::grasp::{FrictionModel, Grasp};
+    /// use pqhull::mesh::{Mesh, SurfaceSampler};
+    /// use pqhull::rbox::Rng;
+    /// let cube = Mesh::cuboid([0.5, 0.5, 0.5])?;
+    /// let sampler = SurfaceSampler::new(&cube);
+    /// let friction = FrictionModel::try_new(0.5, 8)?;
+    /// let g = Grasp::random_on_surface(&mut Rng::new(3), &sampler, 4, friction)?;
+    /// assert_eq!(g.contact_count(), 4);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`GraspError`] when `contacts` is 0.
+    pub fn random_on_surface(
+        rng: &mut Rng,
+        sampler: &SurfaceSampler,
+        contacts: usize,
+        friction: FrictionModel,
+    ) -> Result<Grasp, GraspError> {
+        let fingers = (0..contacts)
+            .map(|_| {
+                let s = sampler.sample(rng);
+                Contact::try_new(s.position, s.inward_normal, None)
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        Grasp::try_new(fingers, friction)
     }
 }

@@ -7,7 +7,8 @@ use crate::plan_cmd::load_object;
 use clap::Args;
 use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod, OwsQuality, relative_error};
 use pqhull::grasp::quality::{Evaluator, Method, Metric};
-use pqhull::grasp::{Contact, FrictionModel, Grasp};
+use pqhull::grasp::{FrictionModel, Grasp};
+use pqhull::mesh::SurfaceSampler;
 use pqhull::rbox::Rng;
 use serde_json::{Value, json};
 use std::path::PathBuf;
@@ -99,14 +100,11 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
     let ellipsoid_ms = started.elapsed().as_secs_f64() * 1e3;
 
     let mut rng = Rng::new(args.seed);
+    let sampler = SurfaceSampler::new(&mesh);
     let grasps: Vec<Grasp> = (0..args.grasps)
         .map(|_| {
-            let contacts = mesh
-                .sample_surface(&mut rng, args.contacts)
-                .iter()
-                .map(|s| Contact::try_new(s.position, s.inward_normal, None))
-                .collect::<Result<Vec<_>, _>>()?;
-            space.frame(&Grasp::try_new(contacts, friction)?)
+            let grasp = Grasp::random_on_surface(&mut rng, &sampler, args.contacts, friction)?;
+            space.frame(&grasp)
         })
         .collect::<Result<_, _>>()
         .map_err(|e| CliError::Geometry(e.to_string()))?;
