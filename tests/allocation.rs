@@ -4,9 +4,10 @@
 //! After one pass over a set of grasps has grown every buffer, a second pass over the same grasps
 //! must allocate nothing on grasps settled by GJK (not force closure), and on force-closure grasps
 //! only the exact-arithmetic cache of the facets whose floating-point filter fails (one 560-byte
-//! box per such facet, dropped when the facet's slot is reused). Seen: about 19 per Q1 grasp at
-//! k = 32 (against about 490 facets created), about 71 per Q∞ grasp at k = 8 (the Minkowski sum's
-//! exact degeneracies are not declared to the engine). The bounds below are tripwires: an
+//! box per such facet, dropped when the facet's slot is reused). Seen (each test prints its
+//! figures: `cargo nextest run --release --test allocation --no-capture`): about 19 per Q1 grasp
+//! at k = 32 (against about 490 facets created), about 71 per Q∞ grasp at k = 8 (the Minkowski
+//! sum's exact degeneracies are not declared to the engine). The bounds below are tripwires: an
 //! allocation per facet or per point would exceed them several times over.
 
 use pqhull::grasp::quality::{Evaluator, Method, Metric};
@@ -56,59 +57,64 @@ fn grasps(edges: usize, count: usize) -> Vec<Grasp> {
         .collect()
 }
 
-/// Allocations of a second pass of `evaluator` over `set`, split by the first pass's verdict:
-/// (force closure: allocations, grasps), (not force closure: allocations, grasps).
-fn second_pass(evaluator: &mut Evaluator, set: &[Grasp]) -> ((usize, usize), (usize, usize)) {
-    let closure: Vec<bool> = set
-        .iter()
-        .map(|g| evaluator.evaluate(g).unwrap().force_closure)
-        .collect();
+/// Steady-state allocations of `evaluate` (true: force closure) over `set`: a first pass grows
+/// every buffer, a second is counted, split by verdict. Asserts what the file's header says —
+/// nothing for grasps GJK settles, at most `per_grasp` for force-closure ones — and prints the
+/// figures (`cargo nextest run --release --test allocation --no-capture`).
+fn check_second_pass<G>(
+    what: &str,
+    set: &[G],
+    per_grasp: usize,
+    mut evaluate: impl FnMut(&G) -> bool,
+) {
+    let closure: Vec<bool> = set.iter().map(&mut evaluate).collect();
     let (mut fc, mut other) = ((0, 0), (0, 0));
     for (g, &is_closure) in set.iter().zip(&closure) {
         let before = allocations();
-        let q = evaluator.evaluate(g).unwrap();
+        let again = evaluate(g);
         let used = allocations() - before;
-        assert_eq!(q.force_closure, is_closure);
+        assert_eq!(again, is_closure, "{what}: the same verdict twice");
         let slot = if is_closure { &mut fc } else { &mut other };
         slot.0 += used;
         slot.1 += 1;
     }
-    (fc, other)
+    let ((fc_allocations, fc), (other_allocations, other)) = (fc, other);
+    eprintln!(
+        "{what}: {fc_allocations} allocations for {fc} force-closure grasps ({:.1} each), \
+         {other_allocations} for {other} others",
+        fc_allocations as f64 / fc.max(1) as f64
+    );
+    assert!(
+        fc > 5 && other > 5,
+        "{what}: {fc} force closure, {other} not"
+    );
+    assert_eq!(
+        other_allocations, 0,
+        "{what}: grasps settled by GJK allocate nothing"
+    );
+    assert!(
+        fc_allocations <= per_grasp * fc,
+        "{what}: {fc_allocations} allocations for {fc} force-closure grasps"
+    );
 }
 
 #[test]
 fn q1_partial_allocates_nothing_in_steady_state_but_exact_caches() {
-    let set = grasps(32, 120);
     let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial);
-    let ((fc_allocations, fc), (other_allocations, other)) = second_pass(&mut evaluator, &set);
-    assert!(fc > 10 && other > 10, "{fc} force closure, {other} not");
-    assert_eq!(
-        other_allocations, 0,
-        "grasps settled by GJK allocate nothing"
-    );
-    assert!(
-        fc_allocations <= 40 * fc,
-        "{fc_allocations} allocations for {fc} force-closure grasps"
-    );
+    check_second_pass("Q1, k = 32", &grasps(32, 120), 40, |g| {
+        evaluator.evaluate(g).unwrap().force_closure
+    });
 }
 
 #[test]
 fn q_inf_partial_allocates_nothing_in_steady_state_but_exact_caches() {
-    let set = grasps(8, 60);
     let metric = Metric::QInf {
         with_zero_wrench: true,
     };
     let mut evaluator = Evaluator::new(metric, Method::Partial);
-    let ((fc_allocations, fc), (other_allocations, other)) = second_pass(&mut evaluator, &set);
-    assert!(fc > 5 && other > 5, "{fc} force closure, {other} not");
-    assert_eq!(
-        other_allocations, 0,
-        "grasps settled by GJK allocate nothing"
-    );
-    assert!(
-        fc_allocations <= 150 * fc,
-        "{fc_allocations} allocations for {fc} force-closure grasps"
-    );
+    check_second_pass("Q-inf with zero wrench, k = 8", &grasps(8, 60), 150, |g| {
+        evaluator.evaluate(g).unwrap().force_closure
+    });
 }
 
 /// The engine itself: rebuilding hulls of generic point sets (no exact degeneracy, so no exact
@@ -140,11 +146,10 @@ fn hull_rebuilds_allocate_nothing_in_steady_state() {
     assert_eq!(allocations() - before, 0);
 }
 
-/// Q_OWS by the partial method on a generated sphere: grasps GJK settles allocate nothing; the
-/// others only the exact caches (the evaluator parks its `OwsInflation` between grasps; seen:
-/// about 14 per force-closure grasp on spot).
+/// Q_OWS by the partial method on a generated sphere, as above (the evaluator parks its
+/// `OwsInflation` between grasps, so the force-closure ones allocate only exact caches).
 #[test]
-fn ows_partial_allocates_nothing_for_grasps_gjk_settles() {
+fn ows_partial_allocates_nothing_in_steady_state_but_exact_caches() {
     use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod};
     use pqhull::mesh::{Mesh, SurfaceSampler};
     let mesh = Mesh::uv_sphere(0.3, 8, 12).unwrap();
@@ -159,30 +164,7 @@ fn ows_partial_allocates_nothing_for_grasps_gjk_settles() {
         })
         .collect();
     let mut evaluator = OwsEvaluator::new(OwsMethod::Partial);
-    let closure: Vec<bool> = set
-        .iter()
-        .map(|g| evaluator.evaluate(g, &space).unwrap().force_closure)
-        .collect();
-    let (mut fc, mut fc_allocations, mut other, mut other_allocations) = (0, 0, 0, 0);
-    for (g, &is_closure) in set.iter().zip(&closure) {
-        let before = allocations();
-        evaluator.evaluate(g, &space).unwrap();
-        let used = allocations() - before;
-        if is_closure {
-            fc += 1;
-            fc_allocations += used;
-        } else {
-            other += 1;
-            other_allocations += used;
-        }
-    }
-    assert!(fc > 5 && other > 5, "{fc} force closure, {other} not");
-    assert_eq!(
-        other_allocations, 0,
-        "grasps settled by GJK allocate nothing"
-    );
-    assert!(
-        fc_allocations <= 100 * fc,
-        "{fc_allocations} allocations for {fc} force-closure grasps"
-    );
+    check_second_pass("OWS on a sphere", &set, 100, |g| {
+        evaluator.evaluate(g, &space).unwrap().force_closure
+    });
 }
