@@ -38,7 +38,9 @@ pub mod strategy;
 pub mod viz;
 
 pub use hull::{Facet, FacetId, Hull, HullError, InvariantViolation};
-pub use strategy::{ClosestToOrigin, FarthestPoint, OwsInflation, Stats, Step, Strategy};
+pub use strategy::{
+    ClosestToOrigin, FarthestPoint, OwsInflation, ReusableStrategy, Stats, Step, Strategy,
+};
 
 /// The README's examples, compiled and run as doctests so they cannot rot.
 #[cfg(doctest)]

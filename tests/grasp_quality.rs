@@ -82,6 +82,12 @@ fn agree(a: &Quality, b: &Quality, what: &str) {
     );
 }
 
+/// `metric` of `grasp` by the partial and by the full method, fresh evaluators.
+fn partial_and_full(metric: Metric, grasp: &Grasp) -> (Quality, Quality) {
+    let by = |method| Evaluator::new(metric, method).evaluate(grasp).unwrap();
+    (by(Method::Partial), by(Method::Full))
+}
+
 #[test]
 fn two_antipodal_hard_fingers_are_not_force_closure() {
     // Frictionless-ish pinch: rank 5 at most; a finite negative value, no error.
@@ -225,12 +231,7 @@ fn q_inf_implicit_equals_materialised() {
         let grasp = random_grasp(&mut rng, m, k);
         for with_zero_wrench in [false, true] {
             let metric = Metric::QInf { with_zero_wrench };
-            let a = Evaluator::new(metric, Method::Partial)
-                .evaluate(&grasp)
-                .unwrap();
-            let b = Evaluator::new(metric, Method::Full)
-                .evaluate(&grasp)
-                .unwrap();
+            let (a, b) = partial_and_full(metric, &grasp);
             agree(
                 &a,
                 &b,
@@ -318,12 +319,7 @@ fn q_inf_of_flat_sums_agrees_with_the_materialised_sum() {
         for with_zero_wrench in [false, true] {
             let metric = Metric::QInf { with_zero_wrench };
             let grasp = pinch(offset);
-            let a = Evaluator::new(metric, Method::Partial)
-                .evaluate(&grasp)
-                .unwrap();
-            let b = Evaluator::new(metric, Method::Full)
-                .evaluate(&grasp)
-                .unwrap();
+            let (a, b) = partial_and_full(metric, &grasp);
             let what = format!("offset {offset}, zero {with_zero_wrench}");
             agree(&a, &b, &what);
             assert!(!a.force_closure, "{what}");

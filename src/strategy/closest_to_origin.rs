@@ -1,7 +1,7 @@
 //! `ClosestToOrigin`: the PQHGWS algorithm (Liu & Carpin, Algorithm 1), made exact.
 
 use super::nearest::{min_norm_point, nearest_in_simplex};
-use super::{Queued, Stats, Step, Strategy};
+use super::{Queued, ReusableStrategy, Stats, Step, Strategy};
 use crate::hull::{FacetId, Hull, dot};
 use crate::predicates::Sign;
 use crate::viz::TraceContext;
@@ -486,40 +486,9 @@ impl<const D: usize, S: PointSource<D>> Strategy<D> for ClosestToOrigin<D, S> {
 }
 
 /// A borrowed `ClosestToOrigin` runs the same way and keeps its buffers (the facet queue, the
-/// outside-phase scratch) for the next run: with [`Hull::rebuild_with_strategy`], evaluating many
-/// point sets allocates nothing in steady state.
-///
-/// ```
-/// use pqhull::{ClosestToOrigin, Hull};
-/// let mut strategy = ClosestToOrigin::new();
-/// let square = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]];
-/// let (mut hull, first) = Hull::try_with_strategy(&square, &mut strategy)?;
-/// let shifted = square.map(|p| [p[0] + 0.5, p[1]]);
-/// let second = hull.rebuild_with_strategy(&shifted, &mut strategy)?;
-/// assert!((first.signed_distance - 1.0).abs() < 1e-15);
-/// assert!((second.signed_distance - 0.5).abs() < 1e-15);
-/// # Ok::<(), pqhull::HullError>(())
-/// ```
-impl<const D: usize, S: PointSource<D>> Strategy<D> for &mut ClosestToOrigin<D, S> {
-    type Output = DistanceResult<D>;
-
-    fn start(&mut self, hull: &Hull<D>) {
-        (**self).start(hull);
-    }
-
-    fn step(&mut self, hull: &mut Hull<D>) -> Step {
-        (**self).step(hull)
-    }
-
-    fn refines_all_normals(&self) -> bool {
-        (**self).refines_all_normals()
-    }
-
-    fn trace_context(&self) -> TraceContext<D> {
-        (**self).trace_context()
-    }
-
-    fn finish(self, hull: &Hull<D>) -> Self::Output {
+/// outside-phase scratch) for the next run (see [`ReusableStrategy`]'s example).
+impl<const D: usize, S: PointSource<D>> ReusableStrategy<D> for ClosestToOrigin<D, S> {
+    fn output(&self, hull: &Hull<D>) -> DistanceResult<D> {
         self.result(hull)
     }
 }

@@ -102,6 +102,51 @@ pub trait Strategy<const D: usize> {
     }
 }
 
+/// A strategy whose result can be read from a borrow: then `&mut` of it is a strategy too, which
+/// runs the same way and keeps the strategy's buffers (queues, scratch) for the next run — with
+/// [`Hull::rebuild_with_strategy`](crate::Hull::rebuild_with_strategy), evaluating many point sets
+/// allocates nothing in steady state. `start` must reset everything a run depends on.
+///
+/// ```
+/// use pqhull::{ClosestToOrigin, Hull};
+/// let mut strategy = ClosestToOrigin::new();
+/// let square = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]];
+/// let (mut hull, first) = Hull::try_with_strategy(&square, &mut strategy)?;
+/// let shifted = square.map(|p| [p[0] + 0.5, p[1]]);
+/// let second = hull.rebuild_with_strategy(&shifted, &mut strategy)?;
+/// assert!((first.signed_distance - 1.0).abs() < 1e-15);
+/// assert!((second.signed_distance - 0.5).abs() < 1e-15);
+/// # Ok::<(), pqhull::HullError>(())
+/// ```
+pub trait ReusableStrategy<const D: usize>: Strategy<D> {
+    /// The result of the run that just stopped (what [`Strategy::finish`] returns).
+    fn output(&self, hull: &Hull<D>) -> Self::Output;
+}
+
+impl<const D: usize, T: ReusableStrategy<D>> Strategy<D> for &mut T {
+    type Output = T::Output;
+
+    fn start(&mut self, hull: &Hull<D>) {
+        (**self).start(hull);
+    }
+
+    fn step(&mut self, hull: &mut Hull<D>) -> Step {
+        (**self).step(hull)
+    }
+
+    fn finish(self, hull: &Hull<D>) -> Self::Output {
+        self.output(hull)
+    }
+
+    fn refines_all_normals(&self) -> bool {
+        (**self).refines_all_normals()
+    }
+
+    fn trace_context(&self) -> crate::viz::TraceContext<D> {
+        (**self).trace_context()
+    }
+}
+
 /// A facet waiting in a strategy's priority queue (`BinaryHeap`, a max-heap): the largest `key`
 /// first, ties to the older facet (smaller serial) so the order is deterministic. `serial` tells
 /// an entry whose facet was since removed (its slot possibly reused) from a live one; `data` is

@@ -1,6 +1,6 @@
 //! `OwsInflation`: the PQHOWS algorithm (Liu & Carpin, Algorithm 2), made exact.
 
-use super::{Queued, Stats, Step, Strategy, SupportIndex};
+use super::{Queued, ReusableStrategy, Stats, Step, Strategy, SupportIndex};
 use crate::hull::{FacetId, Hull, dot};
 use crate::predicates::Sign;
 use crate::viz::TraceContext;
@@ -527,26 +527,8 @@ impl<const D: usize> Default for OwsInflation<'static, D> {
 /// assert!((second.value.unwrap() - 2.0).abs() < 1e-12);
 /// # Ok::<(), pqhull::HullError>(())
 /// ```
-impl<const D: usize> Strategy<D> for &mut OwsInflation<'_, D> {
-    type Output = OwsResult<D>;
-
-    fn start(&mut self, hull: &Hull<D>) {
-        (**self).start(hull);
-    }
-
-    fn step(&mut self, hull: &mut Hull<D>) -> Step {
-        (**self).step(hull)
-    }
-
-    fn refines_all_normals(&self) -> bool {
-        (**self).refines_all_normals()
-    }
-
-    fn trace_context(&self) -> TraceContext<D> {
-        (**self).trace_context()
-    }
-
-    fn finish(self, hull: &Hull<D>) -> OwsResult<D> {
+impl<const D: usize> ReusableStrategy<D> for OwsInflation<'_, D> {
+    fn output(&self, hull: &Hull<D>) -> OwsResult<D> {
         self.result(hull)
     }
 }
