@@ -27,8 +27,9 @@ each number of cone edges k:
           size (default 1 and the available parallelism), rounds interleaved across sizes,
           median of --batch-rounds (0 turns it off): grasps/s and the speed-up over 1 thread.
           Each timed round evaluates the set `passes` times inside the pool, enough to last
-          200 ms on one thread: waking an idle worker costs milliseconds on a virtual machine,
-          which would otherwise swamp a batch of small grasps (steady throughput is measured).
+          --batch-min-ms (default 200) on one thread: waking an idle worker costs milliseconds
+          on a virtual machine, which would otherwise swamp a batch of small grasps (steady
+          throughput is measured; --batch-min-ms 0 times single passes, wake-up included).
           Every pool runs one untimed pass first. The batch results must equal the sequential
           ones (counted in `mismatches`).
 
@@ -108,6 +109,9 @@ pub struct GwsArgs {
     /// Timed rounds of each batch measurement (the median is reported); 0: no batch
     #[arg(long, default_value_t = 3)]
     pub batch_rounds: usize,
+    /// Each batch round repeats the set until this much one-thread work (ms); 0: one pass
+    #[arg(long, default_value_t = 200.0)]
+    pub batch_min_ms: f64,
     /// Seed of the random grasps
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
@@ -212,16 +216,17 @@ fn batch(
     sequential: &[Quality],
     pools: &[(usize, rayon::ThreadPool)],
     rounds: usize,
+    min_ms: f64,
 ) -> Vec<Value> {
     if rounds == 0 {
         return Vec::new();
     }
-    // Passes per round: 200 ms of sequential work (see the help text).
+    // Passes per round: `min_ms` of sequential work (see the help text).
     let sequential_s: f64 = sequential
         .iter()
         .map(|q| q.stats.elapsed.as_secs_f64())
         .sum();
-    let passes = ((0.2 / sequential_s.max(1e-9)).ceil() as usize).clamp(1, 1000);
+    let passes = ((min_ms / 1e3 / sequential_s.max(1e-9)).ceil() as usize).clamp(1, 1000);
     for (_, pool) in pools {
         pool.install(|| evaluate_batch(set, Metric::Q1, Method::Partial));
     }
@@ -381,7 +386,13 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
         for &variant in variants.iter().filter(|_| k <= args.qinf_max_edges) {
             qinf.push(qinf_row(&set, variant));
         }
-        let batch = batch(&set, &partial_results, &pools, args.batch_rounds);
+        let batch = batch(
+            &set,
+            &partial_results,
+            &pools,
+            args.batch_rounds,
+            args.batch_min_ms,
+        );
         report.push(json!({
             "cone_edges": k,
             "contacts": args.contacts,
@@ -400,6 +411,7 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
                 "threads": threads,
                 "available_parallelism": std::thread::available_parallelism().map_or(1, |n| n.get()),
                 "batch_rounds": args.batch_rounds,
+                "batch_min_ms": args.batch_min_ms,
                 "qinf_max_edges": args.qinf_max_edges,
                 "results": report,
             })
