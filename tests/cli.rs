@@ -493,6 +493,8 @@ fn bench_gws_json_reports_qinf_and_batch_throughput() {
         assert_eq!(b["mismatches"], 0);
         assert!(b["grasps_per_s"].as_f64().unwrap() > 0.0);
         assert!(b["speedup_vs_1_thread"].as_f64().unwrap() > 0.0);
+        // Four tiny grasps are far below the default 200 ms per round: many passes.
+        assert!(b["passes"].as_u64().unwrap() > 1, "{b}");
     }
     assert_eq!(batch[0]["speedup_vs_1_thread"], 1.0);
 }
@@ -535,7 +537,7 @@ fn bench_gws_tables_and_switches() {
                 "--qinf",
                 "zero-wrench",
             ],
-            &["--threads", "1", "--json"],
+            &["--threads", "1", "--batch-min-ms", "0", "--json"],
         ]
         .concat(),
         None,
@@ -547,6 +549,7 @@ fn bench_gws_tables_and_switches() {
     assert!(results[1]["qinf"].as_array().unwrap().is_empty());
     assert_eq!(results[0]["methods"].as_array().unwrap().len(), 1); // --full-grasps 0
     assert_eq!(results[1]["batch"].as_array().unwrap().len(), 1);
+    assert_eq!(results[1]["batch"][0]["passes"], 1); // --batch-min-ms 0: single passes
     // A pool of 0 threads is a usage error.
     let out = pqh(&[&args[..], &["--threads", "1,0"]].concat(), None);
     assert!(one_line_error(&out, 2).contains("--threads"));
