@@ -57,36 +57,61 @@ fn grasps(edges: usize, count: usize) -> Vec<Grasp> {
         .collect()
 }
 
-/// Steady-state allocations of `evaluate` (true: force closure) over `set`: a first pass grows
-/// every buffer, a second is counted, split by verdict. Asserts what the file's header says —
-/// nothing for grasps GJK settles, at most `per_grasp` for force-closure ones — and prints the
-/// figures (`cargo nextest run --release --test allocation --no-capture`).
+/// What a grasp's evaluation did: force closure (a hull), settled without a hull (GJK), or
+/// neither — a grasp within `δ` of the boundary, which the exact engine decides on the raw
+/// wrenches (a hull of sliver facets whose exact caches allocate).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    ForceClosure,
+    NoHull,
+    Boundary,
+}
+
+fn kind(force_closure: bool, facets_created: usize) -> Kind {
+    match (force_closure, facets_created) {
+        (true, _) => Kind::ForceClosure,
+        (false, 0) => Kind::NoHull,
+        (false, _) => Kind::Boundary,
+    }
+}
+
+/// Steady-state allocations of `evaluate` over `set`: a first pass grows every buffer, a second
+/// is counted, split by [`Kind`]. Asserts what the file's header says — nothing for grasps GJK
+/// settles, at most `per_grasp` for force-closure ones — and prints the figures
+/// (`cargo nextest run --release --test allocation --no-capture`).
 fn check_second_pass<G>(
     what: &str,
     set: &[G],
     per_grasp: usize,
-    mut evaluate: impl FnMut(&G) -> bool,
+    mut evaluate: impl FnMut(&G) -> Kind,
 ) {
-    let closure: Vec<bool> = set.iter().map(&mut evaluate).collect();
-    let (mut fc, mut other) = ((0, 0), (0, 0));
-    for (g, &is_closure) in set.iter().zip(&closure) {
+    let kinds: Vec<Kind> = set.iter().map(&mut evaluate).collect();
+    let (mut fc, mut other, mut boundary) = ((0, 0), (0, 0), (0, 0));
+    for (g, &k) in set.iter().zip(&kinds) {
         let before = allocations();
         let again = evaluate(g);
         let used = allocations() - before;
-        assert_eq!(again, is_closure, "{what}: the same verdict twice");
-        let slot = if is_closure { &mut fc } else { &mut other };
+        assert_eq!(again, k, "{what}: the same verdict twice");
+        let slot = match k {
+            Kind::ForceClosure => &mut fc,
+            Kind::NoHull => &mut other,
+            Kind::Boundary => &mut boundary,
+        };
         slot.0 += used;
         slot.1 += 1;
     }
     let ((fc_allocations, fc), (other_allocations, other)) = (fc, other);
     eprintln!(
         "{what}: {fc_allocations} allocations for {fc} force-closure grasps ({:.1} each), \
-         {other_allocations} for {other} others",
-        fc_allocations as f64 / fc.max(1) as f64
+         {other_allocations} for {other} settled without a hull, {} for {} near the boundary \
+         (the exact engine on the raw wrenches)",
+        fc_allocations as f64 / fc.max(1) as f64,
+        boundary.0,
+        boundary.1
     );
     assert!(
         fc > 5 && other > 5,
-        "{what}: {fc} force closure, {other} not"
+        "{what}: {fc} force closure, {other} settled without a hull"
     );
     assert_eq!(
         other_allocations, 0,
@@ -102,7 +127,8 @@ fn check_second_pass<G>(
 fn q1_partial_allocates_nothing_in_steady_state_but_exact_caches() {
     let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial);
     check_second_pass("Q1, k = 32", &grasps(32, 120), 40, |g| {
-        evaluator.evaluate(g).unwrap().force_closure
+        let q = evaluator.evaluate(g).unwrap();
+        kind(q.force_closure, q.stats.facets_created)
     });
 }
 
@@ -113,7 +139,8 @@ fn q_inf_partial_allocates_nothing_in_steady_state_but_exact_caches() {
     };
     let mut evaluator = Evaluator::new(metric, Method::Partial);
     check_second_pass("Q-inf with zero wrench, k = 8", &grasps(8, 60), 150, |g| {
-        evaluator.evaluate(g).unwrap().force_closure
+        let q = evaluator.evaluate(g).unwrap();
+        kind(q.force_closure, q.stats.facets_created)
     });
 }
 
@@ -165,6 +192,7 @@ fn ows_partial_allocates_nothing_in_steady_state_but_exact_caches() {
         .collect();
     let mut evaluator = OwsEvaluator::new(OwsMethod::Partial);
     check_second_pass("OWS on a sphere", &set, 100, |g| {
-        evaluator.evaluate(g, &space).unwrap().force_closure
+        let q = evaluator.evaluate(g, &space).unwrap();
+        kind(q.force_closure, q.stats.facets_created)
     });
 }

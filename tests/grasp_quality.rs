@@ -168,8 +168,8 @@ fn rotation_about_the_reference_point_and_torque_scale() {
             .torque_scale(grasp.torque_scale() * 2.0)
             .build()
             .unwrap();
-        let mut w = Vec::new();
-        grasp.snapped_wrenches_into(&mut w);
+        // Halving is exact, so the doubled grasp's raw wrenches are exactly these.
+        let w = grasp.wrenches();
         let mapped: Vec<[f64; 6]> = w
             .iter()
             .map(|x| std::array::from_fn(|c| if c < 3 { x[c] } else { x[c] / 2.0 }))
@@ -206,7 +206,7 @@ fn partial_equals_full_on_ten_thousand_random_grasps() {
         let b = full.evaluate(&grasp).unwrap();
         agree(&a, &b, &format!("case {case} (m = {m}, k = {k})"));
         force_closure += usize::from(a.force_closure);
-        by_gjk += usize::from(a.stats.facets_created == 0 && b.stats.facets_created > 0);
+        by_gjk += usize::from(!a.force_closure && a.stats.facets_created == 0);
     }
     // Both kinds are exercised.
     assert!(

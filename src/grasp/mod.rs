@@ -56,6 +56,7 @@
 //! # Ok::<(), pqhull::grasp::GraspError>(())
 //! ```
 
+mod certify;
 mod contact;
 pub mod ellipsoid;
 mod error;

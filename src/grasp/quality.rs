@@ -53,12 +53,14 @@
 //! ```
 
 use super::Grasp;
+use super::certify::{Bracket, BracketScratch, RawSide, UnitBall, bracket, support_with_error};
 use super::snap::{SnappedCones, pyramid_labels, snapped_union};
 use crate::strategy::nearest::{min_norm_point, nearest_in_simplex};
 use crate::strategy::{ClosestToOrigin, Stats};
 use crate::{Hull, HullError};
 pub(crate) use separation::Gjk;
-use separation::{GJK_ITERATIONS, TOUCHING, Verdict, largest_norm, support_of};
+pub(crate) use separation::largest_norm;
+use separation::{GJK_ITERATIONS, TOUCHING, Verdict, support_of};
 use std::fmt;
 use std::time::Instant;
 
@@ -98,11 +100,18 @@ const MAX_DECIDING: usize = 7;
 /// The result of one evaluation.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Quality {
-    /// Whether the origin lies strictly inside the wrench hull (decided exactly).
+    /// Whether the grasp is force closure: `value ≥ FORCE_CLOSURE_EPSILON · scale`, decided on
+    /// the certified value (see [`FORCE_CLOSURE_EPSILON`]). A grasp whose value lies below the
+    /// band — on the boundary within rounding, or rank-deficient — is not.
     pub force_closure: bool,
-    /// The metric: positive distance to the nearest facet when force closure, else −(distance
-    /// from the origin to the hull), 0 on the boundary.
+    /// The metric on the caller's wrenches: the distance from the origin to the nearest facet
+    /// when the origin is inside, else −(distance from the origin to the hull), 0 on the
+    /// boundary. Within `1e−12` relative, or `1e−14 · scale` near zero, of the exact value.
     pub value: f64,
+    /// The wrench scale the force-closure band is relative to: the largest norm of the raw
+    /// wrenches (Q1), or the sum over contacts of each contact's largest (Q∞: a bound on the
+    /// norm of every Minkowski point).
+    pub scale: f64,
     deciding: [[f64; 6]; MAX_DECIDING],
     deciding_len: usize,
     /// Work done (for the full methods: the whole hull).
@@ -116,10 +125,12 @@ impl Quality {
         &self.deciding[..self.deciding_len]
     }
 
+    /// A value not yet banded: [`banded`](Self::banded) sets the scale and the verdict.
     fn new(value: f64, deciding: impl Iterator<Item = [f64; 6]>, stats: Stats) -> Self {
         let mut quality = Quality {
             force_closure: value > 0.0,
             value,
+            scale: 0.0,
             deciding: [[0.0; 6]; MAX_DECIDING],
             deciding_len: 0,
             stats,
@@ -130,6 +141,31 @@ impl Quality {
         }
         quality
     }
+
+    /// The verdict under the force-closure band for the wrench scale `scale`.
+    fn banded(mut self, scale: f64) -> Self {
+        self.scale = scale;
+        self.force_closure = is_force_closure(self.value, scale);
+        self
+    }
+}
+
+/// The width of the force-closure band, relative to the wrench scale: a grasp is force closure
+/// when its value (Q1 or Q∞) is at least `FORCE_CLOSURE_EPSILON · scale`.
+///
+/// Why a band at all: the caller's wrenches carry the rounding of their own computation
+/// (`~1e−16` of their size), so a grasp that is degenerate in exact arithmetic — two contacts,
+/// contact points on one line, any wrench set of rank < 6 — computes to a set whose hull may hold
+/// the origin by `1e−17`. No physical grasp resists disturbances that small: such a grasp is on
+/// the boundary, and reported as not force closure, with its tiny value. Why `1e−12`: four
+/// orders of magnitude above the rounding of the wrenches and of the values (`≤ 1e−15` of the
+/// scale), so rounding never pushes a degenerate grasp over it; and far below any quality a
+/// planner would keep (a grasp resisting `1e−12` of its own contact force).
+pub const FORCE_CLOSURE_EPSILON: f64 = 1e-12;
+
+/// Whether `value` is force closure under the band for `scale` (see [`FORCE_CLOSURE_EPSILON`]).
+pub fn is_force_closure(value: f64, scale: f64) -> bool {
+    value >= FORCE_CLOSURE_EPSILON * scale && value > 0.0
 }
 
 /// Why a grasp could not be evaluated.
@@ -197,6 +233,7 @@ pub struct Evaluator {
     metric: Metric,
     method: Method,
     cones: SnappedCones,
+    /// The snapped wrenches (Q1) or Minkowski points (Q∞ by a full method).
     wrenches: Vec<[f64; 6]>,
     /// The contact of every wrench, when `wrenches` holds the snapped pyramids.
     pyramids: Vec<u32>,
@@ -210,6 +247,7 @@ pub(crate) struct HullBuffers {
     hull: Option<Hull<6>>,
     nearest: ClosestToOrigin<6>,
     gjk: Gjk,
+    pub(crate) bracket: BracketScratch,
 }
 
 impl HullBuffers {
@@ -255,7 +293,8 @@ impl Evaluator {
         self.method
     }
 
-    /// Evaluates `grasp`.
+    /// Evaluates `grasp`: the exact metric on the caller's wrenches ([`Grasp::wrenches`]), found
+    /// on snapped ones and certified on the raw ones (see the [module docs](self)).
     ///
     /// # Errors
     /// [`QualityError::NonFiniteWrench`] when the torque scale overflows the wrenches;
@@ -270,35 +309,39 @@ impl Evaluator {
         let mut quality = match self.metric {
             Metric::Q1 => {
                 snapped_union(&self.cones, &mut self.wrenches);
-                let edges = self.cones.angles.len();
+                let edges = self.cones.edges();
                 pyramid_labels(grasp.contact_count(), edges, &mut self.pyramids);
-                self.explicit(started, true)?
+                let scale = largest_norm(&self.cones.raw);
+                let raw = Explicit {
+                    raw: &self.cones.raw,
+                    snapped: &self.wrenches,
+                    pyramids: Some(&self.pyramids),
+                    delta: self.cones.delta.iter().fold(0.0, |m: f64, &d| m.max(d)),
+                };
+                match self.method {
+                    Method::Partial => raw.partial(started, &mut self.buffers),
+                    Method::Full => raw.full(started, &mut self.buffers),
+                    #[cfg(feature = "qhull")]
+                    Method::Qhull => qhull_q1(&self.cones.raw, started)?,
+                }
+                .banded(scale)
             }
             Metric::QInf { with_zero_wrench } => match self.method {
                 Method::Partial => {
                     minkowski::partial(&self.cones, with_zero_wrench, &mut self.minkowski)?
                 }
-                _ => {
-                    minkowski::materialise(&self.cones, with_zero_wrench, &mut self.wrenches)?;
-                    self.explicit(started, false)?
-                }
+                _ => minkowski::full(
+                    &self.cones,
+                    with_zero_wrench,
+                    self.method,
+                    &mut self.wrenches,
+                    &mut self.buffers,
+                    started,
+                )?,
             },
         };
         quality.stats.elapsed = started.elapsed();
         Ok(quality)
-    }
-
-    /// The metric over the explicit point set in `self.wrenches`, whose friction pyramids are
-    /// labelled in `self.pyramids` when `pyramids`.
-    fn explicit(&mut self, started: Instant, pyramids: bool) -> Result<Quality, QualityError> {
-        let w = &self.wrenches;
-        let pyramids = pyramids.then_some(self.pyramids.as_slice());
-        match self.method {
-            Method::Partial => Ok(partial_q1(w, pyramids, started, &mut self.buffers)),
-            Method::Full => Ok(full_q1(w, pyramids, started, &mut self.buffers)),
-            #[cfg(feature = "qhull")]
-            Method::Qhull => qhull_q1(w, started),
-        }
     }
 }
 
@@ -361,7 +404,8 @@ pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Quality, 
         Method::Full => full_q1(wrenches, None, started, &mut HullBuffers::default()),
         #[cfg(feature = "qhull")]
         Method::Qhull => qhull_q1(wrenches, started)?,
-    };
+    }
+    .banded(largest_norm(wrenches));
     quality.stats.elapsed = started.elapsed();
     Ok(quality)
 }
@@ -453,6 +497,76 @@ pub(crate) fn certified_outside(w: &[[f64; 6]], gjk: &mut Gjk) -> Option<(f64, u
     }
 }
 
+/// A Q1 wrench set as the evaluator sees it: the caller's raw wrenches, the snapped ones the
+/// search runs on (same indexing), and `delta`, a bound on the distance between the two.
+struct Explicit<'a> {
+    raw: &'a [[f64; 6]],
+    snapped: &'a [[f64; 6]],
+    pyramids: Option<&'a [u32]>,
+    delta: f64,
+}
+
+impl Explicit<'_> {
+    /// Q1 by the partial hull: GJK on the raw wrenches (a certified separation settles most
+    /// grasps that are not force closure); then the partial hull of the snapped wrenches, its
+    /// answer certified on the raw ones; failing that (the origin within `δ` of the snapped
+    /// boundary, or a bracket too wide), the exact partial hull of the raw wrenches.
+    fn partial(&self, started: Instant, buffers: &mut HullBuffers) -> Quality {
+        if let Some((distance, inserted)) = certified_outside(self.raw, &mut buffers.gjk) {
+            let stats = no_hull_stats(1 + inserted, started);
+            return Quality::new(-distance, buffers.gjk.face().iter().copied(), stats);
+        }
+        let HullBuffers {
+            hull,
+            nearest,
+            bracket,
+            ..
+        } = buffers;
+        if let Ok((h, result)) = HullBuffers::build(hull, self.snapped, self.pyramids, nearest)
+            && result.signed_distance > 0.0
+            && let Some(quality) = self.certify(h, bracket)
+        {
+            return quality;
+        }
+        partial_q1(self.raw, None, started, buffers)
+    }
+
+    /// Q1 from the full hull of the snapped wrenches, certified on the raw ones when it holds
+    /// the origin; otherwise GJK on the raw wrenches, then the full hull of the raw wrenches.
+    fn full(&self, started: Instant, buffers: &mut HullBuffers) -> Quality {
+        let strategy = crate::FarthestPoint::new();
+        if let Ok((h, ())) =
+            HullBuffers::build(&mut buffers.hull, self.snapped, self.pyramids, strategy)
+            && h.facets()
+                .all(|(id, _)| h.side_of(id, &[0.0; 6]) == crate::predicates::Sign::Negative)
+            && let Some(quality) = self.certify(h, &mut buffers.bracket)
+        {
+            return quality;
+        }
+        if let Some((distance, inserted)) = certified_outside(self.raw, &mut buffers.gjk) {
+            let stats = no_hull_stats(1 + inserted, started);
+            return Quality::new(-distance, buffers.gjk.face().iter().copied(), stats);
+        }
+        full_q1(self.raw, None, started, buffers)
+    }
+
+    /// Q1 of the raw wrenches from `hull`, a hull of the snapped ones holding the origin strictly
+    /// inside, when the certified bracket is narrow enough (see [`super::certify`]).
+    fn certify(&self, hull: &Hull<6>, scratch: &mut BracketScratch) -> Option<Quality> {
+        let raw = self.raw;
+        let mut side = RawSide {
+            point: |v: usize| Some(raw[v]),
+            error: 0.0,
+            delta: self.delta,
+            support: |u: &[f64; 6]| support_with_error(raw, u),
+        };
+        let b: Bracket = bracket(hull, &mut side, &mut UnitBall, scratch)?;
+        let value = b.value_within(largest_norm(raw))?;
+        let deciding = hull.facet(b.facet).vertices().map(|v| raw[v]);
+        Some(Quality::new(value, deciding.into_iter(), hull.stats()))
+    }
+}
+
 /// Q1 of `w` by the partial hull; `pyramids` as in [`HullBuffers::build`].
 fn partial_q1(
     w: &[[f64; 6]],
@@ -513,11 +627,9 @@ fn full_q1(
     }
     if !beyond {
         let (distance, id) = nearest.expect("a hull has facets");
-        let value = if on_boundary {
-            0.0
-        } else {
-            distance.max(f64::MIN_POSITIVE)
-        };
+        // Strictly inside by the exact test but within rounding of the plane: 0 is then within
+        // the rounding of the true (tiny) distance, and the band says "not force closure".
+        let value = if on_boundary { 0.0 } else { distance.max(0.0) };
         let deciding = hull.facet(id).vertices().map(|v| w[v]);
         return Quality::new(value, deciding.into_iter(), stats);
     }

@@ -25,6 +25,11 @@ const BITS: i32 = 24;
 pub(crate) struct SnappedCones {
     pub(crate) generators: Vec<[[f64; 6]; 3]>,
     pub(crate) angles: Vec<(f64, f64)>,
+    /// The caller's wrenches, as [`Grasp::wrenches`] computes them (contact-major): the points
+    /// every reported value is certified on.
+    pub(crate) raw: Vec<[f64; 6]>,
+    /// Per contact: an upper bound on the distance between a raw wrench and its snapped one.
+    pub(crate) delta: Vec<f64>,
 }
 
 fn snap(x: f64, grid: f64) -> f64 {
@@ -72,6 +77,27 @@ impl SnappedCones {
             let (sin, cos) = (2.0 * PI * j as f64 / k as f64).sin_cos();
             (snap(cos, unit), snap(sin, unit))
         }));
+        grasp.wrenches_into(&mut self.raw);
+        self.delta.clear();
+        for i in 0..self.generators.len() {
+            let largest = (0..k)
+                .map(|j| {
+                    let (raw, snapped) = (self.raw[i * k + j], self.wrench(i, j));
+                    raw.iter()
+                        .zip(&snapped)
+                        .map(|(a, b)| (a - b) * (a - b))
+                        .sum::<f64>()
+                        .sqrt()
+                })
+                .fold(0.0, f64::max);
+            // The differences, squares and root round by a few ulps: 1e−15 relative covers them.
+            self.delta.push(largest * (1.0 + 1e-15));
+        }
+    }
+
+    /// The number of cone edges per contact.
+    pub(crate) fn edges(&self) -> usize {
+        self.angles.len()
     }
 
     /// Wrench j of contact i: u + cos·v + sin·s, exact in `f64`.
@@ -81,13 +107,15 @@ impl SnappedCones {
         std::array::from_fn(|c| u[c] + cos * v[c] + sin * s[c])
     }
 
-    /// Whether every generator is finite (a tiny torque scale can overflow).
+    /// Whether every generator and raw wrench is finite (a tiny torque scale can overflow).
     pub(crate) fn is_finite(&self) -> bool {
         self.generators
             .iter()
             .flatten()
             .flatten()
+            .chain(self.raw.iter().flatten())
             .all(|x| x.is_finite())
+            && self.delta.iter().all(|d| d.is_finite())
     }
 }
 

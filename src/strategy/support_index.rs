@@ -163,6 +163,13 @@ impl<const D: usize> SupportIndex<D> {
         ball.min(corner) + slack
     }
 
+    /// An upper bound on the norm of every point (the root ball's reach); 0 for an empty set.
+    pub fn norm_bound(&self) -> f64 {
+        self.nodes
+            .first()
+            .map_or(0.0, |root| (root.centre_norm + root.radius) * (1.0 + 1e-15))
+    }
+
     /// A cheap upper bound on [`support`](Self::support)`(v)`'s value: the largest ball-and-box
     /// bound over the tree's nodes `depth` levels down (at most 2^depth nodes; depth ≤ 8), each
     /// node's bound capped by its ancestors' (so the bound never grows with depth).

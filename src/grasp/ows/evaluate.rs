@@ -2,8 +2,10 @@
 
 use super::ObjectWrenchSpace;
 use crate::grasp::Grasp;
+use crate::grasp::certify::{BracketScratch, Disturbances, RawSide, bracket, support_with_error};
 use crate::grasp::quality::{
-    Gjk, HullBuffers, Method, QualityError, certified_outside, find_or_make, q1_of_wrenches,
+    FORCE_CLOSURE_EPSILON, Gjk, HullBuffers, Method, QualityError, certified_outside, find_or_make,
+    largest_norm, q1_of_wrenches,
 };
 use crate::grasp::snap::{SnappedCones, pyramid_labels, snapped_union};
 use crate::hull::{Hull, HullError};
@@ -95,6 +97,8 @@ struct OwsBuffers {
     gjk: Gjk,
     /// The partial method's strategy, parked between grasps (its queue and scratch).
     inflation: OwsInflation<'static, 6>,
+    /// The certificate's scratch.
+    bracket: BracketScratch,
 }
 
 impl OwsEvaluator {
@@ -138,17 +142,18 @@ impl OwsEvaluator {
         let started = Instant::now();
         // As `Grasp::snapped_wrenches_into`, in this evaluator's buffers.
         self.cones.fill(grasp);
+        if !self.cones.is_finite() {
+            return Err(QualityError::NonFiniteWrench);
+        }
         snapped_union(&self.cones, &mut self.wrenches);
         let edges = grasp.friction().cone_edges();
         pyramid_labels(grasp.contact_count(), edges, &mut self.pyramids);
-        let pyramids = Some(self.pyramids.as_slice());
-        let mut quality = ows_with(
-            &self.wrenches,
-            pyramids,
-            space,
-            self.method,
-            &mut self.buffers,
-        )?;
+        let delta = self.cones.delta.iter().fold(0.0, |m: f64, &d| m.max(d));
+        let set = GraspSet {
+            raw: &self.cones.raw,
+            snapped: Some((&self.wrenches, &self.pyramids, delta)),
+        };
+        let mut quality = ows_with(&set, space, self.method, &mut self.buffers)?;
         quality.stats.elapsed = started.elapsed();
         Ok(quality)
     }
@@ -164,7 +169,11 @@ pub fn ows_of_wrenches(
     method: OwsMethod,
 ) -> Result<OwsQuality, QualityError> {
     let started = Instant::now();
-    let mut quality = ows_with(wrenches, None, space, method, &mut OwsBuffers::default())?;
+    let set = GraspSet {
+        raw: wrenches,
+        snapped: None,
+    };
+    let mut quality = ows_with(&set, space, method, &mut OwsBuffers::default())?;
     quality.stats.elapsed = started.elapsed();
     Ok(quality)
 }
@@ -178,41 +187,113 @@ fn not_force_closure(stats: Stats) -> OwsQuality {
     }
 }
 
-/// `pyramids` as in [`HullBuffers::build`].
+/// The grasp's wrenches: the caller's raw ones, and, from a grasp, the snapped ones the search
+/// runs on (same indexing) with their pyramids and `δ`, the bound on their distance to the raw.
+struct GraspSet<'a> {
+    raw: &'a [[f64; 6]],
+    snapped: Option<(&'a [[f64; 6]], &'a [u32], f64)>,
+}
+
 fn ows_with(
-    wrenches: &[[f64; 6]],
-    pyramids: Option<&[u32]>,
+    set: &GraspSet<'_>,
     space: &ObjectWrenchSpace,
     method: OwsMethod,
     buffers: &mut OwsBuffers,
 ) -> Result<OwsQuality, QualityError> {
-    if wrenches.iter().flatten().any(|x| !x.is_finite()) {
+    let raw = set.raw;
+    if raw.iter().flatten().any(|x| !x.is_finite()) {
         return Err(QualityError::NonFiniteWrench);
     }
-    match method {
-        // A grasp GJK certifies not force closure has no OWS value: no hull needed. (Not for
-        // `PartialRays`, kept as published for comparison.)
-        OwsMethod::Partial
-            if !wrenches.is_empty() && certified_outside(wrenches, &mut buffers.gjk).is_some() =>
+    if raw.is_empty() {
+        return Ok(not_force_closure(Stats::default()));
+    }
+    // A grasp GJK certifies not force closure has no OWS value: no hull needed. (Not for
+    // `PartialRays`, kept as published for comparison.)
+    if method == OwsMethod::Partial && certified_outside(raw, &mut buffers.gjk).is_some() {
+        return Ok(not_force_closure(Stats::default()));
+    }
+    if method == OwsMethod::Ellipsoid {
+        return ellipsoid(raw, space);
+    }
+    let scale = largest_norm(raw);
+    if let Some((snapped, pyramids, delta)) = set.snapped {
+        // The search on the snapped wrenches, its answer certified on the raw ones.
+        let found = search(snapped, Some(pyramids), space, method, buffers);
+        if let Some((quality, _)) = found
+            && let Some(hull) = buffers.hull.as_ref()
+            && let Some(value) = certify_ows(hull, raw, delta, scale, space, &mut buffers.bracket)
         {
-            Ok(not_force_closure(Stats::default()))
+            return Ok(OwsQuality {
+                value: Some(value),
+                ..quality
+            });
         }
+    }
+    // The exact engine on the raw wrenches: force closure under the band from Q1, then the
+    // search on exactly these numbers.
+    let q1 = q1_of_wrenches(raw, Method::Partial)?;
+    if !q1.force_closure {
+        return Ok(not_force_closure(q1.stats));
+    }
+    match search(raw, None, space, method, buffers) {
+        Some((quality, _)) => Ok(quality),
+        // The exact engine says the origin is not strictly inside, which Q1 contradicts only
+        // within rounding of the band: no value to give.
+        None => Ok(not_force_closure(q1.stats)),
+    }
+}
+
+/// Q_OWS of the wrench set `w` by `method` (partial or brute force), with the hull left in
+/// `buffers.hull`: the quality and the deciding facet when the origin is strictly inside.
+fn search(
+    w: &[[f64; 6]],
+    pyramids: Option<&[u32]>,
+    space: &ObjectWrenchSpace,
+    method: OwsMethod,
+    buffers: &mut OwsBuffers,
+) -> Option<(OwsQuality, Option<crate::FacetId>)> {
+    let result = match method {
         OwsMethod::Partial => {
             let parked = std::mem::take(&mut buffers.inflation);
             let mut strategy = parked.rebind_index(space.support_index());
-            let quality = partial(wrenches, pyramids, &mut strategy, &mut buffers.hull);
+            let result = partial(w, pyramids, &mut strategy, &mut buffers.hull);
             buffers.inflation = strategy.park();
-            Ok(quality)
+            result
         }
-        OwsMethod::PartialRays => Ok(partial(
-            wrenches,
+        OwsMethod::PartialRays => partial(
+            w,
             pyramids,
             OwsInflation::new(space.disturbances()),
             &mut buffers.hull,
-        )),
-        OwsMethod::BruteForce => Ok(brute_force(wrenches, pyramids, space, &mut buffers.hull)),
-        OwsMethod::Ellipsoid => ellipsoid(wrenches, space),
-    }
+        ),
+        OwsMethod::BruteForce => brute_force(w, pyramids, space, &mut buffers.hull),
+        OwsMethod::Ellipsoid => unreachable!("the ellipsoid method builds no exact hull"),
+    };
+    result.filter(|(q, _)| q.force_closure)
+}
+
+/// Q_OWS of the raw wrenches from `hull`, the snapped wrenches' hull holding the origin strictly
+/// inside, when the certified bracket is narrow enough and the surface keeps the raw Q1 above
+/// the force-closure band (see [`crate::grasp::certify`]).
+fn certify_ows(
+    hull: &Hull<6>,
+    raw: &[[f64; 6]],
+    delta: f64,
+    scale: f64,
+    space: &ObjectWrenchSpace,
+    scratch: &mut BracketScratch,
+) -> Option<f64> {
+    let mut side = RawSide {
+        point: |v: usize| Some(raw[v]),
+        error: 0.0,
+        delta: delta + FORCE_CLOSURE_EPSILON * scale,
+        support: |u: &[f64; 6]| support_with_error(raw, u),
+    };
+    let mut gauge = Disturbances {
+        index: space.support_index(),
+    };
+    let b = bracket(hull, &mut side, &mut gauge, scratch)?;
+    b.value_within(b.high.abs())
 }
 
 fn partial<S: crate::Strategy<6, Output = crate::strategy::OwsResult<6>>>(
@@ -220,18 +301,19 @@ fn partial<S: crate::Strategy<6, Output = crate::strategy::OwsResult<6>>>(
     pyramids: Option<&[u32]>,
     strategy: S,
     hull: &mut Option<Hull<6>>,
-) -> OwsQuality {
+) -> Option<(OwsQuality, Option<crate::FacetId>)> {
     match HullBuffers::build(hull, wrenches, pyramids, strategy) {
-        Ok((_, result)) => OwsQuality {
-            force_closure: result.is_force_closure(),
-            value: result.value,
-            deciding_disturbance: result.deciding_disturbance,
-            stats: result.stats,
-        },
+        Ok((_, result)) => Some((
+            OwsQuality {
+                force_closure: result.is_force_closure(),
+                value: result.value,
+                deciding_disturbance: result.deciding_disturbance,
+                stats: result.stats,
+            },
+            result.deciding_facet,
+        )),
         // Wrenches spanning fewer than six dimensions cannot hold the origin in their interior.
-        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
-            not_force_closure(Stats::default())
-        }
+        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => None,
         Err(e) => unreachable!("finite wrenches of a grasp: {e}"),
     }
 }
@@ -241,12 +323,10 @@ fn brute_force(
     pyramids: Option<&[u32]>,
     space: &ObjectWrenchSpace,
     hull: &mut Option<Hull<6>>,
-) -> OwsQuality {
+) -> Option<(OwsQuality, Option<crate::FacetId>)> {
     let hull = match HullBuffers::build(hull, wrenches, pyramids, crate::FarthestPoint::new()) {
         Ok((hull, ())) => hull,
-        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
-            return not_force_closure(Stats::default());
-        }
+        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => return None,
         Err(e) => unreachable!("finite wrenches of a grasp: {e}"),
     };
     let stats = hull.stats();
@@ -255,39 +335,73 @@ fn brute_force(
         .facets()
         .any(|(id, _)| hull.side_of(id, &origin) != Sign::Negative)
     {
-        return not_force_closure(stats);
+        return Some((not_force_closure(stats), None));
     }
     // eq. 8–9: each disturbance's ray leaves through the facet with the smallest factor.
-    let mut best: Option<(f64, usize)> = None;
+    let mut best: Option<(f64, usize, crate::FacetId)> = None;
     for (i, d) in space.disturbances().iter().enumerate() {
         let u = d.map(|c| -c);
-        for (_, facet) in hull.facets() {
+        for (id, facet) in hull.facets() {
             if let Some(r) = inflation_factor(&facet.normal(), facet.offset(), &u)
-                && best.is_none_or(|(b, _)| r < b)
+                && best.is_none_or(|(b, _, _)| r < b)
             {
-                best = Some((r, i));
+                best = Some((r, i, id));
             }
         }
     }
-    OwsQuality {
-        force_closure: true,
-        value: Some(best.map_or(f64::INFINITY, |(r, _)| r)),
-        deciding_disturbance: best.map(|(_, i)| i),
-        stats,
-    }
+    Some((
+        OwsQuality {
+            force_closure: true,
+            value: Some(best.map_or(f64::INFINITY, |(r, _, _)| r)),
+            deciding_disturbance: best.map(|(_, i, _)| i),
+            stats,
+        },
+        best.map(|(_, _, id)| id),
+    ))
 }
 
+/// Borst et al.'s approximation: Q1 of the wrenches mapped so that the disturbances' ellipsoid
+/// is the unit ball.
+///
+/// The force-closure verdict is the grasp's own, decided on its unmapped wrenches. The map is
+/// linear and invertible, so in exact arithmetic it cannot move the origin into or out of the
+/// hull's interior; in floating point it can: a rank-5 set (two antipodal hard fingers) maps to a
+/// sliver of full rank that holds the origin within rounding, which Q1 reports as force closure
+/// with the value `f64::MIN_POSITIVE`. So the mapped set only gives the number, and only for a
+/// force-closure grasp; a mapped Q1 that is then no positive number is an error, never a value.
 fn ellipsoid(wrenches: &[[f64; 6]], space: &ObjectWrenchSpace) -> Result<OwsQuality, QualityError> {
     let ellipsoid = space
         .ellipsoid()
         .map_err(|e| QualityError::Ellipsoid(e.to_string()))?;
+    let own = q1_of_wrenches(wrenches, Method::Partial)?;
+    if !own.force_closure {
+        return Ok(not_force_closure(own.stats));
+    }
     let mapped: Vec<[f64; 6]> = wrenches.iter().map(|w| ellipsoid.map(w)).collect();
     let q1 = q1_of_wrenches(&mapped, Method::Partial)?;
+    // `MIN_POSITIVE` is Q1's stand-in for "strictly inside, within rounding of a facet": not a
+    // measurement.
+    if !(q1.force_closure && q1.value > f64::MIN_POSITIVE && q1.value.is_finite()) {
+        // Displayed after "no enclosing ellipsoid": the sentence continues it.
+        return Err(QualityError::Ellipsoid(format!(
+            "usable for this grasp: it is force closure, but Q1 of its wrenches mapped by the \
+             ellipsoid is {} (the origin within rounding of the mapped hull's boundary), so there \
+             is no approximate value",
+            q1.value
+        )));
+    }
+    // The work of both hulls: the verdict's and the value's.
+    let stats = crate::strategy::Stats {
+        points_processed: own.stats.points_processed + q1.stats.points_processed,
+        facets_created: own.stats.facets_created + q1.stats.facets_created,
+        expansions: own.stats.expansions + q1.stats.expansions,
+        elapsed: own.stats.elapsed + q1.stats.elapsed,
+    };
     Ok(OwsQuality {
-        force_closure: q1.force_closure,
-        value: q1.force_closure.then_some(q1.value),
+        force_closure: true,
+        value: Some(q1.value),
         deciding_disturbance: None,
-        stats: q1.stats,
+        stats,
     })
 }
 

@@ -1,7 +1,8 @@
 //! Q∞ over the Minkowski sum ⊕_i W_i, implicitly (support function) or materialised.
 
 use super::separation::{GJK_ITERATIONS, Gjk, TOUCHING, Verdict};
-use super::{Quality, QualityError, degenerate, no_hull_stats};
+use super::{HullBuffers, Quality, QualityError, degenerate, full_q1, no_hull_stats};
+use crate::grasp::certify::{self, RawSide, UnitBall, support_with_error};
 use crate::grasp::snap::SnappedCones;
 use crate::hull::dot;
 use crate::predicates::Sign;
@@ -13,17 +14,69 @@ use std::time::Instant;
 pub const MINKOWSKI_MATERIALISE_LIMIT: usize = 1 << 20;
 
 /// Refills `sets` with the per-contact wrench sets (with the zero wrench if asked), reusing
-/// their buffers.
-fn fill_sets(sets: &mut Vec<Vec<[f64; 6]>>, cones: &SnappedCones, with_zero_wrench: bool) {
+/// their buffers: the snapped wrenches, or the caller's raw ones when `raw`.
+fn fill_sets(
+    sets: &mut Vec<Vec<[f64; 6]>>,
+    cones: &SnappedCones,
+    with_zero_wrench: bool,
+    raw: bool,
+) {
     let contacts = cones.generators.len();
+    let k = cones.edges();
     sets.resize_with(contacts, Vec::new);
     for (i, set) in sets.iter_mut().enumerate() {
         set.clear();
-        set.extend((0..cones.angles.len()).map(|j| cones.wrench(i, j)));
+        if raw {
+            set.extend_from_slice(&cones.raw[i * k..(i + 1) * k]);
+        } else {
+            set.extend((0..k).map(|j| cones.wrench(i, j)));
+        }
         if with_zero_wrench {
             set.push([0.0; 6]);
         }
     }
+}
+
+/// The raw side of a Minkowski sum for [`certify::bracket`]: `δ` (the distance between a
+/// snapped Minkowski point, exact, and the exact sum of the same raw wrenches), the rounding of a
+/// raw sum computed in `f64`, and the sum's support function with its rounding bound.
+fn raw_bounds(cones: &SnappedCones, raw_sets: &[Vec<[f64; 6]>]) -> (f64, f64) {
+    let delta: f64 = cones.delta.iter().sum::<f64>() * (1.0 + 1e-15);
+    let sizes: f64 = raw_sets
+        .iter()
+        .map(|set| set.iter().map(|w| dot(w, w).sqrt()).fold(0.0, f64::max))
+        .sum();
+    // A left-to-right sum of m vectors: each coordinate is off by at most γ_(m−1)·Σ|w_ic|, so
+    // the error vector by at most γ_m·Σ|w_i| (γ_m ≤ 1.2e−16·m for small m).
+    let error = 1.2e-16 * raw_sets.len() as f64 * sizes * (1.0 + 1e-15);
+    (delta, error)
+}
+
+/// The support function of the sum of `sets`: Σ_i max_j u·w_ij, with a rounding bound.
+fn sum_support_with_error(sets: &[Vec<[f64; 6]>], u: &[f64; 6]) -> (f64, f64) {
+    let (mut total, mut error, mut magnitude) = (0.0, 0.0, 0.0);
+    for set in sets {
+        let (h, e) = support_with_error(set, u);
+        total += h;
+        error += e;
+        magnitude += h.abs();
+    }
+    (
+        total,
+        error + 1.2e-16 * sets.len() as f64 * magnitude + 1e-300,
+    )
+}
+
+/// The support point of the sum of `sets` (each contact's own support point, summed).
+fn sum_support(sets: &[Vec<[f64; 6]>], direction: &[f64; 6]) -> [f64; 6] {
+    let mut total = [0.0; 6];
+    for set in sets {
+        let w = super::separation::support_of(set, direction);
+        for (t, x) in total.iter_mut().zip(&w) {
+            *t += x;
+        }
+    }
+    total
 }
 
 /// Σ_i sets[i][choice[i]], left to right (exact for snapped wrenches and up to 10 contacts).
@@ -41,10 +94,11 @@ fn sum(sets: &[Vec<[f64; 6]>], choice: impl Iterator<Item = usize>) -> [f64; 6] 
 pub(super) fn materialise(
     cones: &SnappedCones,
     with_zero_wrench: bool,
+    raw: bool,
     out: &mut Vec<[f64; 6]>,
 ) -> Result<(), QualityError> {
     let mut sets = Vec::new();
-    fill_sets(&mut sets, cones, with_zero_wrench);
+    fill_sets(&mut sets, cones, with_zero_wrench, raw);
     let per = sets.first().map_or(0, Vec::len);
     let count = u32::try_from(sets.len())
         .ok()
@@ -85,12 +139,21 @@ pub(super) struct MinkowskiSource {
     position: Vec<usize>,
     /// Whether the last contact-set entry is the zero wrench.
     with_zero_wrench: bool,
+    /// The caller's raw wrench sets (with the zero wrench if asked), whatever `sets` holds.
+    raw_sets: Vec<Vec<[f64; 6]>>,
+    /// Every point handed out (seeds and insertions), and its tuple (`contacts` entries each in
+    /// `tuples`): how a hull vertex finds its raw point for the certificate.
+    log: Vec<[f64; 6]>,
+    tuples: Vec<usize>,
 }
 
 impl MinkowskiSource {
-    /// The sum for `cones`' grasp.
-    fn fill(&mut self, cones: &SnappedCones, with_zero_wrench: bool) {
-        fill_sets(&mut self.sets, cones, with_zero_wrench);
+    /// The sum for `cones`' grasp, over the snapped wrenches or, when `raw`, the raw ones.
+    fn fill(&mut self, cones: &SnappedCones, with_zero_wrench: bool, raw: bool) {
+        fill_sets(&mut self.sets, cones, with_zero_wrench, raw);
+        fill_sets(&mut self.raw_sets, cones, with_zero_wrench, true);
+        self.log.clear();
+        self.tuples.clear();
         self.with_zero_wrench = with_zero_wrench;
         self.sizes.clear();
         self.sizes.extend(
@@ -101,23 +164,43 @@ impl MinkowskiSource {
         self.candidates.resize_with(self.sets.len(), Vec::new);
     }
 
-    /// A bound on the norm of every point of the sum.
-    fn scale(&self) -> f64 {
-        self.sizes.iter().sum()
+    /// Records `point`, the sum of the choices in `choice`, for [`raw_point`](Self::raw_point).
+    fn record(&mut self, point: [f64; 6], choice: impl Iterator<Item = usize>) {
+        self.log.push(point);
+        self.tuples.extend(choice);
     }
 
-    /// The support point of the union of the contacts' cone edges (no zero wrench): the hull
-    /// whose force closure Q∞ with the zero wrench shares.
-    fn union_support(&self, direction: &[f64; 6]) -> [f64; 6] {
+    /// The raw sum (in `f64`) of the tuple behind `point`, a point this source handed out.
+    fn raw_point(&self, point: &[f64; 6]) -> Option<[f64; 6]> {
+        let m = self.raw_sets.len();
+        let i = self.log.iter().position(|p| p == point)?;
+        Some(sum(
+            &self.raw_sets,
+            self.tuples[i * m..(i + 1) * m].iter().copied(),
+        ))
+    }
+
+    /// The support point of the union of the contacts' raw cone edges (no zero wrench): the
+    /// hull whose force closure Q∞ with the zero wrench shares.
+    fn raw_union_support(&self, direction: &[f64; 6]) -> [f64; 6] {
         let zero = usize::from(self.with_zero_wrench);
         let mut best = (f64::NEG_INFINITY, [0.0; 6]);
-        for w in self.sets.iter().flat_map(|set| &set[..set.len() - zero]) {
+        for w in self
+            .raw_sets
+            .iter()
+            .flat_map(|set| &set[..set.len() - zero])
+        {
             let height = dot(direction, w);
             if height > best.0 {
                 best = (height, *w);
             }
         }
         best.1
+    }
+
+    /// The sum of each contact's largest raw wrench norm: the scale of the force-closure band.
+    fn raw_scale(&self) -> f64 {
+        raw_scale(&self.raw_sets)
     }
 
     /// Each contact's support edge for `direction`, into `self.choice`.
@@ -172,6 +255,9 @@ impl PointSource<6> for MinkowskiSource {
         self.choice.extend(self.candidates.iter().map(|c| c[0].1));
         let top = sum(&self.sets, self.choice.iter().copied());
         if hull.side_of(id, &top) == Sign::Positive {
+            let choice = std::mem::take(&mut self.choice);
+            self.record(top, choice.iter().copied());
+            self.choice = choice;
             return Some(top);
         }
         // Near a true facet of the sum: enumerate the (few) tied tuples exactly.
@@ -199,13 +285,23 @@ impl PointSource<6> for MinkowskiSource {
                 break Some(point);
             }
         };
+        if let Some(point) = found {
+            self.log.push(point);
+            for (&p, c) in position.iter().zip(&self.candidates) {
+                self.tuples.push(c[p].1);
+            }
+        }
         self.position = position;
         found
     }
 
     fn support(&mut self, direction: &[f64; 6]) -> Option<[f64; 6]> {
         self.support_choice(direction);
-        Some(sum(&self.sets, self.choice.iter().copied()))
+        let point = sum(&self.sets, self.choice.iter().copied());
+        let choice = std::mem::take(&mut self.choice);
+        self.record(point, choice.iter().copied());
+        self.choice = choice;
+        Some(point)
     }
 }
 
@@ -241,6 +337,7 @@ pub(super) struct MinkowskiBuffers {
     seeds: Vec<[f64; 6]>,
     gjk: Gjk,
     hull: Option<Hull<6>>,
+    bracket: certify::BracketScratch,
 }
 
 impl Default for MinkowskiBuffers {
@@ -250,6 +347,50 @@ impl Default for MinkowskiBuffers {
             seeds: Vec::new(),
             gjk: Gjk::default(),
             hull: None,
+            bracket: certify::BracketScratch::default(),
+        }
+    }
+}
+
+/// The sum over contacts of the largest wrench norm of `sets`.
+fn raw_scale(sets: &[Vec<[f64; 6]>]) -> f64 {
+    sets.iter()
+        .map(|set| set.iter().map(|w| dot(w, w).sqrt()).fold(0.0, f64::max))
+        .sum()
+}
+
+/// Q∞ of the raw sum from `hull`, a hull of snapped Minkowski points holding the origin strictly
+/// inside, when the certified bracket is narrow enough; `raw_point` names the raw sum behind a
+/// hull input.
+fn certify_sum(
+    hull: &Hull<6>,
+    cones: &SnappedCones,
+    raw_sets: &[Vec<[f64; 6]>],
+    mut raw_point: impl FnMut(usize) -> Option<[f64; 6]>,
+    scratch: &mut certify::BracketScratch,
+) -> Option<Quality> {
+    let (delta, error) = raw_bounds(cones, raw_sets);
+    let mut side = RawSide {
+        point: &mut raw_point,
+        error,
+        delta,
+        support: |u: &[f64; 6]| sum_support_with_error(raw_sets, u),
+    };
+    let b = certify::bracket(hull, &mut side, &mut UnitBall, scratch)?;
+    let scale = raw_scale(raw_sets);
+    let value = b.value_within(scale)?;
+    let vertices = hull.facet(b.facet).vertices();
+    let deciding = vertices.iter().filter_map(|&v| raw_point(v));
+    Some(Quality::new(value, deciding, hull.stats()).banded(scale))
+}
+
+/// 42 support points of the sum of `sets` along [`SEED_DIRECTIONS`], without repeats.
+fn seed_points(seeds: &mut Vec<[f64; 6]>, mut support: impl FnMut(&[f64; 6]) -> [f64; 6]) {
+    seeds.clear();
+    for d in &SEED_DIRECTIONS {
+        let p = support(d);
+        if !seeds.contains(&p) {
+            seeds.push(p);
         }
     }
 }
@@ -257,12 +398,15 @@ impl Default for MinkowskiBuffers {
 /// Q∞ of the grasp behind `cones` by the partial hull over the implicit Minkowski sum.
 ///
 /// In order, each step only when the previous one cannot decide:
-/// 1. with the zero wrench, GJK on the *union* of the cone edges: a certified separation means
-///    the grasp is not force closure, and then Q∞ = 0 exactly (the origin, a point of the sum,
-///    is on its boundary: the two hulls have the same force closure);
-/// 2. GJK on the sum's support function: a certified separation gives −distance;
-/// 3. the exact partial hull, seeded with the sum's support points along 42 fixed directions;
-/// 4. a sum spanning fewer than six dimensions (no hull) is not force closure: its distance by
+/// 1. with the zero wrench, GJK on the *union* of the raw cone edges: a certified separation
+///    means the grasp is not force closure, and then Q∞ = 0 exactly (the origin, a point of the
+///    sum, is on its boundary: the two hulls have the same force closure);
+/// 2. GJK on the raw sum's support function: a certified separation gives −distance;
+/// 3. the exact partial hull of the *snapped* sum, seeded with its support points along 42 fixed
+///    directions, its answer certified on the raw sum ([`certify`]);
+/// 4. the exact partial hull of the raw sum (points summed in `f64`, within `1e−15` of the scale
+///    of the exact sums), when the certificate cannot decide;
+/// 5. a sum spanning fewer than six dimensions (no hull) is not force closure: its distance by
 ///    GJK, or by Wolfe's algorithm over the materialised sum should GJK not converge.
 pub(super) fn partial(
     cones: &SnappedCones,
@@ -275,75 +419,176 @@ pub(super) fn partial(
         seeds,
         gjk,
         hull,
+        bracket,
     } = buffers;
     let source = nearest.source_mut();
-    source.fill(cones, with_zero_wrench);
+    source.fill(cones, with_zero_wrench, false);
+    let scale = source.raw_scale();
     if with_zero_wrench {
-        let scale = source.sizes.iter().fold(0.0, |m: f64, &s| m.max(s));
-        let start = [source.union_support(&[1.0, 0.0, 0.0, 0.0, 0.0, 0.0])];
+        let largest = source.sizes.iter().fold(0.0, |m: f64, &s| m.max(s));
+        let start = [source.raw_union_support(&[1.0, 0.0, 0.0, 0.0, 0.0, 0.0])];
         let verdict = gjk.run(
-            |v| source.union_support(v),
-            scale,
+            |v| source.raw_union_support(v),
+            largest,
             &start,
             GJK_ITERATIONS,
             TOUCHING,
         );
         if let Verdict::Separated { inserted, .. } = verdict {
             let origin = std::iter::once([0.0; 6]);
-            return Ok(Quality::new(
-                0.0,
-                origin,
-                no_hull_stats(1 + inserted, started),
-            ));
+            let stats = no_hull_stats(1 + inserted, started);
+            return Ok(Quality::new(0.0, origin, stats).banded(scale));
         }
     }
-    seeds.clear();
-    for d in &SEED_DIRECTIONS {
-        let p = source.support(d).expect("a contact has cone edges");
-        if !seeds.contains(&p) {
-            seeds.push(p);
-        }
-    }
-    let scale = source.scale();
-    let support = |v: &[f64; 6]| source.support(v).expect("a contact has cone edges");
+    seed_points(seeds, |d| sum_support(&source.raw_sets, d));
+    let support = |v: &[f64; 6]| sum_support(&source.raw_sets, v);
     if let Verdict::Separated { distance, inserted } =
         gjk.run(support, scale, seeds, GJK_ITERATIONS, TOUCHING)
     {
         let stats = no_hull_stats(seeds.len() + inserted, started);
-        return Ok(Quality::new(-distance, gjk.face().iter().copied(), stats));
+        let face = gjk.face().iter().copied();
+        return Ok(Quality::new(-distance, face, stats).banded(scale));
     }
+    seed_points(seeds, |d| {
+        source.support(d).expect("a contact has cone edges")
+    });
     let h = hull.get_or_insert_with(Hull::empty);
+    let snapped = h.rebuild_with_strategy(seeds, &mut *nearest);
+    let flat = matches!(
+        snapped,
+        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. })
+    );
+    if let Ok(result) = snapped
+        && result.signed_distance > 0.0
+    {
+        let source = nearest.source_mut();
+        let raw_point = |v: usize| source.raw_point(&h.point(v));
+        if let Some(quality) = certify_sum(h, cones, &source.raw_sets, raw_point, bracket) {
+            return Ok(quality);
+        }
+    }
+    // The exact engine on the raw sum.
+    let source = nearest.source_mut();
+    source.fill(cones, with_zero_wrench, true);
+    if flat {
+        // The snapped sum spans fewer than six dimensions, so the raw one lies within δ of a
+        // hyperplane: whatever its rounding, Q∞ is −(its distance to the origin) to within the
+        // rounding of the wrenches (a hull of the raw sum would be all slivers).
+        seed_points(seeds, |d| sum_support(&source.raw_sets, d));
+        let support = |v: &[f64; 6]| sum_support(&source.raw_sets, v);
+        let q = flat_sum(cones, with_zero_wrench, support, scale, seeds, gjk, started)?;
+        return Ok(q.banded(scale));
+    }
+    seed_points(seeds, |d| {
+        source.support(d).expect("a contact has cone edges")
+    });
     match h.rebuild_with_strategy(seeds, &mut *nearest) {
         Ok(result) => Ok(Quality::new(
             result.signed_distance,
             result.closest_facet_vertices.iter().map(|&v| h.point(v)),
             result.stats,
-        )),
-        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => flat_sum(
-            cones,
-            with_zero_wrench,
-            nearest.source_mut(),
-            seeds,
-            gjk,
-            started,
-        ),
-        Err(e) => unreachable!("snapped wrenches are finite: {e}"),
+        )
+        .banded(scale)),
+        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
+            let source = nearest.source_mut();
+            let support = |v: &[f64; 6]| sum_support(&source.raw_sets, v);
+            let q = flat_sum(cones, with_zero_wrench, support, scale, seeds, gjk, started)?;
+            Ok(q.banded(scale))
+        }
+        Err(e) => unreachable!("raw wrenches are checked finite: {e}"),
     }
 }
 
+/// Q∞ by a full method: the full hull of the materialised snapped sum, certified on the raw sum
+/// when it holds the origin; otherwise GJK on the raw sum, then the full hull of the materialised
+/// raw sum. `out` is the buffer for the materialised points.
+pub(super) fn full(
+    cones: &SnappedCones,
+    with_zero_wrench: bool,
+    method: super::Method,
+    out: &mut Vec<[f64; 6]>,
+    buffers: &mut HullBuffers,
+    started: Instant,
+) -> Result<Quality, QualityError> {
+    let mut raw_sets = Vec::new();
+    fill_sets(&mut raw_sets, cones, with_zero_wrench, true);
+    let scale = raw_scale(&raw_sets);
+    #[cfg(feature = "qhull")]
+    if method == super::Method::Qhull {
+        materialise(cones, with_zero_wrench, true, out)?;
+        return Ok(super::qhull_q1(out, started)?.banded(scale));
+    }
+    let _ = method;
+    materialise(cones, with_zero_wrench, false, out)?;
+    let per = raw_sets.first().map_or(0, Vec::len);
+    let m = raw_sets.len();
+    // Point i of the odometer order: contact c's choice is digit c (most significant first).
+    let tuple_sum = |i: usize| {
+        let mut rest = i;
+        let mut digits = [0usize; 64];
+        for c in (0..m.min(64)).rev() {
+            digits[c] = rest % per;
+            rest /= per;
+        }
+        Some(sum(&raw_sets, digits[..m.min(64)].iter().copied()))
+    };
+    let strategy = crate::FarthestPoint::new();
+    let snapped = HullBuffers::build(&mut buffers.hull, out, None, strategy);
+    let flat = matches!(
+        snapped,
+        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. })
+    );
+    if let Ok((h, ())) = snapped
+        && h.facets()
+            .all(|(id, _)| h.side_of(id, &[0.0; 6]) == Sign::Negative)
+        && let Some(quality) = certify_sum(h, cones, &raw_sets, tuple_sum, &mut buffers.bracket)
+    {
+        return Ok(quality);
+    }
+    let mut seeds = Vec::new();
+    seed_points(&mut seeds, |d| sum_support(&raw_sets, d));
+    if flat {
+        // As the partial method: a raw sum within δ of a hyperplane is never force closure.
+        let support = |v: &[f64; 6]| sum_support(&raw_sets, v);
+        let gjk = &mut buffers.gjk;
+        let q = flat_sum(
+            cones,
+            with_zero_wrench,
+            support,
+            scale,
+            &seeds,
+            gjk,
+            started,
+        )?;
+        return Ok(q.banded(scale));
+    }
+    let support = |v: &[f64; 6]| sum_support(&raw_sets, v);
+    if let Verdict::Separated { distance, inserted } =
+        buffers
+            .gjk
+            .run(support, scale, &seeds, GJK_ITERATIONS, TOUCHING)
+    {
+        let stats = no_hull_stats(seeds.len() + inserted, started);
+        let face = buffers.gjk.face().iter().copied();
+        return Ok(Quality::new(-distance, face, stats).banded(scale));
+    }
+    materialise(cones, with_zero_wrench, true, out)?;
+    Ok(full_q1(out, None, started, buffers).banded(scale))
+}
+
 /// −(distance from the origin) of a sum spanning fewer than six dimensions, never force closure:
-/// GJK run to convergence (the origin may lie in the sum, so it must not stop at "touching");
-/// should it not converge, Wolfe's algorithm over the materialised sum, when that fits.
+/// GJK run to convergence on the support function `support` of a sum whose points have norms
+/// below `scale` (the origin may lie in the sum, so it must not stop at "touching"); should it
+/// not converge, Wolfe's algorithm over the materialised raw sum, when that fits.
 fn flat_sum(
     cones: &SnappedCones,
     with_zero_wrench: bool,
-    source: &mut MinkowskiSource,
+    support: impl FnMut(&[f64; 6]) -> [f64; 6],
+    scale: f64,
     seeds: &[[f64; 6]],
     gjk: &mut Gjk,
     started: Instant,
 ) -> Result<Quality, QualityError> {
-    let scale = source.scale();
-    let support = |v: &[f64; 6]| source.support(v).expect("a contact has cone edges");
     match gjk.run(support, scale, seeds, 16 * GJK_ITERATIONS, 0.0) {
         Verdict::Separated { distance, inserted }
         | Verdict::Touching { distance, inserted }
@@ -354,7 +599,7 @@ fn flat_sum(
         )),
         Verdict::Undecided => {
             let mut all = Vec::new();
-            materialise(cones, with_zero_wrench, &mut all)?;
+            materialise(cones, with_zero_wrench, true, &mut all)?;
             let mut quality = degenerate(&all, started);
             quality.stats = no_hull_stats(all.len(), started);
             Ok(quality)

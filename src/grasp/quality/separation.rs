@@ -157,7 +157,7 @@ pub(super) fn support_of(points: &[[f64; 6]], direction: &[f64; 6]) -> [f64; 6] 
 }
 
 /// The largest norm of `points` (the `scale` of [`Gjk::run`]).
-pub(super) fn largest_norm(points: &[[f64; 6]]) -> f64 {
+pub(crate) fn largest_norm(points: &[[f64; 6]]) -> f64 {
     points.iter().map(|w| dot(w, w)).fold(0.0, f64::max).sqrt()
 }
 

@@ -1,0 +1,346 @@
+//! Values on the caller's own wrenches, certified from a hull of nearby (snapped) points.
+//!
+//! The metrics search on wrenches snapped to a grid on which every friction pyramid is exactly
+//! planar ([`super::snap`]): there the exact hull sees the true, degenerate structure and is fast.
+//! The caller's wrenches — computed the natural way in `f64` — differ from the snapped ones by up
+//! to `δ` ≈ 6·10⁻⁸ of their size, and so would the metric. This module turns the hull found on
+//! the snapped points into a rigorous bracket `[low, high]` of the metric on the *raw* points;
+//! when the bracket is narrower than the promised accuracy, its midpoint is reported, otherwise
+//! the caller falls back to the exact engine on the raw points.
+//!
+//! # The argument
+//!
+//! Let `P` be a hull (partial or full) of snapped points with the origin strictly inside, `S` its
+//! boundary: a closed simplicial surface. Give each vertex `s` of `S` its raw point `r(s)`, a
+//! point of the raw set's hull `H` within `δ` of `s`, and let `S_t` be the surface with vertices
+//! `(1 − t)·s + t·r(s)`. Every point of a simplex of `S_t` is within `δ` of the snapped simplex,
+//! so when every snapped simplex keeps the origin farther than `δ`, no `S_t` passes through the
+//! origin and the origin's winding number about `S_1` is that about `S_0`: one. A point whose
+//! winding number is not zero lies in the convex hull of the surface's vertices (outside it, a
+//! plane separates it from the whole surface), so every point joined to the origin by a path
+//! that misses `S_1` lies in `H`.
+//!
+//! * **Q1** (`g(u) = |u|`): for a raw simplex `F` and any direction `u`, every point `x` of `F`
+//!   has `|x| ≥ u·x / |u| ≥ min_j u·r_j / |u|`. So the ball of radius `low = min_F min_j u_F·r_j
+//!   / |u_F|` misses `S_1`, lies in `H`, and `Q1 ≥ low`. Any unit `u` gives `Q1 ≤ h_H(u)`, the
+//!   support function of the raw set: `high = min over tried u of h(u)/|u|`.
+//! * **Q_OWS** (`g(u) = max_d −u·d` over the disturbances `d`): the segment from the origin to
+//!   `−ρ·d` misses `F` when `ρ·g(u_F) < min_j u_F·r_j`; with `low = min_F min_j u_F·r_j / g(u_F)`
+//!   every such segment for `ρ ≤ low` lies in `H`, so `Q_OWS ≥ low`; and `Q_OWS ≤ h(u)/g(u)` for
+//!   every `u` with `g(u) > 0` (the largest `ρ` with `−ρ·d ∈ H` for the `d` attaining `g(u)`).
+//!
+//! `u_F` may be any direction: only the bracket's width depends on how well it fits the raw
+//! simplex. Each facet is first bounded cheaply through its snapped vertices (`u_F·r ≥ u_F·s −
+//! δ|u_F|`); only facets whose cheap bound is below the running minimum get the raw simplex's
+//! own normal, which brings the bracket to the rounding of a few dot products. Every dot product
+//! carries its rounding bound (γ₆ ≤ 6.7·10⁻¹⁶ of `Σ|a_c b_c|`), so `low` and `high` are rigorous.
+
+use crate::hull::{FacetId, Hull};
+
+/// Rounding of a six-term dot product, relative to `Σ|a_c·b_c|`: γ₆ = 6u/(1 − 6u) ≤ 6.7·10⁻¹⁶,
+/// u = 2⁻⁵³ (Higham, *Accuracy and Stability of Numerical Algorithms*, §3.1), rounded up to
+/// cover the rounding of `Σ|a_c·b_c|` itself.
+const DOT_ROUNDING: f64 = 1e-15;
+
+/// Absolute slack for products that underflow (six terms, each off by at most 2⁻¹⁰⁷⁴).
+const UNDERFLOW: f64 = 6.0 * 4.9e-324;
+
+/// `a·b` and a bound on its rounding error.
+pub(crate) fn dot_with_error(a: &[f64; 6], b: &[f64; 6]) -> (f64, f64) {
+    let mut sum = 0.0;
+    let mut magnitude = 0.0;
+    for (x, y) in a.iter().zip(b) {
+        sum += x * y;
+        magnitude += (x * y).abs();
+    }
+    (sum, DOT_ROUNDING * magnitude + UNDERFLOW)
+}
+
+/// Bounds on |u| (relative rounding of a square root of a six-term sum of squares < 1e−15).
+fn norm_bounds(u: &[f64; 6]) -> (f64, f64) {
+    let n = u.iter().map(|x| x * x).sum::<f64>().sqrt();
+    (n * (1.0 - 1e-15), n * (1.0 + 1e-15))
+}
+
+/// The function `g` whose ratio `h(u)/g(u)` the metric minimises (see the module docs).
+pub(crate) trait Gauge {
+    /// An upper bound on `g(u)`, as cheap as possible (every facet asks).
+    fn upper_cheap(&mut self, u: &[f64; 6]) -> f64;
+    /// A tight upper bound on `g(u)`.
+    fn upper(&mut self, u: &[f64; 6]) -> f64;
+    /// A tight lower bound on `g(u)`.
+    fn lower(&mut self, u: &[f64; 6]) -> f64;
+}
+
+/// Q1: `g(u) = |u|`, the disturbances of the unit ball.
+pub(crate) struct UnitBall;
+
+impl Gauge for UnitBall {
+    fn upper_cheap(&mut self, u: &[f64; 6]) -> f64 {
+        norm_bounds(u).1
+    }
+    fn upper(&mut self, u: &[f64; 6]) -> f64 {
+        norm_bounds(u).1
+    }
+    fn lower(&mut self, u: &[f64; 6]) -> f64 {
+        norm_bounds(u).0
+    }
+}
+
+/// Q_OWS: `g(u) = max_d −u·d` over the disturbances of a support index.
+pub(crate) struct Disturbances<'a> {
+    pub(crate) index: &'a crate::strategy::SupportIndex<6>,
+}
+
+impl Disturbances<'_> {
+    /// The float support value of `−u` and a bound on the rounding of every dot product.
+    fn support(&self, u: &[f64; 6]) -> Option<(f64, f64)> {
+        let minus = u.map(|c| -c);
+        let (value, _) = self.index.support(&minus)?;
+        let error = DOT_ROUNDING * norm_bounds(u).1 * self.index.norm_bound() + UNDERFLOW;
+        Some((value, error))
+    }
+}
+
+impl Gauge for Disturbances<'_> {
+    fn upper_cheap(&mut self, u: &[f64; 6]) -> f64 {
+        // The ball tree's bound carries a 1e−12 relative slack, covering its rounding.
+        self.index.upper_bound(&u.map(|c| -c), 5)
+    }
+    fn upper(&mut self, u: &[f64; 6]) -> f64 {
+        self.support(u).map_or(f64::INFINITY, |(v, e)| v + e)
+    }
+    fn lower(&mut self, u: &[f64; 6]) -> f64 {
+        self.support(u).map_or(f64::NEG_INFINITY, |(v, e)| v - e)
+    }
+}
+
+/// A rigorous bracket of a metric on the raw points.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Bracket {
+    /// A lower bound on the metric.
+    pub(crate) low: f64,
+    /// An upper bound on the metric.
+    pub(crate) high: f64,
+    /// The facet whose raw simplex gave `high`.
+    pub(crate) facet: FacetId,
+}
+
+impl Bracket {
+    /// The midpoint, when the bracket is within the accuracy the metrics promise: `1e−12`
+    /// relative, or `1e−14·scale` for values near zero (half of each, to leave room for the
+    /// reference's own rounding).
+    pub(crate) fn value_within(&self, scale: f64) -> Option<f64> {
+        let width = self.high - self.low;
+        let allowed = (5e-13 * self.high.abs()).max(5e-15 * scale);
+        (width >= 0.0 && width <= allowed).then_some(0.5 * (self.low + self.high))
+    }
+}
+
+/// What the bracket needs of the raw point set.
+pub(crate) struct RawSide<R, H> {
+    /// The raw point of hull input `v`, as computed in floating point (`None` when unknown: the
+    /// facet then keeps its cheap bound).
+    pub(crate) point: R,
+    /// A bound on the distance between [`point`](Self::point)'s result and the true raw point
+    /// (0 when the raw point *is* the float value, as the caller's wrenches are).
+    pub(crate) error: f64,
+    /// A bound on the distance between every snapped hull input and its true raw point.
+    pub(crate) delta: f64,
+    /// The raw set's support function: `max_w u·w` and a bound on its rounding error.
+    pub(crate) support: H,
+}
+
+/// Scratch reused from one bracket to the next.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct BracketScratch {
+    cheap: Vec<(f64, FacetId)>,
+}
+
+/// The bracket of the metric `gauge` on the raw points from `hull`, built on the snapped points,
+/// which must hold the origin strictly inside; `None` when the snapped surface passes within `δ`
+/// of the origin (the argument needs the origin farther away) or no raw simplex gives an upper
+/// bound.
+pub(crate) fn bracket<R, H, G>(
+    hull: &Hull<6>,
+    raw: &mut RawSide<R, H>,
+    gauge: &mut G,
+    scratch: &mut BracketScratch,
+) -> Option<Bracket>
+where
+    R: FnMut(usize) -> Option<[f64; 6]>,
+    H: FnMut(&[f64; 6]) -> (f64, f64),
+    G: Gauge,
+{
+    let cheap = &mut scratch.cheap;
+    cheap.clear();
+    for (id, facet) in hull.facets() {
+        let u = facet.normal();
+        let (_, u_high) = norm_bounds(&u);
+        let mut nearest = f64::INFINITY;
+        for v in facet.vertices() {
+            let (height, error) = dot_with_error(&u, &hull.point(v));
+            nearest = nearest.min(height - error);
+        }
+        // The snapped simplex lies at least `nearest / |u|` from the origin: it must exceed δ.
+        let margin = nearest - raw.delta * u_high;
+        if !(margin > 0.0) {
+            return None;
+        }
+        let g = gauge.upper_cheap(&u);
+        let low = if g > 0.0 { margin / g } else { f64::INFINITY };
+        cheap.push((low, id));
+    }
+    cheap.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+    let mut low = f64::INFINITY;
+    let mut best: Option<(f64, FacetId)> = None;
+    for &(cheap_low, id) in cheap.iter() {
+        if cheap_low >= low {
+            break; // every remaining facet's bound is at least this one's
+        }
+        let vertices = hull.facet(id).vertices();
+        let mut points = [[0.0; 6]; 6];
+        let mut known = true;
+        for (p, &v) in points.iter_mut().zip(&vertices) {
+            match (raw.point)(v) {
+                Some(x) => *p = x,
+                None => known = false,
+            }
+        }
+        let mut facet_low = cheap_low;
+        if known && let Some(mut u) = hyperplane_normal(&points) {
+            if dot_with_error(&u, &hull.facet(id).normal()).0 < 0.0 {
+                u = u.map(|c| -c);
+            }
+            let (_, u_high) = norm_bounds(&u);
+            let mut nearest = f64::INFINITY;
+            for p in &points {
+                let (height, error) = dot_with_error(&u, p);
+                nearest = nearest.min(height - error);
+            }
+            let margin = nearest - raw.error * u_high;
+            let g = gauge.upper(&u);
+            if margin > 0.0 {
+                facet_low = facet_low.max(if g > 0.0 { margin / g } else { f64::INFINITY });
+            }
+            let g_low = gauge.lower(&u);
+            if g_low > 0.0 {
+                let (h, error) = (raw.support)(&u);
+                let high = (h + error) / g_low;
+                // The division rounds by half an ulp: nudge up.
+                let high = high * (1.0 + 2e-16);
+                if best.is_none_or(|(b, _)| high < b) {
+                    best = Some((high, id));
+                }
+            }
+        }
+        low = low.min(facet_low);
+    }
+    // Rounding of the divisions above (half an ulp each): nudge `low` down.
+    let low = low * (1.0 - 2e-16);
+    let (high, facet) = best?;
+    Some(Bracket { low, high, facet })
+}
+
+/// A normal of the hyperplane through six points (not normalised), or `None` when they are
+/// affinely dependent in floating point. Only the bracket's width depends on its accuracy: two
+/// passes of modified Gram–Schmidt on the edge vectors, then the coordinate axis least in their
+/// span, orthogonalised twice.
+pub(crate) fn hyperplane_normal(points: &[[f64; 6]; 6]) -> Option<[f64; 6]> {
+    let base = points[0];
+    let mut basis = [[0.0; 6]; 5];
+    let scale = points
+        .iter()
+        .flat_map(|p| p.iter().zip(&base).map(|(a, b)| (a - b).abs()))
+        .fold(0.0, f64::max);
+    if !(scale > 0.0) || !scale.is_finite() {
+        return None;
+    }
+    for (i, e) in basis.iter_mut().enumerate() {
+        *e = std::array::from_fn(|c| (points[i + 1][c] - base[c]) / scale);
+    }
+    for i in 0..5 {
+        for _ in 0..2 {
+            for j in 0..i {
+                let (b, a) = basis.split_at_mut(i);
+                project_out(&mut a[0], &b[j]);
+            }
+        }
+        let n = basis[i].iter().map(|x| x * x).sum::<f64>().sqrt();
+        if !(n > 1e-13) {
+            return None;
+        }
+        basis[i] = basis[i].map(|x| x / n);
+    }
+    // The axis with the least weight in the span.
+    let axis = (0..6)
+        .min_by(|&a, &b| {
+            let weight = |c: usize| basis.iter().map(|e| e[c] * e[c]).sum::<f64>();
+            weight(a).total_cmp(&weight(b))
+        })
+        .expect("six axes");
+    let mut normal = [0.0; 6];
+    normal[axis] = 1.0;
+    for _ in 0..2 {
+        for e in &basis {
+            project_out(&mut normal, e);
+        }
+    }
+    let n = normal.iter().map(|x| x * x).sum::<f64>().sqrt();
+    (n > 0.1).then(|| normal.map(|x| x / n))
+}
+
+/// `v ← v − (v·e) e` for a unit `e`.
+fn project_out(v: &mut [f64; 6], e: &[f64; 6]) {
+    let along: f64 = v.iter().zip(e).map(|(a, b)| a * b).sum();
+    for (x, y) in v.iter_mut().zip(e) {
+        *x -= along * y;
+    }
+}
+
+/// The support function of an explicit point set, `max_w u·w`, and its rounding bound.
+pub(crate) fn support_with_error(points: &[[f64; 6]], u: &[f64; 6]) -> (f64, f64) {
+    let mut best = (f64::NEG_INFINITY, 0.0);
+    for w in points {
+        let (h, error) = dot_with_error(u, w);
+        // The bound must cover the true maximum: keep the largest upper end's error.
+        if h + error > best.0 + best.1 {
+            best = (h, error);
+        }
+    }
+    best
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hyperplane_normal_is_orthogonal_to_the_edges() {
+        let points = [
+            [1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0, 0.0, 0.0, 0.0],
+            [0.0, 0.0, 1.0, 0.0, 0.0, 0.0],
+            [0.0, 0.0, 0.0, 1.0, 0.0, 0.0],
+            [0.0, 0.0, 0.0, 0.0, 1.0, 0.0],
+            [0.0, 0.0, 0.0, 0.0, 0.0, 1.0],
+        ];
+        let n = hyperplane_normal(&points).unwrap();
+        let expected = 1.0 / 6f64.sqrt();
+        for c in n {
+            assert!((c.abs() - expected).abs() < 1e-15, "{n:?}");
+        }
+        let mut flat = points;
+        flat[5] = [0.5, 0.5, 0.0, 0.0, 0.0, 0.0];
+        assert!(hyperplane_normal(&flat).is_none());
+    }
+
+    #[test]
+    fn dot_error_bounds_the_exact_value() {
+        // 0.1·3 + 0.2·(−1.5) in exact rationals is 0; the float sum must be within the bound.
+        let a = [0.1, 0.2, 0.0, 0.0, 0.0, 0.0];
+        let b = [3.0, -1.5, 0.0, 0.0, 0.0, 0.0];
+        let (value, error) = dot_with_error(&a, &b);
+        assert!(value.abs() <= error && error < 1e-15);
+    }
+}
