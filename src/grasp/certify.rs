@@ -184,7 +184,7 @@ where
         }
         // The snapped simplex lies at least `nearest / |u|` from the origin: it must exceed δ.
         let margin = nearest - raw.delta * u_high;
-        if !(margin > 0.0) {
+        if margin.is_nan() || margin <= 0.0 {
             return None;
         }
         let g = gauge.upper_cheap(&u);
@@ -253,7 +253,7 @@ pub(crate) fn hyperplane_normal(points: &[[f64; 6]; 6]) -> Option<[f64; 6]> {
         .iter()
         .flat_map(|p| p.iter().zip(&base).map(|(a, b)| (a - b).abs()))
         .fold(0.0, f64::max);
-    if !(scale > 0.0) || !scale.is_finite() {
+    if !scale.is_finite() || scale <= 0.0 {
         return None;
     }
     for (i, e) in basis.iter_mut().enumerate() {
@@ -267,7 +267,7 @@ pub(crate) fn hyperplane_normal(points: &[[f64; 6]; 6]) -> Option<[f64; 6]> {
             }
         }
         let n = basis[i].iter().map(|x| x * x).sum::<f64>().sqrt();
-        if !(n > 1e-13) {
+        if n.is_nan() || n <= 1e-13 {
             return None;
         }
         basis[i] = basis[i].map(|x| x / n);
