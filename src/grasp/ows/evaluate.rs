@@ -191,8 +191,11 @@ fn not_force_closure(stats: Stats) -> OwsQuality {
 /// runs on (same indexing) with their pyramids and `δ`, the bound on their distance to the raw.
 struct GraspSet<'a> {
     raw: &'a [[f64; 6]],
-    snapped: Option<(&'a [[f64; 6]], &'a [u32], f64)>,
+    snapped: Option<Snapped<'a>>,
 }
+
+/// The snapped wrenches, their pyramids (the contact of each) and `δ`.
+type Snapped<'a> = (&'a [[f64; 6]], &'a [u32], f64);
 
 fn ows_with(
     set: &GraspSet<'_>,
