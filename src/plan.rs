@@ -9,7 +9,7 @@
 //! ```
 //! use pqhull::grasp::FrictionModel;
 //! use pqhull::mesh::Mesh;
-//! use pqhull::plan::{plan, PlanConfig, PlanMethod, PlanMetric};
+//! use pqhull::plan::{plan, BestComparison, PlanConfig, PlanMethod, PlanMetric};
 //!
 //! let object = Mesh::uv_sphere(0.3, 8, 16)?;
 //! let config = PlanConfig {
@@ -22,7 +22,7 @@
 //! let partial = plan(&object, None, &config, PlanMethod::Partial)?;
 //! let full = plan(&object, None, &config, PlanMethod::Full)?;
 //! // Same samples, same metric values: the same best grasp.
-//! assert!(partial.same_best_as(&full));
+//! assert_eq!(partial.compare_best(&full), BestComparison::Same);
 //! let (a, b) = (partial.best.unwrap(), full.best.unwrap());
 //! assert_eq!(a.sample, b.sample);
 //! assert!((a.value - b.value).abs() <= 1e-12 * b.value.abs().max(1e-2));
@@ -100,18 +100,56 @@ pub struct PlanReport {
     pub facets_created: usize,
 }
 
-impl PlanReport {
-    /// Whether `other` — a plan over the same samples by another method — chose the same best
-    /// grasp: the same sample, or one with the same value (within 1e−9 relative: an exact tie that
-    /// rounding broke the other way). Both finding none counts as the same.
-    pub fn same_best_as(&self, other: &PlanReport) -> bool {
-        match (&self.best, &other.best) {
-            (Some(a), Some(b)) => {
-                a.sample == b.sample || (a.value - b.value).abs() <= 1e-9 * b.value.abs().max(1e-3)
-            }
-            (None, None) => true,
-            _ => false,
+/// What comparing the best grasps of two plans over the same samples found
+/// ([`PlanReport::compare_best`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BestComparison {
+    /// Both chose the same grasp: the same sample, or one with the same value (within 1e−9
+    /// relative: an exact tie that rounding broke the other way).
+    Same,
+    /// They chose different grasps, or only one of them found a force-closure grasp.
+    Different,
+    /// Neither found a force-closure grasp among its samples: there is nothing to compare, and
+    /// their timings compare no hull the metric needed either (such grasps are settled without
+    /// one by the partial method).
+    NothingToCompare,
+}
+
+impl BestComparison {
+    /// `Some(true)` for [`Same`](Self::Same), `Some(false)` for [`Different`](Self::Different),
+    /// `None` when there was nothing to compare.
+    pub fn same(self) -> Option<bool> {
+        match self {
+            BestComparison::Same => Some(true),
+            BestComparison::Different => Some(false),
+            BestComparison::NothingToCompare => None,
         }
+    }
+}
+
+impl PlanReport {
+    /// Compares this plan's best grasp with `other`'s — a plan over the same samples by another
+    /// method. See [`BestComparison`]; both finding none is
+    /// [`NothingToCompare`](BestComparison::NothingToCompare), not agreement.
+    pub fn compare_best(&self, other: &PlanReport) -> BestComparison {
+        match (&self.best, &other.best) {
+            (Some(a), Some(b))
+                if a.sample == b.sample
+                    || (a.value - b.value).abs() <= 1e-9 * b.value.abs().max(1e-3) =>
+            {
+                BestComparison::Same
+            }
+            (None, None) => BestComparison::NothingToCompare,
+            _ => BestComparison::Different,
+        }
+    }
+
+    /// Whether the two plans do *not* disagree: [`compare_best`](Self::compare_best) is
+    /// [`Same`](BestComparison::Same), or [`NothingToCompare`](BestComparison::NothingToCompare)
+    /// (both found no force-closure grasp). Use [`compare_best`](Self::compare_best) to tell
+    /// those two apart before reporting agreement.
+    pub fn same_best_as(&self, other: &PlanReport) -> bool {
+        self.compare_best(other) != BestComparison::Different
     }
 
     /// Seconds of quality evaluation per sample.
@@ -287,4 +325,47 @@ pub fn plan_with_progress(
     }
     report.other_time = started.elapsed().saturating_sub(report.quality_time);
     Ok(report)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn report(best: Option<(usize, f64)>) -> PlanReport {
+        let friction = FrictionModel::try_new(0.5, 4).unwrap();
+        let contact = Contact::try_new([0.0; 3], [1.0, 0.0, 0.0], None).unwrap();
+        PlanReport {
+            best: best.map(|(sample, value)| BestGrasp {
+                sample,
+                grasp: Grasp::try_new(vec![contact], friction).unwrap(),
+                value,
+            }),
+            samples: 2,
+            force_closure: usize::from(best.is_some()),
+            quality_time: Duration::ZERO,
+            other_time: Duration::ZERO,
+            facets_created: 0,
+        }
+    }
+
+    #[test]
+    fn both_finding_nothing_is_not_agreement() {
+        let none = report(None);
+        assert_eq!(none.compare_best(&none), BestComparison::NothingToCompare);
+        assert_eq!(none.compare_best(&none).same(), None);
+        // Not a disagreement either (the demo's exit status relies on that).
+        assert!(none.same_best_as(&none));
+        let one = report(Some((1, 0.2)));
+        assert_eq!(one.compare_best(&none), BestComparison::Different);
+        assert_eq!(none.compare_best(&one), BestComparison::Different);
+        assert!(!one.same_best_as(&none));
+        assert_eq!(one.compare_best(&one), BestComparison::Same);
+        // A tie broken the other way by rounding.
+        let tie = report(Some((0, 0.2 * (1.0 + 1e-12))));
+        assert_eq!(one.compare_best(&tie).same(), Some(true));
+        assert_eq!(
+            one.compare_best(&report(Some((0, 0.3)))).same(),
+            Some(false)
+        );
+    }
 }

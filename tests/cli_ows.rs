@@ -165,9 +165,45 @@ fn mesh_frame_is_applied_and_a_conflicting_frame_is_an_error_line() {
     assert_eq!(lines[1]["index"], 1);
     assert!(lines[1]["error"].as_str().unwrap().contains("torque frame"));
     let stderr = String::from_utf8_lossy(&out.stderr);
-    // 8 vertices × 8 edges (the first grasp's cone), about the cube's centre of mass.
-    assert!(stderr.contains("64 disturbances"), "{stderr}");
+    // Eq. 6 with the first grasp's cone (μ = 0.5, 8 edges): per face 4 corner pushes and
+    // 2 triangles × 3 corners × 8 rim edges. (Each face's diagonal triangle has its rim one step
+    // of 2π/8 from its side triangle's: the same directions up to rounding, which on this mesh
+    // leaves no two exactly equal, so nothing merges; tests/ows_eq6.rs compares the set itself.)
+    assert!(
+        stderr.contains(&format!("{} disturbances", 6 * (4 + 2 * 3 * 8))),
+        "{stderr}"
+    );
     assert!(stderr.contains("centre of mass"), "{stderr}");
+}
+
+/// The reported bug: the ellipsoid method said `"force_closure": true, "quality": 2.2e-308` for a
+/// two-finger pinch (rank-5 wrenches, mapped to a sliver holding the origin within rounding).
+/// Its verdict is now the grasp's own, as partial and brute force decide it.
+#[test]
+fn ellipsoid_method_does_not_call_a_pinch_force_closure() {
+    let cube = file("cube-pinch.obj", CUBE_OBJ);
+    for method in ["partial", "brute", "ellipsoid"] {
+        let out = pqh(
+            &[
+                "grasp",
+                "--metric",
+                "ows",
+                "--mesh",
+                cube.to_str().unwrap(),
+                "--method",
+                method,
+            ],
+            PINCH,
+        );
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let lines = lines(&out);
+        assert_eq!(lines[0]["force_closure"], false, "{method}: {}", lines[0]);
+        assert!(lines[0]["quality"].is_null(), "{method}: {}", lines[0]);
+    }
 }
 
 #[test]
@@ -255,7 +291,8 @@ fn bench_ows_reports_every_method_and_agreement() {
         String::from_utf8_lossy(&out.stderr)
     );
     let report: Value = serde_json::from_slice(&out.stdout).expect("one JSON document");
-    assert_eq!(report["disturbances"], 8 * 4);
+    // Eq. 6 at 4 edges: per face 4 corner pushes and 2 triangles × 3 corners × 4 rim edges.
+    assert_eq!(report["disturbances"], 6 * (4 + 2 * 3 * 4));
     assert_eq!(report["compared_with_brute"], 10);
     assert_eq!(report["disagreements"], 0);
     assert_eq!(report["compared_with_rays"], 20);

@@ -48,6 +48,8 @@ fn plan_partial_and_full_pick_the_same_best_grasp() {
         );
         let report: Value = serde_json::from_slice(&out.stdout).expect("JSON");
         assert_eq!(report["same_best"], true, "{metric}");
+        assert_eq!(report["comparison"], "same", "{metric}");
+        assert!(report["comparison_note"].is_null(), "{metric}");
         let (partial, full) = (&report["partial"], &report["full"]);
         assert_eq!(partial["samples"], 40);
         assert_eq!(partial["force_closure"], full["force_closure"], "{metric}");
@@ -61,6 +63,55 @@ fn plan_partial_and_full_pick_the_same_best_grasp() {
         // The partial hulls do less work.
         assert!(
             partial["facets_created"].as_u64().unwrap() < full["facets_created"].as_u64().unwrap()
+        );
+    }
+}
+
+/// The reported bug: with no force-closure grasp in the compared samples (`pqh plan --metric
+/// qinf` compares only the first 2 by default) the plan printed a time ratio and "same best
+/// grasp: yes". One contact is never force closure, so here neither run finds a grasp: the
+/// comparison must say there is nothing to compare, in the table and in JSON.
+#[test]
+fn plan_with_nothing_to_compare_says_so() {
+    let bar = bar_obj();
+    for metric in ["q1", "qinf"] {
+        let args = [
+            "plan",
+            "--mesh",
+            bar.to_str().unwrap(),
+            "--contacts",
+            "1",
+            "--samples",
+            "6",
+            "--full-samples",
+            "3",
+            "--metric",
+            metric,
+        ];
+        let out = pqh(&[&args[..], &["--json"]].concat());
+        assert!(
+            out.status.success(),
+            "{metric}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let report: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+        assert_eq!(report["comparison"], "nothing_to_compare", "{metric}");
+        assert!(report["same_best"].is_null(), "{metric}: {report}");
+        assert!(report["quality_speedup"].is_null(), "{metric}: {report}");
+        let note = report["comparison_note"].as_str().unwrap();
+        assert!(
+            note.contains("nothing to compare") && note.contains('3'),
+            "{note}"
+        );
+        assert!(report["full"]["best"].is_null() && report["partial"]["best"].is_null());
+
+        let out = pqh(&args);
+        assert!(out.status.success(), "{metric}");
+        let table = String::from_utf8_lossy(&out.stdout);
+        assert!(table.contains("nothing to compare"), "{metric}: {table}");
+        assert!(
+            !table.contains("same best grasp") && !table.contains("full / partial"),
+            "{metric}: {table}"
         );
     }
 }

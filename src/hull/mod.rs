@@ -282,12 +282,7 @@ impl<const D: usize> Hull<D> {
     /// has coordinates more than ~10^300 times larger or smaller than the input's); otherwise the
     /// sign of the floating-point [`signed_distance`](Self::signed_distance).
     pub fn side_of(&self, id: FacetId, x: &[f64; D]) -> Sign {
-        let scaled = x.map(|c| c * self.scale);
-        let exact = x
-            .iter()
-            .zip(&scaled)
-            .all(|(&c, &s)| s.is_finite() && (c == 0.0 || s.abs() >= f64::MIN_POSITIVE));
-        if exact {
+        if let Some(scaled) = self.scaled_exactly(x) {
             self.side(id, &scaled)
         } else {
             match self.signed_distance(id, x) {
@@ -296,6 +291,35 @@ impl<const D: usize> Hull<D> {
                 _ => Sign::Zero,
             }
         }
+    }
+
+    /// `x` in the internal coordinates, if scaling it there is exact.
+    fn scaled_exactly(&self, x: &[f64; D]) -> Option<[f64; D]> {
+        let scaled = x.map(|c| c * self.scale);
+        x.iter()
+            .zip(&scaled)
+            .all(|(&c, &s)| s.is_finite() && (c == 0.0 || s.abs() >= f64::MIN_POSITIVE))
+            .then_some(scaled)
+    }
+
+    /// A bound on the input's coordinates (caller's units): every coordinate is at most this in
+    /// magnitude, and the largest is more than half of it (unless the input's magnitudes were too
+    /// extreme to be scaled exactly).
+    pub(crate) fn coordinate_bound(&self) -> f64 {
+        1.0 / self.scale
+    }
+
+    /// Signed distance of `x` (caller's units) beyond facet `id`'s plane from the exact
+    /// determinant and the exact cofactors: a few ulps however close `x` is to the plane (see
+    /// `FacetPlane::exact_distance`), or `None` when `x` cannot be scaled exactly (as in
+    /// [`side_of`](Self::side_of)).
+    pub(crate) fn exact_signed_distance(&self, id: FacetId, x: &[f64; D]) -> Option<f64> {
+        let scaled = self.scaled_exactly(x)?;
+        let facet = self.facet(id);
+        let distance = facet
+            .plane
+            .exact_distance(&self.coords(&facet.vertices), &scaled);
+        Some(distance / self.scale)
     }
 
     /// An upper bound on the exact signed distance of `x` beyond facet `id`'s plane: the

@@ -261,28 +261,7 @@ pub(crate) fn exact_cofactor_direction<const D: usize>(vertices: &[[f64; D]; D])
 pub(crate) fn exact_cofactor_direction_big<const D: usize>(vertices: &[[f64; D]; D]) -> [f64; D] {
     let all: Vec<&[f64]> = vertices.iter().map(|v| &v[..]).collect();
     let s = scale(&all);
-    let int = |(m, e): (i64, i32)| -> BigInt {
-        if m == 0 {
-            BigInt::zero()
-        } else {
-            BigInt::from(m) << ((e - s.emin) as usize)
-        }
-    };
-    let (v0, rest) = s.parts.split_at(D);
-    let edges: Vec<Vec<BigInt>> = rest
-        .chunks_exact(D)
-        .map(|r| (0..D).map(|j| int(r[j]) - int(v0[j])).collect())
-        .collect();
-    let cofactors: Vec<BigInt> = (0..D)
-        .map(|j| {
-            let minor: Vec<Vec<BigInt>> = edges
-                .iter()
-                .map(|row| (0..D).filter(|&c| c != j).map(|c| row[c].clone()).collect())
-                .collect();
-            let det = bareiss_value(minor);
-            if (D - 1 + j) % 2 == 1 { -det } else { det }
-        })
-        .collect();
+    let cofactors = cofactors_big::<D>(&integer_differences(&s, D));
     // Shift so that the largest magnitude has about 62 bits, then convert: f64 rounding of each
     // component is then the only error.
     let bits = cofactors.iter().map(|c| c.bits()).max().unwrap_or(0);
@@ -293,6 +272,72 @@ pub(crate) fn exact_cofactor_direction_big<const D: usize>(vertices: &[[f64; D];
         *o = num_traits::ToPrimitive::to_f64(&shifted).unwrap_or(0.0);
     }
     out
+}
+
+/// `det[v1 − v0; …; v(D−1) − v0; p − v0] / |C|`, the signed distance of `p` beyond the plane
+/// through `vertices`, from the exact determinant and exact cofactors in `BigInt`, each rounded
+/// once (valid for every finite input; 0 for affinely dependent vertices).
+///
+/// # Panics
+/// If a coordinate is not finite.
+pub(crate) fn distance_big<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> f64 {
+    let mut all: Vec<&[f64]> = vertices.iter().map(|v| &v[..]).collect();
+    all.push(&p[..]);
+    let s = scale(&all);
+    let rows = integer_differences(&s, D);
+    let cofactors = cofactors_big::<D>(&rows[..D - 1]);
+    let norm2: BigInt = cofactors.iter().map(|c| c * c).sum();
+    if norm2.is_zero() {
+        return 0.0;
+    }
+    // Units: the determinant is in grid^D, the cofactors in grid^(D−1), grid = 2^emin.
+    let (value, e1) = big_to_parts(&bareiss_value(rows));
+    let (mut m2, mut e2) = big_to_parts(&norm2);
+    if e2 % 2 != 0 {
+        m2 *= 2.0;
+        e2 -= 1;
+    }
+    let exponent = i64::from(e1) - i64::from(e2 / 2) + i64::from(s.emin);
+    let exponent = exponent.clamp(-4000, 4000) as i32;
+    super::wide::times_power_of_two(value / m2.sqrt(), exponent)
+}
+
+/// The rows `q_k − q_0` (k = 1..points) of the scaled points, as integers in units of 2^emin.
+fn integer_differences(s: &Scaled, d: usize) -> Vec<Vec<BigInt>> {
+    let int = |(m, e): (i64, i32)| -> BigInt {
+        if m == 0 {
+            BigInt::zero()
+        } else {
+            BigInt::from(m) << ((e - s.emin) as usize)
+        }
+    };
+    let (v0, rest) = s.parts.split_at(d);
+    rest.chunks_exact(d)
+        .map(|r| (0..d).map(|j| int(r[j]) - int(v0[j])).collect())
+        .collect()
+}
+
+/// The signed cofactors of the last row of `[edges; ·]` (`edges`: D − 1 rows of D integers).
+fn cofactors_big<const D: usize>(edges: &[Vec<BigInt>]) -> Vec<BigInt> {
+    (0..D)
+        .map(|j| {
+            let minor: Vec<Vec<BigInt>> = edges
+                .iter()
+                .map(|row| (0..D).filter(|&c| c != j).map(|c| row[c].clone()).collect())
+                .collect();
+            let det = bareiss_value(minor);
+            if (D - 1 + j) % 2 == 1 { -det } else { det }
+        })
+        .collect()
+}
+
+/// `(m, e)` with `x ≈ m·2^e`, `m` holding the top 64 bits of `x` (one rounding to `f64`).
+fn big_to_parts(x: &BigInt) -> (f64, i32) {
+    let shift = x.bits().saturating_sub(64);
+    let top: BigInt = x.abs() >> (shift as usize);
+    let m = num_traits::ToPrimitive::to_f64(&top).unwrap_or(0.0);
+    let e = i32::try_from(shift).unwrap_or(i32::MAX);
+    (if x.is_negative() { -m } else { m }, e)
 }
 
 /// The exact determinant of a square integer matrix (Bareiss elimination with row swaps: after

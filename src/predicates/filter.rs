@@ -302,6 +302,26 @@ impl<const D: usize> FacetPlane<D> {
         }
     }
 
+    /// The signed distance of `p` beyond the plane through `vertices` (the points this plane was
+    /// built from), `det[v1 − v0; …; p − v0] / |C|`, from the exact determinant and the exact
+    /// cofactors: a few ulps however close `p` is to the plane, where the floating-point value
+    /// is only accurate to the rounding of the plane's offset.
+    ///
+    /// Costs the exact plane (built once and kept) and one exact evaluation — as much as a slow
+    /// [`side`](Self::side) test: for points the filter cannot place far from the plane.
+    ///
+    /// # Panics
+    /// If a coordinate is not finite.
+    pub(crate) fn exact_distance(&self, vertices: &[[f64; D]; D], p: &[f64; D]) -> f64 {
+        match self
+            .exact_plane(vertices)
+            .and_then(|plane| plane.distance(p))
+        {
+            Some(distance) => distance,
+            None => exact::distance_big(vertices, p),
+        }
+    }
+
     /// The cached exact plane, built on first use.
     fn exact_plane(&self, vertices: &[[f64; D]; D]) -> Option<&ExactPlane<D>> {
         self.exact

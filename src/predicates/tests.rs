@@ -594,3 +594,111 @@ fn stress_filter_bound() {
     ];
     eprintln!("largest error/bound ratio for D = 2..8: {w:?}");
 }
+
+// ---------------------------------------------------------------------------------------------
+// Exact distances.
+
+/// `det[v1 − v0; …; v(D−1) − v0; e_j]` for each j: the exact cofactors.
+fn reference_cofactors<const D: usize>(vertices: &[[f64; D]; D]) -> Vec<BigRational> {
+    let v0: Vec<BigRational> = vertices[0].iter().map(|&x| rational(x)).collect();
+    (0..D)
+        .map(|j| {
+            let mut rows: Vec<Vec<BigRational>> = vertices[1..]
+                .iter()
+                .map(|r| r.iter().zip(&v0).map(|(&x, o)| rational(x) - o).collect())
+                .collect();
+            let mut e = vec![BigRational::zero(); D];
+            e[j] = BigRational::from_integer(1.into());
+            rows.push(e);
+            rational_det(rows)
+        })
+        .collect()
+}
+
+/// The determinant of a square rational matrix by Gaussian elimination.
+fn rational_det(mut a: Vec<Vec<BigRational>>) -> BigRational {
+    let n = a.len();
+    let mut det = BigRational::from_integer(1.into());
+    for k in 0..n {
+        let Some(r) = (k..n).find(|&r| !a[r][k].is_zero()) else {
+            return BigRational::zero();
+        };
+        if r != k {
+            a.swap(r, k);
+            det = -det;
+        }
+        det *= &a[k][k];
+        for i in k + 1..n {
+            if a[i][k].is_zero() {
+                continue;
+            }
+            let f = &a[i][k] / &a[k][k];
+            for j in k + 1..n {
+                let t = &f * &a[k][j];
+                a[i][j] -= t;
+            }
+        }
+    }
+    det
+}
+
+/// `FacetPlane::exact_distance` (cached integer plane or `BigInt`) and the `BigInt` path alone
+/// against det / |C| from the exact rationals, each rounded once: a few ulps apart, for points
+/// near the plane (an affine combination of the vertices, rounded, then nudged by a few ulps)
+/// and away from it, on and off the vertices' binary grid.
+fn exact_distance_case<const D: usize>() {
+    let strategy = (
+        prop::collection::vec(-1.0f64..=1.0, D * D),
+        prop::collection::vec(0.0f64..=1.0, D),
+        -3i32..=3,
+        any::<bool>(),
+    );
+    runner(0xd157 + D as u64, 48)
+        .run(&strategy, |(coordinates, weights, nudge, far)| {
+            let mut v = [[0.0; D]; D];
+            for (k, row) in v.iter_mut().enumerate() {
+                row.copy_from_slice(&coordinates[k * D..(k + 1) * D]);
+            }
+            let total: f64 = weights.iter().sum::<f64>().max(1e-3);
+            let mut p: [f64; D] =
+                std::array::from_fn(|c| (0..D).map(|k| weights[k] / total * v[k][c]).sum::<f64>());
+            if far {
+                p[0] += 0.25;
+            } else {
+                for _ in 0..nudge.unsigned_abs() {
+                    p[D - 1] = if nudge > 0 {
+                        p[D - 1].next_up()
+                    } else {
+                        p[D - 1].next_down()
+                    };
+                }
+            }
+            let det = reference_det(&v, &p);
+            let cofactors = reference_cofactors(&v);
+            let to_f64 = |x: &BigRational| num_traits::ToPrimitive::to_f64(x).unwrap();
+            let norm = cofactors
+                .iter()
+                .map(|c| to_f64(c).powi(2))
+                .sum::<f64>()
+                .sqrt();
+            prop_assume!(norm > 0.0);
+            let want = to_f64(&det) / norm;
+            let plane = FacetPlane::new(&v);
+            for (path, got) in [
+                ("exact_distance", plane.exact_distance(&v, &p)),
+                ("distance_big", super::exact::distance_big(&v, &p)),
+            ] {
+                prop_assert!(
+                    (got - want).abs() <= 8.0 * f64::EPSILON * want.abs(),
+                    "{path}: D = {D}, got {got:e}, want {want:e}, vertices {v:?}, p {p:?}"
+                );
+            }
+            Ok(())
+        })
+        .unwrap();
+}
+
+#[test]
+fn exact_distance_agrees_with_rational_reference() {
+    all_dims!(exact_distance_case);
+}

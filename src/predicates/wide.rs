@@ -246,6 +246,57 @@ impl<const D: usize> ExactPlane<D> {
         }
         Some(sum.sign(self.len))
     }
+
+    /// `det[v1 − v0; …; v(D−1) − v0; p − v0] / |C|` — the signed distance of `p` beyond the
+    /// plane — from the exact determinant and the exact cofactors, each rounded once (a few ulps
+    /// in all), or `None` when a coordinate of `p` is off this plane's column grid or too large.
+    ///
+    /// # Panics
+    /// If a coordinate of `p` is not finite.
+    pub(crate) fn distance(&self, p: &[f64; D]) -> Option<f64> {
+        let mut sum = Wide::ZERO;
+        for (j, &coordinate) in p.iter().enumerate() {
+            let x = column_integer(coordinate, self.exponents[j])?;
+            sum.add_product(x - self.base[j], false, &self.cofactors[j], self.len);
+        }
+        // With S = Σ e_c, the determinant is 2^S·sum and cofactor j is C'_j·2^(S − e_j): the
+        // common 2^S cancels, leaving sum / |(C'_j·2^(−e_j))_j|.
+        let (value, exponent) = sum.to_f64_parts(self.len);
+        if value == 0.0 {
+            return Some(0.0);
+        }
+        let parts: [(f64, i32); D] = std::array::from_fn(|j| {
+            let (m, e) = self.cofactors[j].to_f64_parts(self.len);
+            (m, e - self.exponents[j])
+        });
+        let top = parts
+            .iter()
+            .filter(|(m, _)| *m != 0.0)
+            .map(|&(_, e)| e)
+            .max()?;
+        let norm = parts
+            .iter()
+            .map(|&(m, e)| {
+                let c = times_power_of_two(m, e - top);
+                c * c
+            })
+            .sum::<f64>()
+            .sqrt();
+        Some(times_power_of_two(value / norm, exponent - top))
+    }
+}
+
+/// `x · 2^e`, in steps that cannot overflow or underflow before the end.
+pub(crate) fn times_power_of_two(mut x: f64, mut e: i32) -> f64 {
+    while e > 1000 {
+        x *= 2f64.powi(1000);
+        e -= 1000;
+    }
+    while e < -1000 {
+        x *= 2f64.powi(-1000);
+        e += 1000;
+    }
+    x * 2f64.powi(e)
 }
 
 /// `x / 2^exponent` when it is an integer of magnitude below 2^62 (so that a difference of two fits

@@ -1,6 +1,6 @@
 //! `ClosestToOrigin`: the PQHGWS algorithm (Liu & Carpin, Algorithm 1), made exact.
 
-use super::nearest::{min_norm_point, nearest_in_simplex};
+use super::nearest::{min_norm_point, min_norm_point_accurate, nearest_face_in_simplex};
 use super::{Queued, ReusableStrategy, Stats, Step, Strategy};
 use crate::hull::{FacetId, Hull, dot};
 use crate::predicates::Sign;
@@ -21,14 +21,17 @@ use std::collections::BinaryHeap;
 /// * **query inside** (checked exactly against every live facet): the partial hull `P` is inside the
 ///   full hull `H`, so dist(q, ∂H) ≥ dist(q, ∂P) = distance to this facet's plane, and this plane is
 ///   a supporting plane of `H`, so the two are equal. The answer is exact up to the rounding of one
-///   dot product.
+///   dot product; within about 1e−10 of the input's size of the boundary, where that rounding
+///   would dominate, it is the exact determinant divided by the exact cofactors' norm (and the
+///   facets about as near are settled too, so a query exactly on the boundary gets exactly 0).
 /// * **query outside**: the distance to a facet's plane (the seed paper's Definition 8) is only a
 ///   lower bound on the distance to the hull — equal only when the foot of the perpendicular lands
-///   inside the facet. Instead the strategy takes the point `x` of `P` nearest `q` (exhaustively over
-///   the faces of the facets `q` can see) and checks the supporting hyperplane through `x` normal
-///   to `q − x`: if no remaining point lies beyond it, `x` is the nearest point of `H` too (every
-///   point of `H` is a convex combination of points behind that plane). Otherwise the point farthest
-///   beyond it is added — a GJK-like step — and the search repeats.
+///   inside the facet. Instead the strategy takes the point `x` of `P` nearest `q` (Wolfe's
+///   algorithm over the vertices of the facets `q` sees, decided exactly, with an accurate
+///   residual `q − x`) and checks the supporting hyperplane through `x` normal to `q − x`: if no
+///   remaining point lies beyond it, `x` is the nearest point of `H` too (every point of `H` is a
+///   convex combination of points behind that plane). Otherwise the point farthest beyond it is
+///   added — a GJK-like step — and the search repeats.
 ///
 /// ```
 /// use pqhull::{ClosestToOrigin, Hull};
@@ -49,7 +52,8 @@ pub struct ClosestToOrigin<const D: usize, S: PointSource<D> = NoSource> {
     queue: BinaryHeap<Entry>,
     phase: Phase,
     answer: Option<(f64, FacetId, [f64; D])>,
-    /// Scratch for the outside phase: facets the query sees, and their vertices.
+    /// Scratch: the facets the query sees (outside phase) or that are about as near as the
+    /// deciding one (inside, near the boundary), and the seen facets' vertices.
     seen: Vec<FacetId>,
     seen_vertices: Vec<usize>,
 }
@@ -67,10 +71,15 @@ enum Phase {
 #[derive(Clone, Debug, PartialEq)]
 pub struct DistanceResult<const D: usize> {
     /// Signed Euclidean distance from the query point to the boundary of the full hull: positive
-    /// inside, negative outside, zero on the boundary. The sign is decided exactly (a point
-    /// strictly inside but within rounding of a facet gets `f64::MIN_POSITIVE`); the magnitude is
-    /// floating point. Outside, the nearest-point certificate is floating point too (see the type's
-    /// docs).
+    /// inside, negative outside, exactly zero on the boundary; the sign is decided exactly.
+    ///
+    /// The magnitude is accurate to about 1e−15 of the input's size (its largest coordinate)
+    /// or 1e−12 of itself, whichever is larger, however close the query is to the boundary:
+    /// inside, within about 1e−10 of the input's size of a facet, it is that facet's exact
+    /// determinant over its exact cofactors' norm; outside, Wolfe's nearest point is computed
+    /// with an accurate residual. (A distance below the smallest subnormal `f64` — only for
+    /// inputs themselves near the subnormal range — is rounded up to it, keeping the sign.) The
+    /// outside certificate is floating point (see the type's docs).
     pub signed_distance: f64,
     /// The deciding facet: its plane is nearest the query point (inside) or it holds the nearest
     /// point (outside). A facet of the partial hull, and (up to the triangulation of coplanar
@@ -293,15 +302,28 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
                 }
                 return Step::Continue;
             }
-            let facet = hull.facet(id);
-            let distance = if query_side == Sign::Zero {
-                0.0
+            let float = -hull.facet(id).signed_distance(&self.query);
+            let near = NEAR_BOUNDARY * hull.coordinate_bound();
+            let (distance, id) = if query_side == Sign::Zero {
+                (0.0, id)
+            } else if float > near {
+                (float, id)
             } else {
-                // Strictly inside by the exact test; keep the sign even when the query is closer
-                // to the plane than the rounding of the floating-point distance can resolve.
-                (-facet.signed_distance(&self.query)).max(f64::MIN_POSITIVE)
+                match self.near_boundary(hull, id, float + near) {
+                    Some(found) => found,
+                    None => {
+                        // An about equally near facet still had points beyond it: one was added.
+                        self.queue.push(entry);
+                        return Step::Continue;
+                    }
+                }
             };
-            let normal = facet.normal();
+            let query_side = if distance == 0.0 {
+                Sign::Zero
+            } else {
+                query_side
+            };
+            let normal = hull.facet(id).normal();
             let foot = std::array::from_fn(|c| self.query[c] + distance * normal[c]);
             self.answer = Some((distance, id, foot));
             self.phase = Phase::Done;
@@ -321,20 +343,88 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
         unreachable!("a hull always has live facets, each queued when created")
     }
 
+    /// The inside answer when the query is within `band` (about 1e−10 of the input's size) of the
+    /// plane of `id`, the facet the queue popped: the distances of the other facets' planes are
+    /// then as uncertain as their differences, so every facet that may be as near is settled
+    /// first — expanded if anything lies beyond it (then `None`: the search goes on), else measured
+    /// exactly — and the nearest is returned, 0 for a facet through the query.
+    ///
+    /// Each such facet has nothing beyond it, so its plane supports the full hull: the smallest
+    /// exact distance is the answer, as for the popped facet alone far from the boundary.
+    fn near_boundary(
+        &mut self,
+        hull: &mut Hull<D>,
+        id: FacetId,
+        band: f64,
+    ) -> Option<(f64, FacetId)> {
+        let query = self.query;
+        self.seen.clear();
+        for (g, _) in hull.facets() {
+            if g != id && hull.distance_upper_bound(g, &query) >= -band {
+                self.seen.push(g);
+            }
+        }
+        let inside_distance = |hull: &Hull<D>, g: FacetId| {
+            -hull
+                .exact_signed_distance(g, &query)
+                .unwrap_or_else(|| hull.signed_distance(g, &query))
+        };
+        let mut best = (inside_distance(hull, id), id);
+        let mut on_boundary = false;
+        for i in 0..self.seen.len() {
+            let g = self.seen[i];
+            if hull.facet(g).outside_len() > 0 || hull.claim_beyond(g) {
+                self.expand(hull, g, None);
+                return None;
+            }
+            if let Some(point) = self.source.beyond(hull, g) {
+                let inserted = hull.insert_beyond(g, point);
+                assert!(
+                    inserted.is_some(),
+                    "PointSource::beyond returned a point not strictly beyond the facet, or out of \
+                     the hull's coordinate range"
+                );
+                self.enqueue_created(hull);
+                return None;
+            }
+            // The query is weakly inside every facet (checked exactly by the caller).
+            if hull.side_of(g, &query) == Sign::Zero {
+                best = (0.0, g);
+                on_boundary = true;
+                break;
+            }
+            let distance = inside_distance(hull, g);
+            if distance < best.0 {
+                best = (distance, g);
+            }
+        }
+        hull.refine_normal(best.1);
+        if best.0 <= 0.0 && !on_boundary {
+            // Strictly inside, nearer than the smallest subnormal: round up, keep the sign.
+            best.0 = f64::from_bits(1);
+        }
+        Some(best)
+    }
+
     /// One step of the outside phase: nearest point of the partial hull, then its certificate.
     fn step_outside(&mut self, hull: &mut Hull<D>) -> Step {
-        let (x, id, distance) = self.nearest_point(hull);
+        let closest = self.nearest_point(hull);
+        let x = closest.point;
         hull.trace_note(
             Some(x),
             "nearest point of the partial hull to the query: does anything lie beyond the \
              supporting plane through it?",
         );
-        let direction: [f64; D] = std::array::from_fn(|c| self.query[c] - x[c]);
-        let level = dot(&direction, &x);
+        // Heights along q − x measured from the query, where q − x is known accurately: the
+        // supporting plane through x is at height −|q − x|².
+        let direction = closest.offset.map(|c| -c);
+        let query = self.query;
+        let height = |p: [f64; D]| dot(&direction, &std::array::from_fn(|c| p[c] - query[c]));
+        let level = -dot(&direction, &direction);
         let mut best: Option<(f64, FacetId, usize)> = None;
         for (g, facet) in hull.facets() {
             for p in facet.outside_set() {
-                let height = dot(&direction, &hull.point(p));
+                let height = height(hull.point(p));
                 if height > level && best.is_none_or(|(h, _, _)| height > h) {
                     best = Some((height, g, p));
                 }
@@ -342,7 +432,7 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
         }
         if best.is_none()
             && let Some(s) = self.source.support(&direction)
-            && dot(&direction, &s) > level
+            && height(s) > level
         {
             // An implicit point beyond the certificate plane: it is outside the partial hull, so
             // some facet sees it.
@@ -373,6 +463,7 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
                 Step::Continue
             }
             None => {
+                let (distance, id, x) = self.outside_answer(hull, closest);
                 self.answer = Some((-distance, id, x));
                 self.phase = Phase::Done;
                 hull.trace_stop(Some(id), || {
@@ -389,64 +480,173 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
     /// The point of the partial hull nearest the (outside) query point, and a facet holding it.
     ///
     /// The nearest point lies on a facet the query sees, so it is the nearest point of the convex
-    /// hull of those facets' vertices: Wolfe's algorithm on a few dozen points.
-    fn nearest_point(&mut self, hull: &Hull<D>) -> ([f64; D], FacetId, f64) {
+    /// hull of those facets' vertices: Wolfe's algorithm on a few dozen points, then again from
+    /// its answer with an accurate residual. "Sees" is the exact test: the floating-point
+    /// distances of a partial hull's thin facets (whose normals are refined only when they are
+    /// popped) can be wrong by far more than the distance of a query near the boundary, both
+    /// ways, and a facet taken for seen that is not, or missed, changes the answer.
+    fn nearest_point(&mut self, hull: &Hull<D>) -> Closest<D> {
         self.seen.clear();
         self.seen_vertices.clear();
         let mut farthest_plane: Option<(f64, FacetId)> = None;
+        let mut farthest_seen: Option<(f64, FacetId)> = None;
         for (id, facet) in hull.facets() {
             let beyond = facet.signed_distance(&self.query);
             if farthest_plane.is_none_or(|(b, _)| beyond > b) {
                 farthest_plane = Some((beyond, id));
             }
-            if beyond > 0.0 {
+            if hull.side_of(id, &self.query) == Sign::Positive {
+                if farthest_seen.is_none_or(|(b, _)| beyond > b) {
+                    farthest_seen = Some((beyond, id));
+                }
                 self.seen.push(id);
                 self.seen_vertices.extend(facet.vertices());
             }
         }
-        let (_, fallback) = farthest_plane.expect("a hull has facets");
-        if self.seen.is_empty() {
-            // Rounding hid every facet the query sees: it is within rounding of the boundary.
-            self.seen.push(fallback);
-            self.seen_vertices.extend(hull.facet(fallback).vertices());
-        }
+        let fallback = match farthest_seen {
+            Some((_, id)) => id,
+            None => {
+                // Only for a query `side_of` cannot scale exactly (it then decides in floating
+                // point, as here).
+                let (_, id) = farthest_plane.expect("a hull has facets");
+                self.seen.push(id);
+                self.seen_vertices.extend(hull.facet(id).vertices());
+                id
+            }
+        };
         self.seen_vertices.sort_unstable();
         self.seen_vertices.dedup();
         let vertices = &self.seen_vertices;
-        let nearest = min_norm_point(vertices.len(), |i| hull.point(vertices[i]), &self.query);
-        // Wolfe's optimality test, redone here with a tolerance: no vertex may lie beyond the
-        // plane through the answer normal to q − x. Nearly coincident points can make its linear
-        // algebra fail; then try every face of every facet the query sees instead.
-        let x = nearest.point;
-        let direction: [f64; D] = std::array::from_fn(|c| self.query[c] - x[c]);
-        let level = dot(&direction, &x);
-        let extent = vertices
-            .iter()
-            .map(|&v| dot(&hull.point(v), &hull.point(v)).sqrt())
-            .fold(0.0, f64::max);
-        let slack = 1e-12 * extent * dot(&direction, &direction).sqrt();
-        let optimal = vertices
-            .iter()
-            .all(|&v| dot(&direction, &hull.point(v)) <= level + slack);
+        let point = |i: usize| hull.point(vertices[i]);
+        let rough = min_norm_point(vertices.len(), point, &self.query);
+        let nearest = min_norm_point_accurate(vertices.len(), point, &self.query, rough.support());
+        // Wolfe's optimality test, redone here: no vertex may lie beyond the plane through the
+        // answer normal to q − x, by more than the rounding of the test itself (q − x is accurate
+        // to a few ulps, so the test is limited by the D-term dot products with v − q). Nearly
+        // coincident points can make Wolfe's linear algebra fail; then try every face of every
+        // facet the query sees instead.
+        let direction = nearest.offset.map(|c| -c);
+        let squared = dot(&direction, &direction);
+        let mut reach = 0.0f64;
+        let mut worst = f64::NEG_INFINITY;
+        for &v in vertices {
+            let p = hull.point(v);
+            let from_query: [f64; D] = std::array::from_fn(|c| p[c] - self.query[c]);
+            reach = reach.max(dot(&from_query, &from_query));
+            // (q − x)·(v − x) = (q − x)·(v − q) + |q − x|²
+            worst = worst.max(dot(&direction, &from_query) + squared);
+        }
+        let slack = 2.0 * (D as f64 + 4.0) * f64::EPSILON * (squared * reach).sqrt();
+        let optimal = worst <= slack;
         if optimal {
             let support = nearest.support().iter().map(|&i| vertices[i]);
             let holder = self.seen.iter().copied().find(|&id| {
                 let facet_vertices = hull.facet(id).vertices();
                 support.clone().all(|v| facet_vertices.contains(&v))
             });
-            return (x, holder.unwrap_or(fallback), nearest.distance);
+            return Closest {
+                point: nearest.point,
+                offset: nearest.offset,
+                facet: holder.unwrap_or(fallback),
+                distance: nearest.distance,
+            };
         }
-        let mut best: Option<([f64; D], FacetId, f64)> = None;
+        let mut best: Option<([f64; D], FacetId, f64, u32)> = None;
         for &id in &self.seen {
             let simplex = hull.facet(id).vertices().map(|v| hull.point(v));
-            let (x, d) = nearest_in_simplex(&simplex, &self.query);
-            if best.is_none_or(|(_, _, b)| d < b) {
-                best = Some((x, id, d));
+            let (x, d, face) = nearest_face_in_simplex(&simplex, &self.query);
+            if best.is_none_or(|(_, _, b, _)| d < b) {
+                best = Some((x, id, d, face));
             }
         }
-        best.expect("at least one facet is seen")
+        let (point, facet, distance, face) = best.expect("at least one facet is seen");
+        // The nearest face, found in floating point, measured again with an accurate residual.
+        let vertices = hull.facet(facet).vertices();
+        let mut members = [0usize; 9];
+        let mut count = 0;
+        for (i, &v) in vertices.iter().enumerate() {
+            if face & (1 << i) != 0 {
+                members[count] = v;
+                count += 1;
+            }
+        }
+        let start: [usize; 9] = std::array::from_fn(|i| i);
+        let polished = min_norm_point_accurate(
+            count,
+            |i| hull.point(members[i]),
+            &self.query,
+            &start[..count],
+        );
+        if polished.distance <= distance {
+            return Closest {
+                point: polished.point,
+                offset: polished.offset,
+                facet,
+                distance: polished.distance,
+            };
+        }
+        Closest {
+            point,
+            offset: std::array::from_fn(|c| point[c] - self.query[c]),
+            facet,
+            distance,
+        }
+    }
+
+    /// The certified outside answer — distance, facet, nearest point — from the nearest point of
+    /// the partial hull.
+    ///
+    /// Near the boundary (within about 1e−10 of the input's size), the exact distance to each
+    /// seen facet's plane is a lower bound on it (the partial hull lies behind that plane), and
+    /// the largest is taken when it is larger: it guards the last ulps of Wolfe's answer, and
+    /// makes the magnitude strictly positive whatever the rounding, as the exact sign requires.
+    fn outside_answer(&self, hull: &mut Hull<D>, closest: Closest<D>) -> (f64, FacetId, [f64; D]) {
+        let mut answer = (closest.distance, closest.facet, closest.point);
+        if closest.distance > NEAR_BOUNDARY * hull.coordinate_bound() {
+            return answer;
+        }
+        let mut plane: Option<FacetId> = None;
+        for &g in &self.seen {
+            // Seen facets have the query strictly beyond: a positive exact distance.
+            let distance = hull
+                .exact_signed_distance(g, &self.query)
+                .unwrap_or_else(|| hull.signed_distance(g, &self.query));
+            if distance > answer.0 {
+                answer.0 = distance;
+                plane = Some(g);
+            }
+        }
+        if let Some(g) = plane {
+            hull.refine_normal(g);
+            let normal = hull.facet(g).normal();
+            answer.1 = g;
+            answer.2 = std::array::from_fn(|c| self.query[c] - answer.0 * normal[c]);
+        }
+        if answer.0 <= 0.0 {
+            // Nearer than the smallest subnormal: round up, keep the sign.
+            answer.0 = f64::from_bits(1);
+        }
+        answer
     }
 }
+
+/// The point of the partial hull nearest an outside query, as [`ClosestToOrigin`]'s outside
+/// phase finds it.
+#[derive(Clone, Copy, Debug)]
+struct Closest<const D: usize> {
+    point: [f64; D],
+    /// `point − query`, accurate even when tiny (the certificate's direction is its opposite).
+    offset: [f64; D],
+    /// A seen facet holding `point` (or the farthest seen one if none is found).
+    facet: FacetId,
+    distance: f64,
+}
+
+/// Within this fraction of the input's coordinate bound of the boundary, the floating-point
+/// distance to a plane (the rounding of its offset, about D ulps of the input's size, and of a
+/// normal certified to 1e−11) no longer has the relative accuracy the result promises: distances
+/// are then taken from the exact determinants. 2^-33 ≈ 1.2e−10.
+const NEAR_BOUNDARY: f64 = 1.0 / (1u64 << 33) as f64;
 
 impl<const D: usize, S: PointSource<D>> Strategy<D> for ClosestToOrigin<D, S> {
     type Output = DistanceResult<D>;

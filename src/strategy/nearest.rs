@@ -9,6 +9,14 @@
 //! iterations, and allocates nothing. Floating point: the result is accurate to about 1e−13
 //! relative to the size of the point set on well-conditioned input; callers that need a
 //! certificate check the supporting hyperplane themselves.
+//!
+//! [`min_norm_point_accurate`] runs the same iterations with the residual `x − q` kept accurate:
+//! `p − q` and the corral's edges are split exactly into two doubles, the point of the affine
+//! hull is summed in double-double and the normal equations are refined against that residual.
+//! Its distance is then accurate relative to itself, not to the size of the point set — what a
+//! query within rounding of the hull needs (plain Wolfe only knows such a distance to about
+//! 1e−16 of the set's size, so its direction `q − x`, and every decision taken from it, are
+//! noise).
 
 use crate::hull::dot;
 
@@ -18,10 +26,23 @@ const TOL: f64 = 1e-14;
 /// Relative pivot size below which a corral is taken as affinely dependent.
 const SINGULAR: f64 = 1e-13;
 
+/// Optimality tolerance of [`min_norm_point_accurate`]: its residual is accurate to a few ulps, so
+/// the test is limited only by the rounding of the dot products `x·(p_j − q)` (about D ulps of
+/// `|x|·M`). A point beyond the optimality plane by less than `TOL_ACCURATE·M` changes the distance
+/// by a second-order amount unless it is that close to `x` too.
+const TOL_ACCURATE: f64 = 1e-15;
+
+/// Relative length (to the longest edge) below which an edge of a corral, orthogonalised against
+/// the others, is taken as affinely dependent in [`min_norm_point_accurate`]: its refinement
+/// converges while this times 1/ε stays well below 1.
+const SINGULAR_QR: f64 = 1e-14;
+
 /// The nearest point and the (at most D + 1) input points whose convex hull holds it.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Nearest<const D: usize> {
     pub(crate) point: [f64; D],
+    /// `point − query`, computed before adding the query back (so accurate even when it is tiny).
+    pub(crate) offset: [f64; D],
     pub(crate) distance: f64,
     support: [usize; 9],
     support_len: usize,
@@ -43,31 +64,100 @@ pub(crate) fn min_norm_point<const D: usize>(
     point: impl Fn(usize) -> [f64; D],
     query: &[f64; D],
 ) -> Nearest<D> {
+    wolfe::<D, false>(count, point, query, &[])
+}
+
+/// [`min_norm_point`] with an accurate residual (see the module documentation), started from the
+/// corral `start` (indices of affinely independent points, such as the support of a plain
+/// [`min_norm_point`] run) when its affine minimiser lies inside it, else from the nearest point.
+///
+/// The distance is accurate to about 1e−15 relative to itself plus 1e−30 of the point set's size,
+/// for corrals whose edge matrix is conditioned better than about 1e8.
+///
+/// # Panics
+/// If `count == 0` or an index of `start` is `count` or more.
+pub(crate) fn min_norm_point_accurate<const D: usize>(
+    count: usize,
+    point: impl Fn(usize) -> [f64; D],
+    query: &[f64; D],
+    start: &[usize],
+) -> Nearest<D> {
+    wolfe::<D, true>(count, point, query, start)
+}
+
+/// Wolfe's algorithm; `ACCURATE` selects the double-double residual (and `start`, which the plain
+/// variant ignores).
+fn wolfe<const D: usize, const ACCURATE: bool>(
+    count: usize,
+    point: impl Fn(usize) -> [f64; D],
+    query: &[f64; D],
+    start: &[usize],
+) -> Nearest<D> {
     assert!(count > 0, "min_norm_point: no points");
-    // Points relative to the query, which becomes the origin.
-    let rel = |i: usize| -> [f64; D] {
-        let p = point(i);
-        std::array::from_fn(|c| p[c] - query[c])
-    };
     let mut largest = 0.0f64;
     let mut first = (f64::INFINITY, 0);
     for i in 0..count {
-        let p = rel(i);
-        let n2 = dot(&p, &p);
+        let p = point(i);
+        let r: [f64; D] = std::array::from_fn(|c| p[c] - query[c]);
+        let n2 = dot(&r, &r);
         largest = largest.max(n2);
         if n2 < first.0 {
             first = (n2, i);
         }
     }
     let largest = largest.sqrt();
+    // The accurate variant works in units of a power of two near the set's size (an exact change
+    // of units), so that squares of tiny residuals neither underflow nor lose their low bits.
+    let unit = if ACCURATE {
+        power_of_two_below(largest)
+    } else {
+        1.0
+    };
+    let largest = largest / unit;
+    // Points relative to the query, which becomes the origin: `p − q = hi + lo` exactly in the
+    // accurate variant (two_sum), `hi` alone (rounded) in the plain one.
+    let rel = |i: usize| -> ([f64; D], [f64; D]) {
+        let p = point(i);
+        let mut hi = [0.0; D];
+        let mut lo = [0.0; D];
+        for c in 0..D {
+            if ACCURATE {
+                let (s, e) = two_sum(p[c], -query[c]);
+                hi[c] = s / unit;
+                lo[c] = e / unit;
+            } else {
+                hi[c] = p[c] - query[c];
+            }
+        }
+        (hi, lo)
+    };
     let mut corral = [0usize; 9];
-    let mut cp = [[0.0; D]; 9]; // corral points, relative
+    let mut cp = [[0.0; D]; 9]; // corral points, relative (high parts)
+    let mut cl = [[0.0; D]; 9]; // their low parts (accurate variant)
     let mut weights = [0.0; 9];
-    let mut len = 1;
-    corral[0] = first.1;
-    cp[0] = rel(first.1);
-    weights[0] = 1.0;
-    let mut x = cp[0];
+    let mut len = 0;
+    let mut x = [0.0; D];
+    if ACCURATE && (2..=D + 1).contains(&start.len()) {
+        for (slot, &i) in start.iter().enumerate() {
+            corral[slot] = i;
+            (cp[slot], cl[slot]) = rel(i);
+        }
+        if let Some((alpha, at)) = affine_minimiser_accurate(&cp[..start.len()], &cl[..start.len()])
+            && alpha[..start.len()].iter().all(|&a| a > 0.0)
+        {
+            len = start.len();
+            weights = alpha;
+            x = at;
+        }
+    }
+    if len == 0 {
+        len = 1;
+        corral[0] = first.1;
+        (cp[0], cl[0]) = rel(first.1);
+        weights[0] = 1.0;
+        x = cp[0];
+    }
+    let tolerance = if ACCURATE { TOL_ACCURATE } else { TOL };
 
     for _ in 0..100 * (count + D + 1) {
         let xx = dot(&x, &x);
@@ -75,25 +165,61 @@ pub(crate) fn min_norm_point<const D: usize>(
             break;
         }
         let (j, xpj) = (0..count)
-            .map(|j| (j, dot(&x, &rel(j))))
+            .map(|j| {
+                let (hi, lo) = rel(j);
+                (
+                    j,
+                    if ACCURATE {
+                        dot(&x, &hi) + dot(&x, &lo)
+                    } else {
+                        dot(&x, &hi)
+                    },
+                )
+            })
             .min_by(|a, b| a.1.total_cmp(&b.1))
             .expect("count > 0");
-        if xx - xpj <= TOL * largest * xx.sqrt() || corral[..len].contains(&j) || len > D {
+        if xx - xpj <= tolerance * largest * xx.sqrt() || corral[..len].contains(&j) || len > D {
             break;
         }
+        let before = x;
         corral[len] = j;
-        cp[len] = rel(j);
+        (cp[len], cl[len]) = rel(j);
         weights[len] = 0.0;
         len += 1;
+        let mut entering = true;
         loop {
-            let Some(alpha) = affine_minimiser(&cp[..len]) else {
-                // Numerically dependent corral: keep the last good point.
-                len -= 1;
-                return finish(query, x, corral, len);
+            let minimiser = if ACCURATE {
+                affine_minimiser_accurate(&cp[..len], &cl[..len])
+            } else {
+                affine_minimiser(&cp[..len]).map(|alpha| (alpha, [0.0; D]))
             };
+            let Some((alpha, at)) = minimiser else {
+                len -= 1;
+                if ACCURATE
+                    && entering
+                    && let Some((slot, alpha, at)) = swap(&cp[..=len], &cl[..=len], xx)
+                {
+                    // The entering point takes the place of one it nearly coincides with (a
+                    // cluster): stopping here would leave the distance off by up to the
+                    // cluster's spread.
+                    corral[slot] = corral[len];
+                    cp[slot] = cp[len];
+                    cl[slot] = cl[len];
+                    weights = alpha;
+                    x = at;
+                    break;
+                }
+                // Numerically dependent corral: keep the last good point.
+                return finish(query, x, corral, len, unit);
+            };
+            entering = false;
             if alpha[..len].iter().all(|&a| a > 0.0) {
                 weights = alpha;
-                x = combination(&cp[..len], &weights);
+                x = if ACCURATE {
+                    at
+                } else {
+                    combination(&cp[..len], &weights)
+                };
                 break;
             }
             // Walk from the weights toward alpha until the first one reaches zero.
@@ -118,6 +244,7 @@ pub(crate) fn min_norm_point<const D: usize>(
                 if weights[i] > 0.0 {
                     corral[kept] = corral[i];
                     cp[kept] = cp[i];
+                    cl[kept] = cl[i];
                     weights[kept] = weights[i];
                     kept += 1;
                 }
@@ -125,13 +252,26 @@ pub(crate) fn min_norm_point<const D: usize>(
             len = kept;
             let total: f64 = weights[..len].iter().sum();
             weights[..len].iter_mut().for_each(|w| *w /= total);
-            x = combination(&cp[..len], &weights);
+            x = if ACCURATE {
+                affine_point(
+                    &cp[..len],
+                    &cl[..len],
+                    &weights[1..len],
+                    &[0.0; 8][..len - 1],
+                )
+            } else {
+                combination(&cp[..len], &weights)
+            };
             if len == 1 {
                 break;
             }
         }
+        if x == before {
+            // The new point was dropped at once: the next major cycle would pick it again.
+            break;
+        }
     }
-    finish(query, x, corral, len)
+    finish(query, x, corral, len, unit)
 }
 
 fn finish<const D: usize>(
@@ -139,13 +279,176 @@ fn finish<const D: usize>(
     x: [f64; D],
     support: [usize; 9],
     len: usize,
+    unit: f64,
 ) -> Nearest<D> {
+    let offset = x.map(|c| c * unit);
     Nearest {
-        point: std::array::from_fn(|c| x[c] + query[c]),
-        distance: dot(&x, &x).sqrt(),
+        point: std::array::from_fn(|c| offset[c] + query[c]),
+        offset,
+        distance: dot(&x, &x).sqrt() * unit,
         support,
         support_len: len,
     }
+}
+
+/// The largest power of two not above `x` (1 for zero or non-finite `x`), built in two halves so
+/// that neither factor overflows.
+fn power_of_two_below(x: f64) -> f64 {
+    if !(x.is_finite() && x > 0.0) {
+        return 1.0;
+    }
+    let e = x.log2().floor() as i32;
+    let p = 2f64.powi(e / 2) * 2f64.powi(e - e / 2);
+    // log2 may round across a power of two.
+    if p > x {
+        p / 2.0
+    } else if 2.0 * p <= x {
+        2.0 * p
+    } else {
+        p
+    }
+}
+
+/// `a + b = s + e` exactly (Knuth's TwoSum).
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+/// `c_0 + Σ_{i≥1} μ_i·(c_i − c_0)` for the points `c_i = hi_i + lo_i` and the weights
+/// `μ_i = mu_hi_i + mu_lo_i`, with the edges split exactly and the sum compensated
+/// (double-double): accurate to a few ulps of the result plus about 1e−31 of the points' size,
+/// however much the sum cancels. Any `μ` gives a point of the affine hull, so the first weight is
+/// implicit.
+fn affine_point<const D: usize>(
+    hi: &[[f64; D]],
+    lo: &[[f64; D]],
+    mu_hi: &[f64],
+    mu_lo: &[f64],
+) -> [f64; D] {
+    std::array::from_fn(|c| {
+        let (mut s, mut t) = (hi[0][c], lo[0][c]);
+        for (((h, l), &m), &m_lo) in hi[1..].iter().zip(&lo[1..]).zip(mu_hi).zip(mu_lo) {
+            let (e, e_lo) = two_sum(h[c], -hi[0][c]);
+            let e_lo = e_lo + (l[c] - lo[0][c]);
+            let p = m * e;
+            let p_lo = m.mul_add(e, -p) + (m * e_lo + m_lo * e);
+            let (sum, err) = two_sum(s, p);
+            s = sum;
+            t += err + p_lo;
+        }
+        s + t
+    })
+}
+
+/// Accurate variant of [`affine_minimiser`]: the weights and the point of the affine hull of the
+/// points `hi + lo` nearest the origin, or `None` if the points are numerically dependent.
+///
+/// A least-squares problem `min |c_0 + E·β|` over the edges `E = (c_i − c_0)`, solved with a QR
+/// factorisation of `E` (Gram–Schmidt twice) rather than the normal equations, whose condition
+/// is the square of E's: a corral holding two points of a tight cluster (edges 1e−12 of the
+/// others) is then still solvable. It is refined against the residual computed by
+/// [`affine_point`] (iterative refinement with an extended-precision residual) until the
+/// correction stops mattering, the weights kept as unevaluated sums of two doubles — a
+/// correction below half an ulp of a weight still moves the point by up to an ulp of the
+/// points' size, far more than the distance near the boundary.
+fn affine_minimiser_accurate<const D: usize>(
+    hi: &[[f64; D]],
+    lo: &[[f64; D]],
+) -> Option<([f64; 9], [f64; D])> {
+    let k = hi.len() - 1;
+    let mut q = [[0.0; D]; 8];
+    let mut r = [[0.0; 8]; 8];
+    let mut lengths = [0.0; 8];
+    for i in 0..k {
+        let edge: [f64; D] = std::array::from_fn(|c| hi[i + 1][c] - hi[0][c]);
+        lengths[i] = dot(&edge, &edge).sqrt();
+    }
+    let longest = lengths[..k].iter().fold(0.0f64, |m, &l| m.max(l));
+    for i in 0..k {
+        let mut v: [f64; D] = std::array::from_fn(|c| hi[i + 1][c] - hi[0][c]);
+        for _ in 0..2 {
+            for j in 0..i {
+                let c = dot(&q[j], &v);
+                r[j][i] += c;
+                for (vc, qc) in v.iter_mut().zip(&q[j]) {
+                    *vc -= c * qc;
+                }
+            }
+        }
+        let norm = dot(&v, &v).sqrt();
+        if !(norm > SINGULAR_QR * longest) {
+            return None;
+        }
+        r[i][i] = norm;
+        q[i] = v.map(|x| x / norm);
+    }
+    let (mut beta, mut beta_lo) = ([0.0; 8], [0.0; 8]);
+    let mut x = affine_point(hi, lo, &beta[..k], &beta_lo[..k]);
+    let mut previous = f64::INFINITY;
+    for _ in 0..12 {
+        // δ minimising |x + E·δ|: R·δ = −Qᵀx.
+        let mut delta = [0.0; 8];
+        for i in (0..k).rev() {
+            let tail: f64 = (i + 1..k).map(|j| r[i][j] * delta[j]).sum();
+            delta[i] = (-dot(&q[i], &x) - tail) / r[i][i];
+        }
+        let moved: f64 = (0..k).map(|i| delta[i].abs() * lengths[i]).sum();
+        if !(moved < previous) {
+            break; // no longer converging: keep the best point so far
+        }
+        previous = moved;
+        for i in 0..k {
+            (beta[i], beta_lo[i]) = two_sum(beta[i], beta_lo[i] + delta[i]);
+        }
+        x = affine_point(hi, lo, &beta[..k], &beta_lo[..k]);
+        if moved <= 1e-32 * longest {
+            break; // below the residual's own accuracy
+        }
+    }
+    // The first weight, 1 − Σβ, compensated too: its sign decides whether the query is past the
+    // face opposite the first point, which near the boundary is a matter of the last bits.
+    let mut alpha = [0.0; 9];
+    let (mut first, mut first_lo) = (1.0, 0.0);
+    for i in 0..k {
+        let (s, e) = two_sum(first, -beta[i]);
+        first = s;
+        first_lo += e - beta_lo[i];
+        alpha[i + 1] = beta[i] + beta_lo[i];
+    }
+    alpha[0] = first + first_lo;
+    Some((alpha, x))
+}
+
+/// For a corral whose last point (the entering one) is numerically in the affine hull of the
+/// others: the best corral with the entering point in place of one of the others — the slot, the
+/// weights and the point — among those whose affine minimiser lies strictly inside and is nearer
+/// than `bound` (squared), if any. Strict improvement is what keeps Wolfe's iteration from
+/// cycling.
+fn swap<const D: usize>(
+    hi: &[[f64; D]],
+    lo: &[[f64; D]],
+    bound: f64,
+) -> Option<(usize, [f64; 9], [f64; D])> {
+    let last = hi.len() - 1;
+    let mut best: Option<(usize, [f64; 9], [f64; D], f64)> = None;
+    for slot in 0..last {
+        let (mut h, mut l) = ([[0.0; D]; 9], [[0.0; D]; 9]);
+        h[..last].copy_from_slice(&hi[..last]);
+        l[..last].copy_from_slice(&lo[..last]);
+        h[slot] = hi[last];
+        l[slot] = lo[last];
+        if let Some((alpha, at)) = affine_minimiser_accurate(&h[..last], &l[..last])
+            && alpha[..last].iter().all(|&a| a > 0.0)
+        {
+            let squared = dot(&at, &at);
+            if squared < bound && best.is_none_or(|(_, _, _, b)| squared < b) {
+                best = Some((slot, alpha, at, squared));
+            }
+        }
+    }
+    best.map(|(slot, alpha, at, _)| (slot, alpha, at))
 }
 
 fn combination<const D: usize>(points: &[[f64; D]], weights: &[f64; 9]) -> [f64; D] {
@@ -234,19 +537,28 @@ pub(crate) fn nearest_in_simplex<const D: usize>(
     vertices: &[[f64; D]],
     query: &[f64; D],
 ) -> ([f64; D], f64) {
+    let (x, d, _) = nearest_face_in_simplex(vertices, query);
+    (x, d)
+}
+
+/// [`nearest_in_simplex`], with the face holding the nearest point (a bit mask of `vertices`).
+pub(crate) fn nearest_face_in_simplex<const D: usize>(
+    vertices: &[[f64; D]],
+    query: &[f64; D],
+) -> ([f64; D], f64, u32) {
     let count = vertices.len();
     debug_assert!((1..=D.max(1) + 1).contains(&count));
     let full = (1u32 << count) - 1;
     // The projection onto the whole simplex's affine hull, when it lands inside, is the answer.
-    if let Some(hit) = project_onto_face(vertices, full, query) {
-        return hit;
+    if let Some((x, d)) = project_onto_face(vertices, full, query) {
+        return (x, d, full);
     }
-    let mut best: Option<([f64; D], f64)> = None;
+    let mut best: Option<([f64; D], f64, u32)> = None;
     for mask in 1..full {
         if let Some((x, d)) = project_onto_face(vertices, mask, query)
-            && best.is_none_or(|(_, b)| d < b)
+            && best.is_none_or(|(_, b, _)| d < b)
         {
-            best = Some((x, d));
+            best = Some((x, d, mask));
         }
     }
     best.expect("single vertices always project onto themselves")

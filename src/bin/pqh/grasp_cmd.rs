@@ -22,13 +22,19 @@ input order: index, force_closure, quality, stats {points_processed, facets_crea
 A malformed grasp gets {\"index\":i,\"error\":\"...\"} and the others are still evaluated.
 
 --metric ows (the object wrench space metric, Q_OWS = max{r : -r*d in GWS for every disturbance
-d}) needs the disturbances: --mesh FILE (OBJ or STL; unit forces on a friction cone at every vertex,
-about the centre of mass, torques scaled by the mesh's characteristic length; the grasps are put in
-that torque frame, so they must not set torque_reference/torque_scale), or --disturbances FILE (one
+d}) needs the disturbances: --mesh FILE (OBJ or STL; the seed paper's Eq. 6: for every triangle, with
+n its inward unit normal and t its first edge v1 - v0 made orthogonal to n and unit, the unit forces
+n and unit(n + mu*(cos(2*pi*j/k)*t + sin(2*pi*j/k)*(n x t))), j = 0..k-1, applied at each of its
+three corners v as wrenches [e; (v - c) x e / rho] about the centre of mass c (the surface
+centroid for an open mesh), torques scaled by the characteristic length rho; exactly equal wrenches
+kept once, degenerate triangles left out; mu and k from --ows-friction/--ows-edges, else the first
+grasp's; the grasps are put in that torque frame, so they must not set
+torque_reference/torque_scale), or --disturbances FILE (one
 6-D disturbance wrench per line, comma or space separated, already in the grasps' torque units: a
 task wrench space). Methods: partial (PQHOWS, default), brute (full hull x every disturbance),
-ellipsoid (Borst et al.'s approximation; a lower bound). quality is null and force_closure false
-for a grasp that is not force closure.";
+ellipsoid (Borst et al.'s approximation; a lower bound; force_closure is decided on the grasp's own
+wrenches, and an error line replaces a value the mapped hull cannot give). quality is null and
+force_closure false for a grasp that is not force closure.";
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 pub enum MetricArg {

@@ -18,11 +18,14 @@
 //!   the surface centroid for an open mesh) and characteristic length ρ (largest distance from `c`
 //!   to a vertex), for the disturbances *and* for every grasp evaluated against them
 //!   ([`ObjectWrenchSpace::frame`] builds the grasp in that frame).
-//! * Disturbances: at every mesh vertex `p` with inward normal `n` (the direction a push goes), the
-//!   `k` edges of the friction pyramid (same construction as a contact's:
-//!   f_j = n + μ(cos θ_j t + sin θ_j (n × t))) scaled to unit length, and their wrenches
-//!   `[f ; (p − c) × f / ρ]`. Vertices without a normal (no non-degenerate triangle) are left out
-//!   and counted ([`ObjectWrenchSpace::vertices_without_normal`]).
+//! * Disturbances (the seed paper's Eq. 6, discretised; [`ObjectWrenchSpace::from_mesh`]): for
+//!   every triangle, with `n` its own unit inward normal and `t` its first edge `v1 − v0`
+//!   projected onto the plane normal to `n` and normalised, the unit forces `e` are the normal
+//!   push `n` and the `k` rim edges `unit(n + μ(cos θ_j t + sin θ_j (n × t)))`, θ_j = 2πj/k; at
+//!   each of the triangle's three corners `v` they give the wrenches `[e ; (v − c) × e / ρ]`.
+//!   Exactly equal wrenches are kept once. Degenerate triangles (no normal) are left out and
+//!   counted ([`ObjectWrenchSpace::triangles_skipped`]), as are the vertices that are a corner
+//!   of no other triangle ([`ObjectWrenchSpace::vertices_without_normal`]).
 //! * A task wrench space — any other finite set of 6-D disturbances, in the grasps' torque units —
 //!   can be given instead ([`ObjectWrenchSpace::from_disturbances`]).
 //!

@@ -1,11 +1,13 @@
 //! The disturbance set: an object's wrench space from a mesh, or a given task wrench space.
 
 use crate::grasp::ellipsoid::{CentredEllipsoid, EllipsoidError};
+use crate::grasp::vec3::{cross, normalize, sub};
 use crate::grasp::{Contact, FrictionModel, Grasp, GraspError};
 use crate::hull::{Hull, HullError};
 use crate::mesh::{CentreKind, Mesh};
 use crate::strategy::SupportIndex;
 use serde_json::{Value, json};
+use std::collections::HashSet;
 use std::fmt;
 use std::sync::OnceLock;
 
@@ -13,6 +15,10 @@ use std::sync::OnceLock;
 /// (1 + ε)^3 of the minimum ([`CentredEllipsoid::try_enclosing`]), and it contains every
 /// disturbance exactly whatever ε.
 pub const ELLIPSOID_TOLERANCE: f64 = crate::grasp::ellipsoid::DEFAULT_TOLERANCE;
+
+/// The most disturbances [`ObjectWrenchSpace::from_mesh`] reserves room for up front (2^20
+/// wrenches, 48 MiB); a larger set grows as it is built.
+const RESERVE_CAP: usize = 1 << 20;
 
 /// Where an [`ObjectWrenchSpace`] came from.
 #[derive(Clone, Debug, PartialEq)]
@@ -27,7 +33,8 @@ pub enum SpaceOrigin {
         characteristic_length: f64,
         /// Friction coefficient of the disturbance cones.
         friction: f64,
-        /// Cone edges per vertex.
+        /// Rim edges k of each triangle's disturbance cone (each corner also gets the normal
+        /// push).
         cone_edges: usize,
     },
     /// Given as explicit disturbance wrenches (a task wrench space), already in the grasps' units.
@@ -46,6 +53,7 @@ pub struct ObjectWrenchSpace {
     index: SupportIndex<6>,
     origin: SpaceOrigin,
     vertices_without_normal: usize,
+    triangles_skipped: usize,
     reduced: bool,
     ellipsoid: OnceLock<Result<CentredEllipsoid<6>, EllipsoidError>>,
 }
@@ -57,6 +65,7 @@ impl Clone for ObjectWrenchSpace {
             index: self.index.clone(),
             origin: self.origin.clone(),
             vertices_without_normal: self.vertices_without_normal,
+            triangles_skipped: self.triangles_skipped,
             reduced: self.reduced,
             ellipsoid: OnceLock::new(),
         }
@@ -66,7 +75,7 @@ impl Clone for ObjectWrenchSpace {
 /// Why an [`ObjectWrenchSpace`] could not be built or read.
 #[derive(Clone, Debug, PartialEq)]
 pub enum OwsError {
-    /// No disturbance at all (an empty set, or a mesh none of whose vertices has a normal).
+    /// No disturbance at all (an empty set, or a mesh none of whose triangles is usable).
     Empty,
     /// Disturbance `index` has a NaN or infinite coordinate.
     NonFinite {
@@ -107,8 +116,35 @@ impl From<GraspError> for OwsError {
 }
 
 impl ObjectWrenchSpace {
-    /// The object wrench space of `mesh` with `friction`'s cones (see the
-    /// [module docs](super) for the conventions).
+    /// The object wrench space of `mesh` with `friction`'s cones: the seed paper's Eq. 6,
+    /// discretised.
+    ///
+    /// For every non-degenerate triangle (corners `v0, v1, v2` as listed):
+    ///
+    /// * `n` is its unit inward normal ([`Mesh::face_normal_inward`]) — the triangle's own, never
+    ///   an average over the faces around a vertex;
+    /// * `t` is its first edge `v1 − v0` with the component along `n` removed, normalised (as a
+    ///   [`Contact`] with that tangent does it): one intrinsic orientation for the cone, shared by
+    ///   the triangle's three corners;
+    /// * the unit disturbance forces are the normal push `n` and the `k` unit rim edges
+    ///   `e_j = (n + μ(cos θ_j t + sin θ_j (n × t))) / |n + μ(cos θ_j t + sin θ_j (n × t))|`,
+    ///   θ_j = 2πj/k (the angles of [`FrictionModel`]'s edges);
+    /// * at each corner `v` of the triangle every such force `e` gives the wrench
+    ///   `[e ; (v − c) × e / ρ]`, with `c` the centre of mass and ρ the characteristic length
+    ///   ([`MassProperties`](crate::mesh::MassProperties)).
+    ///
+    /// So a mesh with `T` usable triangles gives at most `3 T (k + 1)` disturbances, in triangle
+    /// order (corner 0, 1, 2; for each corner the push, then `e_0 … e_(k−1)`). Wrenches exactly
+    /// equal to an earlier one (a corner shared by coplanar triangles gets the same push from
+    /// each, and the same rim too when their `t` agree) are kept once, at their first position.
+    /// This is a discretisation: a unit force strictly between the push and the rim, or between
+    /// two rim edges, lies on the unit sphere slightly outside the hull of these `k + 1` and is
+    /// not represented (further rings of the cap would refine it; none are built).
+    ///
+    /// Degenerate triangles (no inward normal: a repeated index or collinear corners, see the
+    /// [mesh conventions](crate::mesh)) are skipped and counted
+    /// ([`triangles_skipped`](Self::triangles_skipped)); so are vertices that are a corner of no
+    /// usable triangle ([`vertices_without_normal`](Self::vertices_without_normal)).
     ///
     /// ```
     /// use pqhull::grasp::FrictionModel;
@@ -117,52 +153,101 @@ impl ObjectWrenchSpace {
     ///
     /// let cube = Mesh::cuboid([0.5, 0.5, 0.5])?;
     /// let ows = ObjectWrenchSpace::from_mesh(&cube, FrictionModel::try_new(0.5, 4)?)?;
-    /// assert_eq!(ows.len(), 8 * 4); // 8 vertices × 4 cone edges
+    /// // Each face is two triangles whose first edges (a side, a diagonal) differ by 45°: per
+    /// // face, 4 corner pushes (the two corners on the diagonal are shared) and 2 × 3 × 4 rim
+    /// // edges (no two rims coincide at k = 4).
+    /// assert_eq!(ows.len(), 6 * (4 + 2 * 3 * 4));
     /// // Unit forces: the force part of every disturbance has length 1.
-    /// let d = ows.disturbances()[0];
-    /// assert!(((d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() - 1.0).abs() < 1e-15);
+    /// for d in ows.disturbances() {
+    ///     assert!(((d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() - 1.0).abs() < 1e-15);
+    /// }
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     ///
     /// # Errors
-    /// [`OwsError::Empty`] when no vertex has a normal; [`OwsError::DegenerateMesh`] when ρ = 0.
+    /// [`OwsError::Empty`] when no triangle is usable; [`OwsError::DegenerateMesh`] when ρ = 0.
     pub fn from_mesh(mesh: &Mesh, friction: FrictionModel) -> Result<Self, OwsError> {
         let mass = mesh.mass_properties();
         let rho = mass.characteristic_length;
         if !(rho > 0.0 && rho.is_finite()) {
             return Err(OwsError::DegenerateMesh);
         }
-        let normals = mesh.vertex_normals_inward();
-        let mut contacts = Vec::with_capacity(normals.len());
-        for (&p, n) in mesh.vertices().iter().zip(&normals) {
-            if let Some(n) = n {
-                contacts.push(Contact::try_new(p, *n, None)?);
+        let c = mass.centre_of_mass;
+        let vertices = mesh.vertices();
+        let k = friction.cone_edges();
+        // The upper bound 3T(k + 1), saturating; the reservation is capped so that a huge k
+        // cannot make it request memory the set will never need (it grows as needed past that).
+        let bound = mesh
+            .triangles()
+            .len()
+            .saturating_mul(k.saturating_add(1))
+            .saturating_mul(3);
+        let reserve = bound.min(RESERVE_CAP);
+        let mut disturbances: Vec<[f64; 6]> = Vec::with_capacity(reserve);
+        // Exact equality of wrenches, through their bit patterns (with −0 read as +0, which
+        // compares equal to it); every coordinate is finite, so no NaN is involved.
+        let mut seen: HashSet<[u64; 6]> = HashSet::with_capacity(reserve);
+        let mut used = vec![false; vertices.len()];
+        let mut triangles_skipped = 0;
+        // The unit forces of the current triangle: the push, then the k rim edges.
+        let mut forces: Vec<[f64; 3]> = Vec::with_capacity(k.saturating_add(1).min(RESERVE_CAP));
+        for (index, &triangle) in mesh.triangles().iter().enumerate() {
+            let Some(n) = mesh.face_normal_inward(index) else {
+                triangles_skipped += 1;
+                continue;
+            };
+            let [v0, v1, _] = triangle.map(|i| vertices[i as usize]);
+            // The contact does the projection of v1 − v0 onto the plane normal to n (twice
+            // Gram–Schmidt) and the normalisation, exactly as for a grasp's given tangent.
+            let cone = match Contact::try_new(v0, n, Some(sub(v1, v0))) {
+                Ok(contact) => contact,
+                // The edge is (to within 1e−6) along the computed normal: that normal is
+                // rounding noise of a needle-thin triangle, which has no usable cone either.
+                Err(GraspError::TangentParallelToNormal { .. }) => {
+                    triangles_skipped += 1;
+                    continue;
+                }
+                Err(e) => return Err(e.into()),
+            };
+            forces.clear();
+            forces.push(n);
+            // |f_j| ≥ 1 (its component along n is 1), so normalising never divides by zero.
+            forces.extend(friction.edges(&cone).filter_map(normalize));
+            for i in triangle {
+                used[i as usize] = true;
+                let r = sub(vertices[i as usize], c);
+                for &e in &forces {
+                    let tau = cross(r, e);
+                    // Divided by ρ, as `Grasp`'s wrenches are, so a grasp contact at a corner
+                    // with the same force reproduces the disturbance bit for bit.
+                    let w = [e[0], e[1], e[2], tau[0] / rho, tau[1] / rho, tau[2] / rho];
+                    if !w.iter().all(|x| x.is_finite()) {
+                        return Err(OwsError::NonFinite {
+                            index: disturbances.len(),
+                        });
+                    }
+                    if seen.insert(w.map(|x| (x + 0.0).to_bits())) {
+                        disturbances.push(w);
+                    }
+                }
             }
         }
-        let vertices_without_normal = normals.len() - contacts.len();
-        if contacts.is_empty() {
+        if disturbances.is_empty() {
             return Err(OwsError::Empty);
         }
-        // The disturbances are exactly the wrenches a grasp with a contact at every vertex would
-        // have, scaled to unit forces (every edge has length √(1 + μ²)).
-        let all = Grasp::builder(contacts, friction)
-            .torque_reference(mass.centre_of_mass)
-            .torque_scale(rho)
-            .build()?;
-        let unit = 1.0 / (1.0 + friction.friction() * friction.friction()).sqrt();
-        let disturbances: Vec<[f64; 6]> =
-            all.wrenches().iter().map(|w| w.map(|c| c * unit)).collect();
+        disturbances.shrink_to_fit();
         Ok(ObjectWrenchSpace {
             index: SupportIndex::new(&disturbances),
             disturbances,
             origin: SpaceOrigin::Mesh {
-                centre_of_mass: mass.centre_of_mass,
+                centre_of_mass: c,
                 centre_kind: mass.centre_kind,
                 characteristic_length: rho,
                 friction: friction.friction(),
-                cone_edges: friction.cone_edges(),
+                cone_edges: k,
             },
-            vertices_without_normal,
+            vertices_without_normal: used.iter().filter(|&&u| !u).count(),
+            triangles_skipped,
             reduced: false,
             ellipsoid: OnceLock::new(),
         })
@@ -187,6 +272,7 @@ impl ObjectWrenchSpace {
             disturbances,
             origin: SpaceOrigin::Given,
             vertices_without_normal: 0,
+            triangles_skipped: 0,
             reduced: false,
             ellipsoid: OnceLock::new(),
         })
@@ -217,9 +303,16 @@ impl ObjectWrenchSpace {
         &self.origin
     }
 
-    /// Mesh vertices left out because they have no normal.
+    /// Mesh vertices left out: those that are a corner of no usable (non-degenerate) triangle,
+    /// so no disturbance acts there (0 for a given task wrench space).
     pub fn vertices_without_normal(&self) -> usize {
         self.vertices_without_normal
+    }
+
+    /// Mesh triangles left out because they have no inward normal (zero area), or one that is
+    /// rounding noise (a needle whose first edge lies along it); 0 for a given task wrench space.
+    pub fn triangles_skipped(&self) -> usize {
+        self.triangles_skipped
     }
 
     /// Whether [`reduce_to_hull_vertices`](Self::reduce_to_hull_vertices) has run.
@@ -319,6 +412,7 @@ impl ObjectWrenchSpace {
             "disturbances": self.disturbances,
             "origin": origin,
             "vertices_without_normal": self.vertices_without_normal,
+            "triangles_skipped": self.triangles_skipped,
             "reduced": self.reduced,
         })
     }
@@ -394,6 +488,10 @@ impl ObjectWrenchSpace {
         };
         space.vertices_without_normal = value
             .get("vertices_without_normal")
+            .and_then(Value::as_u64)
+            .unwrap_or(0) as usize;
+        space.triangles_skipped = value
+            .get("triangles_skipped")
             .and_then(Value::as_u64)
             .unwrap_or(0) as usize;
         space.reduced = value
