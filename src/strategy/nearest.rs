@@ -378,7 +378,7 @@ fn affine_minimiser_accurate<const D: usize>(
             }
         }
         let norm = dot(&v, &v).sqrt();
-        if !(norm > SINGULAR_QR * longest) {
+        if norm.is_nan() || norm <= SINGULAR_QR * longest {
             return None;
         }
         r[i][i] = norm;
@@ -395,7 +395,7 @@ fn affine_minimiser_accurate<const D: usize>(
             delta[i] = (-dot(&q[i], &x) - tail) / r[i][i];
         }
         let moved: f64 = (0..k).map(|i| delta[i].abs() * lengths[i]).sum();
-        if !(moved < previous) {
+        if moved.is_nan() || moved >= previous {
             break; // no longer converging: keep the best point so far
         }
         previous = moved;

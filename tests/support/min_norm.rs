@@ -287,9 +287,9 @@ fn raffine_minimiser(p: &[Vec<BigInt>], s: &[usize]) -> Option<Vec<BigRational>>
         for r in 0..k {
             if r != col && !m[r][col].is_zero() {
                 let f = &m[r][col] / &m[col][col];
-                for c in col..=k {
-                    let t = &f * &m[col][c];
-                    m[r][c] -= t;
+                let pivot_row = m[col].clone();
+                for (target, source) in m[r][col..].iter_mut().zip(&pivot_row[col..]) {
+                    *target -= &f * source;
                 }
             }
         }

@@ -369,9 +369,10 @@ fn brute_force(
 /// The force-closure verdict is the grasp's own, decided on its unmapped wrenches. The map is
 /// linear and invertible, so in exact arithmetic it cannot move the origin into or out of the
 /// hull's interior; in floating point it can: a rank-5 set (two antipodal hard fingers) maps to a
-/// sliver of full rank that holds the origin within rounding, which Q1 reports as force closure
-/// with the value `f64::MIN_POSITIVE`. So the mapped set only gives the number, and only for a
-/// force-closure grasp; a mapped Q1 that is then no positive number is an error, never a value.
+/// sliver of full rank that holds the origin within rounding, which Q1 of the mapped set called
+/// force closure with the value `f64::MIN_POSITIVE`. So the mapped set only gives the number, and
+/// only for a force-closure grasp; a mapped Q1 that is then no positive number is an error, never
+/// a value.
 fn ellipsoid(wrenches: &[[f64; 6]], space: &ObjectWrenchSpace) -> Result<OwsQuality, QualityError> {
     let ellipsoid = space
         .ellipsoid()
@@ -382,8 +383,8 @@ fn ellipsoid(wrenches: &[[f64; 6]], space: &ObjectWrenchSpace) -> Result<OwsQual
     }
     let mapped: Vec<[f64; 6]> = wrenches.iter().map(|w| ellipsoid.map(w)).collect();
     let q1 = q1_of_wrenches(&mapped, Method::Partial)?;
-    // `MIN_POSITIVE` is Q1's stand-in for "strictly inside, within rounding of a facet": not a
-    // measurement.
+    // `MIN_POSITIVE` (or less) was Q1's stand-in for "strictly inside, within rounding of a
+    // facet": not a measurement, whatever Q1's force-closure band says.
     if !(q1.force_closure && q1.value > f64::MIN_POSITIVE && q1.value.is_finite()) {
         // Displayed after "no enclosing ellipsoid": the sentence continues it.
         return Err(QualityError::Ellipsoid(format!(
