@@ -73,13 +73,14 @@ pub struct DistanceResult<const D: usize> {
     /// Signed Euclidean distance from the query point to the boundary of the full hull: positive
     /// inside, negative outside, exactly zero on the boundary; the sign is decided exactly.
     ///
-    /// The magnitude is accurate to about 1e−15 of the input's size (its largest coordinate)
-    /// or 1e−12 of itself, whichever is larger, however close the query is to the boundary:
-    /// inside, within about 1e−10 of the input's size of a facet, it is that facet's exact
-    /// determinant over its exact cofactors' norm; outside, Wolfe's nearest point is computed
-    /// with an accurate residual. (A distance below the smallest subnormal `f64` — only for
-    /// inputs themselves near the subnormal range — is rounded up to it, keeping the sign.) The
-    /// outside certificate is floating point (see the type's docs).
+    /// Outside, the magnitude is accurate to 1e−12 of itself or 1e−15 of the input's size (its
+    /// largest point norm), whichever is larger, however close the query is (Wolfe's nearest point
+    /// with an accurate residual). Inside, it is the distance to the deciding facet's plane: within
+    /// about 1e−10 of the input's size, the exact determinant over the exact cofactors' norm
+    /// (a few ulps); farther in, floating point, as accurate as the facet's normal (certified to
+    /// 1e−11 relative, usually a few ulps). A distance below the smallest subnormal `f64` — only
+    /// for inputs themselves near the subnormal range — is rounded up to it, keeping the sign.
+    /// The outside certificate is floating point (see the type's docs).
     pub signed_distance: f64,
     /// The deciding facet: its plane is nearest the query point (inside) or it holds the nearest
     /// point (outside). A facet of the partial hull, and (up to the triangulation of coplanar
@@ -249,18 +250,7 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
                     .to_string()
                 },
             );
-            if hull.facet(id).outside_len() > 0 || hull.claim_beyond(id) {
-                self.expand(hull, id, None);
-                return Step::Continue;
-            }
-            if let Some(point) = self.source.beyond(hull, id) {
-                let inserted = hull.insert_beyond(id, point);
-                assert!(
-                    inserted.is_some(),
-                    "PointSource::beyond returned a point not strictly beyond the facet, or out of \
-                     the hull's coordinate range"
-                );
-                self.enqueue_created(hull);
+            if self.grow_beyond(hull, id) {
                 return Step::Continue;
             }
             // Nothing lies beyond `id`: its plane supports the full hull.
@@ -373,18 +363,7 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
         let mut on_boundary = false;
         for i in 0..self.seen.len() {
             let g = self.seen[i];
-            if hull.facet(g).outside_len() > 0 || hull.claim_beyond(g) {
-                self.expand(hull, g, None);
-                return None;
-            }
-            if let Some(point) = self.source.beyond(hull, g) {
-                let inserted = hull.insert_beyond(g, point);
-                assert!(
-                    inserted.is_some(),
-                    "PointSource::beyond returned a point not strictly beyond the facet, or out of \
-                     the hull's coordinate range"
-                );
-                self.enqueue_created(hull);
+            if self.grow_beyond(hull, g) {
                 return None;
             }
             // The query is weakly inside every facet (checked exactly by the caller).
@@ -404,6 +383,27 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
             best.0 = f64::from_bits(1);
         }
         Some(best)
+    }
+
+    /// Adds a point strictly beyond facet `id` — an input point (after
+    /// [`Hull::claim_beyond`]) or one of the source's — and queues the new facets; `false` when
+    /// nothing lies beyond it, so that its plane supports the full hull.
+    fn grow_beyond(&mut self, hull: &mut Hull<D>, id: FacetId) -> bool {
+        if hull.facet(id).outside_len() > 0 || hull.claim_beyond(id) {
+            self.expand(hull, id, None);
+            return true;
+        }
+        if let Some(point) = self.source.beyond(hull, id) {
+            let inserted = hull.insert_beyond(id, point);
+            assert!(
+                inserted.is_some(),
+                "PointSource::beyond returned a point not strictly beyond the facet, or out of \
+                 the hull's coordinate range"
+            );
+            self.enqueue_created(hull);
+            return true;
+        }
+        false
     }
 
     /// One step of the outside phase: nearest point of the partial hull, then its certificate.

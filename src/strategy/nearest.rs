@@ -12,11 +12,13 @@
 //!
 //! [`min_norm_point_accurate`] runs the same iterations with the residual `x − q` kept accurate:
 //! `p − q` and the corral's edges are split exactly into two doubles, the point of the affine
-//! hull is summed in double-double and the normal equations are refined against that residual.
-//! Its distance is then accurate relative to itself, not to the size of the point set — what a
-//! query within rounding of the hull needs (plain Wolfe only knows such a distance to about
-//! 1e−16 of the set's size, so its direction `q − x`, and every decision taken from it, are
-//! noise).
+//! hull is summed in double-double, and the least-squares problem for it (a QR factorisation
+//! instead of the normal equations, so that clustered corrals stay solvable) is refined against
+//! that residual. Its distance is then accurate relative to itself, not to the size of the point
+//! set — what a query within rounding of the hull needs (plain Wolfe only knows such a distance
+//! to about 1e−16 of the set's size, so its direction `q − x`, and every decision taken from it,
+//! are noise). A corral made numerically dependent by the entering point (a cluster) has the
+//! entering point swapped in for one of the others when that gets strictly nearer.
 
 use crate::hull::dot;
 
@@ -71,8 +73,9 @@ pub(crate) fn min_norm_point<const D: usize>(
 /// corral `start` (indices of affinely independent points, such as the support of a plain
 /// [`min_norm_point`] run) when its affine minimiser lies inside it, else from the nearest point.
 ///
-/// The distance is accurate to about 1e−15 relative to itself plus 1e−30 of the point set's size,
-/// for corrals whose edge matrix is conditioned better than about 1e8.
+/// The distance is accurate to about 1e−15 relative to itself plus 1e−30 of the point set's size
+/// times the corral's condition, for corrals whose edges, orthogonalised against each other, keep
+/// more than 1e−14 of the longest one's length (others count as dependent).
 ///
 /// # Panics
 /// If `count == 0` or an index of `start` is `count` or more.
