@@ -222,7 +222,7 @@ fn ows_with(
     if let Some((snapped, pyramids, delta)) = set.snapped {
         // The search on the snapped wrenches, its answer certified on the raw ones.
         let found = search(snapped, Some(pyramids), space, method, buffers);
-        if let Some((quality, _)) = found
+        if let Some(quality) = found
             && let Some(hull) = buffers.hull.as_ref()
             && let Some(value) = certify_ows(hull, raw, delta, scale, space, &mut buffers.bracket)
         {
@@ -239,7 +239,7 @@ fn ows_with(
         return Ok(not_force_closure(q1.stats));
     }
     match search(raw, None, space, method, buffers) {
-        Some((quality, _)) => Ok(quality),
+        Some(quality) => Ok(quality),
         // The exact engine says the origin is not strictly inside, which Q1 contradicts only
         // within rounding of the band: no value to give.
         None => Ok(not_force_closure(q1.stats)),
@@ -247,14 +247,14 @@ fn ows_with(
 }
 
 /// Q_OWS of the wrench set `w` by `method` (partial or brute force), with the hull left in
-/// `buffers.hull`: the quality and the deciding facet when the origin is strictly inside.
+/// `buffers.hull`: the quality when the origin is strictly inside.
 fn search(
     w: &[[f64; 6]],
     pyramids: Option<&[u32]>,
     space: &ObjectWrenchSpace,
     method: OwsMethod,
     buffers: &mut OwsBuffers,
-) -> Option<(OwsQuality, Option<crate::FacetId>)> {
+) -> Option<OwsQuality> {
     let result = match method {
         OwsMethod::Partial => {
             let parked = std::mem::take(&mut buffers.inflation);
@@ -272,7 +272,7 @@ fn search(
         OwsMethod::BruteForce => brute_force(w, pyramids, space, &mut buffers.hull),
         OwsMethod::Ellipsoid => unreachable!("the ellipsoid method builds no exact hull"),
     };
-    result.filter(|(q, _)| q.force_closure)
+    result.filter(|q| q.force_closure)
 }
 
 /// Q_OWS of the raw wrenches from `hull`, the snapped wrenches' hull holding the origin strictly
@@ -304,17 +304,14 @@ fn partial<S: crate::Strategy<6, Output = crate::strategy::OwsResult<6>>>(
     pyramids: Option<&[u32]>,
     strategy: S,
     hull: &mut Option<Hull<6>>,
-) -> Option<(OwsQuality, Option<crate::FacetId>)> {
+) -> Option<OwsQuality> {
     match HullBuffers::build(hull, wrenches, pyramids, strategy) {
-        Ok((_, result)) => Some((
-            OwsQuality {
-                force_closure: result.is_force_closure(),
-                value: result.value,
-                deciding_disturbance: result.deciding_disturbance,
-                stats: result.stats,
-            },
-            result.deciding_facet,
-        )),
+        Ok((_, result)) => Some(OwsQuality {
+            force_closure: result.is_force_closure(),
+            value: result.value,
+            deciding_disturbance: result.deciding_disturbance,
+            stats: result.stats,
+        }),
         // Wrenches spanning fewer than six dimensions cannot hold the origin in their interior.
         Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => None,
         Err(e) => unreachable!("finite wrenches of a grasp: {e}"),
@@ -326,7 +323,7 @@ fn brute_force(
     pyramids: Option<&[u32]>,
     space: &ObjectWrenchSpace,
     hull: &mut Option<Hull<6>>,
-) -> Option<(OwsQuality, Option<crate::FacetId>)> {
+) -> Option<OwsQuality> {
     let hull = match HullBuffers::build(hull, wrenches, pyramids, crate::FarthestPoint::new()) {
         Ok((hull, ())) => hull,
         Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => return None,
@@ -338,29 +335,26 @@ fn brute_force(
         .facets()
         .any(|(id, _)| hull.side_of(id, &origin) != Sign::Negative)
     {
-        return Some((not_force_closure(stats), None));
+        return Some(not_force_closure(stats));
     }
     // eq. 8–9: each disturbance's ray leaves through the facet with the smallest factor.
-    let mut best: Option<(f64, usize, crate::FacetId)> = None;
+    let mut best: Option<(f64, usize)> = None;
     for (i, d) in space.disturbances().iter().enumerate() {
         let u = d.map(|c| -c);
-        for (id, facet) in hull.facets() {
+        for (_, facet) in hull.facets() {
             if let Some(r) = inflation_factor(&facet.normal(), facet.offset(), &u)
-                && best.is_none_or(|(b, _, _)| r < b)
+                && best.is_none_or(|(b, _)| r < b)
             {
-                best = Some((r, i, id));
+                best = Some((r, i));
             }
         }
     }
-    Some((
-        OwsQuality {
-            force_closure: true,
-            value: Some(best.map_or(f64::INFINITY, |(r, _, _)| r)),
-            deciding_disturbance: best.map(|(_, i, _)| i),
-            stats,
-        },
-        best.map(|(_, _, id)| id),
-    ))
+    Some(OwsQuality {
+        force_closure: true,
+        value: Some(best.map_or(f64::INFINITY, |(r, _)| r)),
+        deciding_disturbance: best.map(|(_, i)| i),
+        stats,
+    })
 }
 
 /// Borst et al.'s approximation: Q1 of the wrenches mapped so that the disturbances' ellipsoid
