@@ -554,3 +554,64 @@ fn bench_gws_tables_and_switches() {
     let out = pqh(&[&args[..], &["--threads", "1,0"]].concat(), None);
     assert!(one_line_error(&out, 2).contains("--threads"));
 }
+
+/// Every float of a grasp is read as Rust's own parser reads it (serde_json's default parser
+/// misreads about one 17-digit float in twelve by an ulp), so the quality `pqh grasp` prints is the
+/// library's on the very numbers written, bit for bit.
+#[test]
+fn grasp_floats_are_read_exactly() {
+    use pqhull::grasp::quality::{Evaluator, Method, Metric};
+    use pqhull::grasp::{Contact, FrictionModel, Grasp};
+    use pqhull::rbox::Rng;
+    let mut rng = Rng::new(0x5eed);
+    let mut lines = String::new();
+    let mut expected = Vec::new();
+    let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial);
+    for _ in 0..12 {
+        let mut contacts = Vec::new();
+        let mut written = Vec::new();
+        while contacts.len() < 4 {
+            let p: [f64; 3] = std::array::from_fn(|_| rng.uniform_in(-0.3, 0.3));
+            let n: [f64; 3] = std::array::from_fn(|_| rng.uniform_in(-1.0, 1.0));
+            let length = n.iter().map(|x| x * x).sum::<f64>().sqrt();
+            let n = n.map(|x| x / length);
+            if let Ok(c) = Contact::try_new(p, n, None) {
+                contacts.push(c);
+                written.push(format!("{{\"position\":{p:?},\"normal\":{n:?}}}"));
+            }
+        }
+        let mu = rng.uniform_in(0.3, 0.9);
+        let c: [f64; 3] = std::array::from_fn(|_| rng.uniform_in(-0.1, 0.1));
+        let rho = rng.uniform_in(0.2, 1.0);
+        let friction = FrictionModel::try_new(mu, 8).unwrap();
+        let grasp = Grasp::builder(contacts, friction)
+            .torque_reference(c)
+            .torque_scale(rho)
+            .build()
+            .unwrap();
+        expected.push(evaluator.evaluate(&grasp).unwrap().value);
+        lines.push_str(&format!(
+            "{{\"contacts\":[{}],\"friction\":{mu:?},\"cone_edges\":8,\"torque_reference\":{c:?},\
+             \"torque_scale\":{rho:?}}}\n",
+            written.join(",")
+        ));
+    }
+    let out = pqh(&["grasp", "-"], Some(&lines));
+    assert!(out.status.success(), "{}", stderr(&out));
+    let got: Vec<f64> = stdout(&out)
+        .lines()
+        .map(|l| {
+            serde_json::from_str::<Value>(l).unwrap()["quality"]
+                .as_f64()
+                .unwrap()
+        })
+        .collect();
+    assert_eq!(got.len(), expected.len());
+    for (i, (g, e)) in got.iter().zip(&expected).enumerate() {
+        assert_eq!(
+            g.to_bits(),
+            e.to_bits(),
+            "grasp {i}: pqh {g:e}, library {e:e}"
+        );
+    }
+}

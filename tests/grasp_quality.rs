@@ -286,16 +286,36 @@ fn q_inf_of_a_flat_sum_too_large_to_materialise() {
     assert!(!q.force_closure);
     // The two cones' sum contains the origin's neighbourhood within the flat: distance 0.
     assert!(q.value.abs() < 1e-9, "{}", q.value);
-    // The full method refuses to materialise it.
-    let full = Evaluator::new(
-        Metric::QInf {
-            with_zero_wrench: false,
-        },
-        Method::Full,
+    // The full method answers it from the slab test too (before materialising anything), and
+    // still refuses to materialise a sum that size which is not flat.
+    let full = |grasp: &Grasp| {
+        Evaluator::new(
+            Metric::QInf {
+                with_zero_wrench: false,
+            },
+            Method::Full,
+        )
+        .evaluate(grasp)
+    };
+    let flat = full(&pinch).unwrap();
+    assert!(!flat.force_closure);
+    assert!(
+        (flat.value - q.value).abs() < 1e-9,
+        "{} vs {}",
+        flat.value,
+        q.value
+    );
+    let tilted = Grasp::try_new(
+        vec![
+            Contact::try_new([-1.0, 0.0, 0.0], [1.0, 0.0, 0.0], None).unwrap(),
+            Contact::try_new([1.0, 0.3, 0.0], [-1.0, 0.0, 0.0], None).unwrap(),
+            Contact::try_new([0.0, 1.0, 0.2], [0.0, -1.0, 0.0], None).unwrap(),
+        ],
+        FrictionModel::try_new(0.5, 1100).unwrap(),
     )
-    .evaluate(&pinch);
+    .unwrap();
     assert!(matches!(
-        full,
+        full(&tilted),
         Err(pqhull::grasp::quality::QualityError::MinkowskiTooLarge { .. })
     ));
 }

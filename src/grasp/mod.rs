@@ -60,6 +60,7 @@ mod certify;
 mod contact;
 pub mod ellipsoid;
 mod error;
+mod flatness;
 mod friction;
 pub mod ows;
 pub mod quality;

@@ -54,8 +54,9 @@
 
 use super::Grasp;
 use super::certify::{Bracket, BracketScratch, RawSide, UnitBall, bracket, support_with_error};
+use super::flatness::{FLAT, Flatness};
 use super::snap::{SnappedCones, pyramid_labels, snapped_union};
-use crate::strategy::nearest::{min_norm_point, nearest_in_simplex};
+use crate::strategy::nearest::{min_norm_point, min_norm_point_accurate, nearest_in_simplex};
 use crate::strategy::{ClosestToOrigin, Stats};
 use crate::{Hull, HullError};
 pub(crate) use separation::Gjk;
@@ -248,6 +249,7 @@ pub(crate) struct HullBuffers {
     nearest: ClosestToOrigin<6>,
     gjk: Gjk,
     pub(crate) bracket: BracketScratch,
+    pub(crate) flatness: Flatness,
 }
 
 impl HullBuffers {
@@ -481,9 +483,20 @@ fn no_hull_stats(points: usize, started: Instant) -> Stats {
 
 /// −(distance from the origin to CH(w)) for a set too degenerate for a hull: never force closure.
 fn degenerate(w: &[[f64; 6]], started: Instant) -> Quality {
-    let nearest = min_norm_point(w.len(), |i| w[i], &[0.0; 6]);
+    // The plain run's corral starts the accurate one: its residual in double-double keeps the
+    // distance of an origin within rounding of the set (a flat set) to about 1e−30 of its size.
+    let rough = min_norm_point(w.len(), |i| w[i], &[0.0; 6]);
+    let nearest = min_norm_point_accurate(w.len(), |i| w[i], &[0.0; 6], rough.support());
     let support = nearest.support().iter().map(|&i| w[i]);
     Quality::new(-nearest.distance, support, no_hull_stats(w.len(), started))
+}
+
+/// Q1 of `w` when it lies within [`FLAT`] of its scale of a hyperplane through the origin (see
+/// [`flatness`](super::flatness)): −(its distance from the origin) by Wolfe's algorithm over the
+/// points, within that slab's half-width of the exact value, and never force closure.
+fn flat_q1(w: &[[f64; 6]], started: Instant, flatness: &mut Flatness) -> Option<Quality> {
+    let tau = flatness.slab(w.iter().copied());
+    (tau <= FLAT * largest_norm(w)).then(|| degenerate(w, started))
 }
 
 /// When GJK certifies that the origin lies outside the hull of `w` (so the grasp is not force
@@ -516,6 +529,9 @@ impl Explicit<'_> {
             let stats = no_hull_stats(1 + inserted, started);
             return Quality::new(-distance, buffers.gjk.face().iter().copied(), stats);
         }
+        if let Some(quality) = flat_q1(self.raw, started, &mut buffers.flatness) {
+            return quality;
+        }
         let HullBuffers {
             hull,
             nearest,
@@ -534,6 +550,9 @@ impl Explicit<'_> {
     /// Q1 from the full hull of the snapped wrenches, certified on the raw ones when it holds
     /// the origin; otherwise GJK on the raw wrenches, then the full hull of the raw wrenches.
     fn full(&self, started: Instant, buffers: &mut HullBuffers) -> Quality {
+        if let Some(quality) = flat_q1(self.raw, started, &mut buffers.flatness) {
+            return quality;
+        }
         let strategy = crate::FarthestPoint::new();
         if let Ok((h, ())) =
             HullBuffers::build(&mut buffers.hull, self.snapped, self.pyramids, strategy)
@@ -580,6 +599,9 @@ fn partial_q1(
     if let Some((distance, inserted)) = certified_outside(w, &mut buffers.gjk) {
         let stats = no_hull_stats(1 + inserted, started);
         return Quality::new(-distance, buffers.gjk.face().iter().copied(), stats);
+    }
+    if let Some(quality) = flat_q1(w, started, &mut buffers.flatness) {
+        return quality;
     }
     match HullBuffers::build(&mut buffers.hull, w, pyramids, &mut buffers.nearest) {
         Ok((_, result)) => Quality::new(

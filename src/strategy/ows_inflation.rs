@@ -36,8 +36,9 @@ use std::collections::BinaryHeap;
 ///    Otherwise expand the facet and move the disturbances of the removed facets to the new facets
 ///    (the only facets their rays can now leave through).
 ///
-/// Inflation factors are floating point (the quotient of a precise normal's dot product and
-/// offset); every combinatorial decision is exact.
+/// Facets are ordered by lower bounds of their floating-point inflation factors, and the answer
+/// is the factor of the exact plane of the facet that stops the search: a few ulps however close
+/// the origin is to that plane. Every combinatorial decision is exact.
 ///
 /// # Two bookkeepings, one answer
 ///
@@ -92,8 +93,65 @@ pub struct OwsInflation<'a, const D: usize> {
     answer: Option<(f64, FacetId, usize)>,
 }
 
-/// The `data` of a queue entry keyed by a lower bound only (see `key_by_support`).
-const UNKEYED: u32 = u32::MAX;
+/// How a queue entry is keyed. Every key is at most the facet's exact key (the smallest factor
+/// of any disturbance against its exact plane), and only an [`Key::Exact`] entry on top is
+/// taken as the answer: the answer is then at most every other facet's key, and it is computed
+/// from the exact plane — a few ulps even when the origin is within rounding of the plane's
+/// floating-point offset (a grasp near the force-closure boundary), where the floating-point
+/// factor keeps no correct digit.
+#[derive(Clone, Copy, Debug)]
+enum Key {
+    /// A lower bound from the top of the ball tree only (see `key_by_support`).
+    Unkeyed,
+    /// A lower bound from the floating-point plane (see [`factor_lower_bound`]), with the
+    /// disturbance that attains the floating-point key.
+    Bound(u32),
+    /// The key from the exact plane (see [`exact_factor`]), with its disturbance.
+    Exact(u32),
+}
+
+/// How far a precise facet's floating-point unit normal may be from the exact one (the
+/// certificate of [`Facet::normal_is_precise`](crate::hull::Facet::normal_is_precise) is 1e−11;
+/// twice that covers the rounding of the dot products as well).
+const PLANE_TOLERANCE: f64 = 2e-11;
+
+/// A lower bound on the exact inflation factor `offset / rate` of a ray of norm at most
+/// `ray_norm` against a precise facet of `hull`, from the facet's floating-point `offset` and
+/// `rate` (the ray's dot product with the floating-point normal, or an upper bound on it):
+/// `None` when even the exact rate may not be positive (no factor).
+///
+/// The exact offset is within `PLANE_TOLERANCE·|v0|` of the floating-point one (`v0` the base
+/// vertex, `|v0| ≤ √D·` the coordinate bound) and the exact rate within
+/// `PLANE_TOLERANCE·ray_norm` of the computed one.
+pub(crate) fn factor_lower_bound<const D: usize>(
+    hull: &Hull<D>,
+    offset: f64,
+    rate: f64,
+    ray_norm: f64,
+) -> Option<f64> {
+    let offset_error = PLANE_TOLERANCE * (D as f64).sqrt() * hull.coordinate_bound();
+    let rate = rate + PLANE_TOLERANCE * ray_norm;
+    // The last factor covers the rounding of the subtraction and the division.
+    (rate > 0.0).then(|| (offset - offset_error).max(0.0) / rate * (1.0 - 1e-15))
+}
+
+/// The exact key of facet `id`: the origin's exact distance inside its plane (a few ulps, see
+/// [`Hull::exact_signed_distance`]) over `support(−n)`, the largest rate of any disturbance
+/// against the exact plane's unit normal `n`, with that disturbance; `None` when no disturbance
+/// reaches the plane.
+pub(crate) fn exact_factor<const D: usize>(
+    hull: &Hull<D>,
+    id: FacetId,
+    support: impl FnOnce(&[f64; D]) -> Option<(f64, usize)>,
+) -> Option<(f64, usize)> {
+    let toward = hull.exact_normal(id).map(|c| -c);
+    let origin = [0.0; D];
+    let offset = -hull
+        .exact_signed_distance(id, &origin)
+        .unwrap_or_else(|| hull.signed_distance(id, &origin));
+    let (h, disturbance) = support(&toward)?;
+    (h > 0.0).then(|| (offset.max(0.0) / h, disturbance))
+}
 
 /// Depth of the ball-tree nodes whose bounds give a facet's first, lower-bound key (at most 4
 /// node bounds instead of a full support query).
@@ -231,17 +289,18 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
             let facet = hull.facet(id);
             let toward = facet.normal().map(|c| -c);
             let upper = index.upper_bound(&toward, BOUND_DEPTH);
-            if upper > 0.0 {
-                // Division rounds monotonically: offset / h⁺ ≤ offset / h for h⁺ ≥ h > 0.
-                let factor = facet.offset().max(0.0) / upper;
+            // h⁺ ≥ h: a lower bound of a lower bound. None: no disturbance reaches this plane.
+            if let Some(factor) =
+                factor_lower_bound(hull, facet.offset(), upper, index.norm_bound())
+            {
                 self.queue
-                    .push(Entry::factored(factor, id, facet.serial(), UNKEYED));
+                    .push(Entry::factored(factor, id, facet.serial(), Key::Unkeyed));
             }
-            // upper ≤ 0: no disturbance reaches this plane (h ≤ h⁺ ≤ 0), as for an exact key.
         }
     }
 
-    /// Queues facet `id` (current, normal refined) by its exact key.
+    /// Queues facet `id` (current, normal refined) by a lower bound of its key from the full
+    /// support query on its floating-point plane.
     fn key_exactly(&mut self, hull: &Hull<D>, index: &SupportIndex<D>, id: FacetId) {
         let facet = hull.facet(id);
         let toward = facet.normal().map(|c| -c);
@@ -250,15 +309,29 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
         let support = index.support_near(&toward, self.hint);
         self.hint = support.map(|(_, at)| at);
         if let Some((h, disturbance)) = support
-            && h > 0.0
+            && let Some(factor) = factor_lower_bound(hull, facet.offset(), h, index.norm_bound())
         {
             self.queue.push(Entry::factored(
-                facet.offset().max(0.0) / h,
+                factor,
                 id,
                 facet.serial(),
-                disturbance as u32,
+                Key::Bound(disturbance as u32),
             ));
         }
+    }
+
+    /// Facet `id`'s key from its exact plane, against every disturbance.
+    fn exact_key(&self, hull: &Hull<D>, id: FacetId) -> Option<(f64, u32)> {
+        let found = match self.disturbances {
+            Disturbances::Support(index) => exact_factor(hull, id, |v| index.support(v)),
+            Disturbances::Rays(d) => exact_factor(hull, id, |v| {
+                d.iter()
+                    .enumerate()
+                    .map(|(i, d)| (dot(v, d), i))
+                    .max_by(|a, b| a.0.total_cmp(&b.0))
+            }),
+        };
+        found.map(|(factor, d)| (factor, d as u32))
     }
 
     /// Sets up the inflation phase over the live facets.
@@ -367,12 +440,18 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
         let best = self.assigned[slot]
             .iter()
             .filter_map(|&i| {
-                inflation_factor(&facet.normal(), facet.offset(), &self.ray(i)).map(|r| (r, i))
+                let u = self.ray(i);
+                let rate = dot(&facet.normal(), &u);
+                factor_lower_bound(hull, facet.offset(), rate, dot(&u, &u).sqrt()).map(|r| (r, i))
             })
             .min_by(|a, b| a.0.total_cmp(&b.0));
         if let Some((factor, disturbance)) = best {
-            self.queue
-                .push(Entry::factored(factor, id, facet.serial(), disturbance));
+            self.queue.push(Entry::factored(
+                factor,
+                id,
+                facet.serial(),
+                Key::Bound(disturbance),
+            ));
         }
     }
 
@@ -422,16 +501,20 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
                 continue;
             }
             let id = entry.id;
-            if entry.data == UNKEYED {
-                if let Disturbances::Support(index) = self.disturbances {
-                    self.key_exactly(hull, index, id);
+            let (disturbance, exact) = match entry.data {
+                Key::Unkeyed => {
+                    if let Disturbances::Support(index) = self.disturbances {
+                        self.key_exactly(hull, index, id);
+                    }
+                    continue;
                 }
-                continue;
-            }
+                Key::Bound(d) => (d, false),
+                Key::Exact(d) => (d, true),
+            };
             hull.trace_choice(id, Some(("inflation factor", entry.factor())), || {
                 format!(
-                    "smallest inflation factor (disturbance {} reaches this facet's plane first)",
-                    entry.data
+                    "smallest inflation factor (disturbance {disturbance} reaches this facet's \
+                     plane first)"
                 )
             });
             if hull.facet(id).outside_len() > 0 || hull.claim_beyond(id) {
@@ -439,14 +522,22 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
                 self.after_expansion(hull);
                 return Step::Continue;
             }
-            self.answer = Some((entry.factor(), id, entry.data as usize));
+            if !exact {
+                // This plane supports the full hull: its key from the exact plane goes back in
+                // the queue, to be the answer if it is still the smallest.
+                if let Some((factor, d)) = self.exact_key(hull, id) {
+                    self.queue
+                        .push(Entry::factored(factor, id, entry.serial, Key::Exact(d)));
+                }
+                continue;
+            }
+            self.answer = Some((entry.factor(), id, disturbance as usize));
             self.phase = Phase::Done;
             hull.trace_stop(Some(id), || {
                 format!(
                     "nothing lies beyond the facet with the smallest inflation factor: Q = {} \
-                     certified (disturbance {})",
+                     certified (disturbance {disturbance})",
                     entry.factor(),
-                    entry.data
                 )
             });
             return Step::Stop;
@@ -563,17 +654,17 @@ impl<const D: usize> OwsInflation<'_, D> {
     }
 }
 
-/// A queued facet keyed by minus its smallest inflation factor (so the smallest factor is on
-/// top of the max-heap), with the disturbance that attains it.
-type Entry = Queued<u32>;
+/// A queued facet keyed by minus (a lower bound of) its smallest inflation factor (so the
+/// smallest factor is on top of the max-heap), with how it was keyed.
+type Entry = Queued<Key>;
 
 impl Entry {
-    fn factored(factor: f64, id: FacetId, serial: u64, disturbance: u32) -> Entry {
+    fn factored(factor: f64, id: FacetId, serial: u64, key: Key) -> Entry {
         Queued {
             key: -factor,
             id,
             serial,
-            data: disturbance,
+            data: key,
         }
     }
 

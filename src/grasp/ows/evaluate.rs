@@ -3,14 +3,15 @@
 use super::ObjectWrenchSpace;
 use crate::grasp::Grasp;
 use crate::grasp::certify::{BracketScratch, Disturbances, RawSide, bracket, support_with_error};
+use crate::grasp::flatness::{FLAT, Flatness};
 use crate::grasp::quality::{
     FORCE_CLOSURE_EPSILON, Gjk, HullBuffers, Method, QualityError, certified_outside, find_or_make,
     largest_norm, q1_of_wrenches,
 };
 use crate::grasp::snap::{SnappedCones, pyramid_labels, snapped_union};
-use crate::hull::{Hull, HullError};
+use crate::hull::{FacetId, Hull, HullError, dot};
 use crate::predicates::Sign;
-use crate::strategy::{OwsInflation, Stats, inflation_factor};
+use crate::strategy::{OwsInflation, Stats, exact_factor, factor_lower_bound};
 use std::time::Instant;
 
 /// How Q_OWS is computed.
@@ -99,6 +100,8 @@ struct OwsBuffers {
     inflation: OwsInflation<'static, 6>,
     /// The certificate's scratch.
     bracket: BracketScratch,
+    /// The slab test's workspace.
+    flatness: Flatness,
 }
 
 impl OwsEvaluator {
@@ -215,10 +218,15 @@ fn ows_with(
     if method == OwsMethod::Partial && certified_outside(raw, &mut buffers.gjk).is_some() {
         return Ok(not_force_closure(Stats::default()));
     }
+    let scale = largest_norm(raw);
+    // Wrenches within rounding of a hyperplane through the origin: Q1 at most the slab's
+    // half-width, far below the force-closure band (see `grasp::flatness`).
+    if buffers.flatness.slab(raw.iter().copied()) <= FLAT * scale {
+        return Ok(not_force_closure(Stats::default()));
+    }
     if method == OwsMethod::Ellipsoid {
         return ellipsoid(raw, space);
     }
-    let scale = largest_norm(raw);
     if let Some((snapped, pyramids, delta)) = set.snapped {
         // The search on the snapped wrenches, its answer certified on the raw ones.
         let found = search(snapped, Some(pyramids), space, method, buffers);
@@ -337,16 +345,47 @@ fn brute_force(
     {
         return Some(not_force_closure(stats));
     }
-    // eq. 8–9: each disturbance's ray leaves through the facet with the smallest factor.
+    // eq. 8–9: each disturbance's ray leaves through the facet with the smallest factor, so the
+    // answer is the smallest factor of any disturbance against any facet. The floating-point
+    // factors only order the facets (by lower bounds); the answer is the smallest key from an
+    // exact plane, taken once no other facet's lower bound is below it.
+    let disturbances = space.disturbances();
+    let reach = disturbances
+        .iter()
+        .map(|d| dot(d, d).sqrt())
+        .fold(0.0, f64::max);
+    let largest_rate = |n: &[f64; 6]| {
+        disturbances
+            .iter()
+            .enumerate()
+            .map(|(i, d)| (-dot(n, d), i))
+            .max_by(|a, b| a.0.total_cmp(&b.0))
+    };
+    let mut bounds: Vec<(f64, FacetId)> = hull
+        .facets()
+        .filter_map(|(id, facet)| {
+            let (rate, _) = largest_rate(&facet.normal())?;
+            factor_lower_bound(hull, facet.offset(), rate, reach).map(|low| (low, id))
+        })
+        .collect();
+    bounds.sort_by(|a, b| a.0.total_cmp(&b.0));
     let mut best: Option<(f64, usize)> = None;
-    for (i, d) in space.disturbances().iter().enumerate() {
-        let u = d.map(|c| -c);
-        for (_, facet) in hull.facets() {
-            if let Some(r) = inflation_factor(&facet.normal(), facet.offset(), &u)
-                && best.is_none_or(|(b, _)| r < b)
-            {
-                best = Some((r, i));
-            }
+    for (low, id) in bounds {
+        if best.is_some_and(|(b, _)| low > b) {
+            break;
+        }
+        // `toward` is −n: the largest rate is max_d (−n)·d.
+        let exact = exact_factor(hull, id, |toward| {
+            disturbances
+                .iter()
+                .enumerate()
+                .map(|(i, d)| (dot(toward, d), i))
+                .max_by(|a, b| a.0.total_cmp(&b.0))
+        });
+        if let Some((r, i)) = exact
+            && best.is_none_or(|(b, _)| r < b)
+        {
+            best = Some((r, i));
         }
     }
     Some(OwsQuality {

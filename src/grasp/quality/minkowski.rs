@@ -3,6 +3,7 @@
 use super::separation::{GJK_ITERATIONS, Gjk, TOUCHING, Verdict};
 use super::{HullBuffers, Quality, QualityError, degenerate, full_q1, no_hull_stats};
 use crate::grasp::certify::{self, RawSide, UnitBall, support_with_error};
+use crate::grasp::flatness::{FLAT, Flatness};
 use crate::grasp::snap::SnappedCones;
 use crate::hull::dot;
 use crate::predicates::Sign;
@@ -338,6 +339,7 @@ pub(super) struct MinkowskiBuffers {
     gjk: Gjk,
     hull: Option<Hull<6>>,
     bracket: certify::BracketScratch,
+    flatness: Flatness,
 }
 
 impl Default for MinkowskiBuffers {
@@ -347,6 +349,7 @@ impl Default for MinkowskiBuffers {
             seeds: Vec::new(),
             gjk: Gjk::default(),
             hull: None,
+            flatness: Flatness::default(),
             bracket: certify::BracketScratch::default(),
         }
     }
@@ -402,12 +405,16 @@ fn seed_points(seeds: &mut Vec<[f64; 6]>, mut support: impl FnMut(&[f64; 6]) -> 
 ///    means the grasp is not force closure, and then Q∞ = 0 exactly (the origin, a point of the
 ///    sum, is on its boundary: the two hulls have the same force closure);
 /// 2. GJK on the raw sum's support function: a certified separation gives −distance;
-/// 3. the exact partial hull of the *snapped* sum, seeded with its support points along 42 fixed
+/// 3. contacts whose raw wrenches lie within a slab through the origin thin enough that the sum
+///    is within [`FLAT`] of its scale of a hyperplane ([`crate::grasp::flatness`]: two contacts,
+///    contacts on a line or at one or two points) are not force closure: −distance by GJK run to
+///    convergence, exactly 0 with the zero wrench (the origin is then a point of the flat sum);
+/// 4. the exact partial hull of the *snapped* sum, seeded with its support points along 42 fixed
 ///    directions, its answer certified on the raw sum ([`certify`]);
-/// 4. the exact partial hull of the raw sum (points summed in `f64`, within `1e−15` of the scale
+/// 5. the exact partial hull of the raw sum (points summed in `f64`, within `1e−15` of the scale
 ///    of the exact sums), when the certificate cannot decide;
-/// 5. a sum spanning fewer than six dimensions (no hull) is not force closure: its distance by
-///    GJK, or by Wolfe's algorithm over the materialised sum should GJK not converge.
+/// 6. a raw sum spanning fewer than six dimensions (no hull) is not force closure: its distance
+///    by GJK, or by Wolfe's algorithm over the materialised sum should GJK not converge.
 pub(super) fn partial(
     cones: &SnappedCones,
     with_zero_wrench: bool,
@@ -420,6 +427,7 @@ pub(super) fn partial(
         gjk,
         hull,
         bracket,
+        flatness,
     } = buffers;
     let source = nearest.source_mut();
     source.fill(cones, with_zero_wrench, false);
@@ -449,15 +457,15 @@ pub(super) fn partial(
         let face = gjk.face().iter().copied();
         return Ok(Quality::new(-distance, face, stats).banded(scale));
     }
+    if flat_contacts(&source.raw_sets, scale, flatness) {
+        let q = flat_sum(cones, with_zero_wrench, support, scale, seeds, gjk, started)?;
+        return Ok(q.banded(scale));
+    }
     seed_points(seeds, |d| {
         source.support(d).expect("a contact has cone edges")
     });
     let h = hull.get_or_insert_with(Hull::empty);
     let snapped = h.rebuild_with_strategy(seeds, &mut *nearest);
-    let flat = matches!(
-        snapped,
-        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. })
-    );
     if let Ok(result) = snapped
         && result.signed_distance > 0.0
     {
@@ -470,15 +478,6 @@ pub(super) fn partial(
     // The exact engine on the raw sum.
     let source = nearest.source_mut();
     source.fill(cones, with_zero_wrench, true);
-    if flat {
-        // The snapped sum spans fewer than six dimensions, so the raw one lies within δ of a
-        // hyperplane: whatever its rounding, Q∞ is −(its distance to the origin) to within the
-        // rounding of the wrenches (a hull of the raw sum would be all slivers).
-        seed_points(seeds, |d| sum_support(&source.raw_sets, d));
-        let support = |v: &[f64; 6]| sum_support(&source.raw_sets, v);
-        let q = flat_sum(cones, with_zero_wrench, support, scale, seeds, gjk, started)?;
-        return Ok(q.banded(scale));
-    }
     seed_points(seeds, |d| {
         source.support(d).expect("a contact has cone edges")
     });
@@ -519,6 +518,21 @@ pub(super) fn full(
         return Ok(super::qhull_q1(out, started)?.banded(scale));
     }
     let _ = method;
+    if flat_contacts(&raw_sets, scale, &mut buffers.flatness) {
+        let mut seeds = Vec::new();
+        seed_points(&mut seeds, |d| sum_support(&raw_sets, d));
+        let support = |v: &[f64; 6]| sum_support(&raw_sets, v);
+        let q = flat_sum(
+            cones,
+            with_zero_wrench,
+            support,
+            scale,
+            &seeds,
+            &mut buffers.gjk,
+            started,
+        )?;
+        return Ok(q.banded(scale));
+    }
     materialise(cones, with_zero_wrench, false, out)?;
     let per = raw_sets.first().map_or(0, Vec::len);
     let m = raw_sets.len();
@@ -534,10 +548,6 @@ pub(super) fn full(
     };
     let strategy = crate::FarthestPoint::new();
     let snapped = HullBuffers::build(&mut buffers.hull, out, None, strategy);
-    let flat = matches!(
-        snapped,
-        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. })
-    );
     if let Ok((h, ())) = snapped
         && h.facets()
             .all(|(id, _)| h.side_of(id, &[0.0; 6]) == Sign::Negative)
@@ -547,21 +557,6 @@ pub(super) fn full(
     }
     let mut seeds = Vec::new();
     seed_points(&mut seeds, |d| sum_support(&raw_sets, d));
-    if flat {
-        // As the partial method: a raw sum within δ of a hyperplane is never force closure.
-        let support = |v: &[f64; 6]| sum_support(&raw_sets, v);
-        let gjk = &mut buffers.gjk;
-        let q = flat_sum(
-            cones,
-            with_zero_wrench,
-            support,
-            scale,
-            &seeds,
-            gjk,
-            started,
-        )?;
-        return Ok(q.banded(scale));
-    }
     let support = |v: &[f64; 6]| sum_support(&raw_sets, v);
     if let Verdict::Separated { distance, inserted } =
         buffers
@@ -574,6 +569,15 @@ pub(super) fn full(
     }
     materialise(cones, with_zero_wrench, true, out)?;
     Ok(full_q1(out, None, started, buffers).banded(scale))
+}
+
+/// Whether the contacts' raw wrench sets (zero wrench or not) lie within a slab through the
+/// origin thin enough that their Minkowski sum (a slab `m` times as wide) is within [`FLAT`] of
+/// its scale of a hyperplane: never force closure, answered by [`flat_sum`] (see
+/// [`flatness`](crate::grasp::flatness)).
+fn flat_contacts(raw_sets: &[Vec<[f64; 6]>], scale: f64, flatness: &mut Flatness) -> bool {
+    let tau = flatness.slab(raw_sets.iter().flatten().copied());
+    raw_sets.len() as f64 * tau <= FLAT * scale
 }
 
 /// −(distance from the origin) of a sum spanning fewer than six dimensions, never force closure:
@@ -589,6 +593,12 @@ fn flat_sum(
     gjk: &mut Gjk,
     started: Instant,
 ) -> Result<Quality, QualityError> {
+    if with_zero_wrench {
+        // The origin is in the sum (every contact's zero wrench), which spans fewer than six
+        // dimensions: it lies on the sum's boundary, at distance exactly 0.
+        let origin = std::iter::once([0.0; 6]);
+        return Ok(Quality::new(0.0, origin, no_hull_stats(0, started)));
+    }
     match gjk.run(support, scale, seeds, 16 * GJK_ITERATIONS, 0.0) {
         Verdict::Separated { distance, inserted }
         | Verdict::Touching { distance, inserted }
