@@ -1,5 +1,5 @@
 //! The mesh module: generated shapes, winding, loading (OBJ, STL, errors), the real meshes in
-//! `../shared/meshes/`, and surface sampling.
+//! `data/meshes/`, and surface sampling.
 
 use std::error::Error as _;
 use std::f64::consts::PI;
@@ -381,13 +381,9 @@ fn invalid_arrays_are_errors_naming_the_culprit() {
     assert!(matches!(e, MeshError::ZeroArea { triangles: 1, .. }));
 }
 
-/// Loads `../shared/meshes/NAME`, or prints why not and returns `None` when the folder is absent.
+/// Loads `data/meshes/NAME` (kept in the repository: a missing file fails the test).
 fn real_mesh(name: &str) -> Option<Mesh> {
-    let dir = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/../shared/meshes"));
-    if !dir.is_dir() {
-        eprintln!("skipping: {} not found", dir.display());
-        return None;
-    }
+    let dir = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/data/meshes"));
     let m = Mesh::load(dir.join(name)).unwrap_or_else(|e| panic!("{e}"));
     let p = m.mass_properties();
     eprintln!(
@@ -404,7 +400,7 @@ fn real_mesh(name: &str) -> Option<Mesh> {
     Some(m)
 }
 
-/// The counts in `../shared/meshes/README.md`. Every OBJ vertex is used by a face and no file
+/// The counts in `data/meshes/README.md`. Every OBJ vertex is used by a face and no file
 /// has several objects, so tobj's per-object renumbering keeps every vertex.
 #[test]
 fn real_meshes_load_with_the_documented_counts() {
