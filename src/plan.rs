@@ -125,6 +125,15 @@ impl BestComparison {
             BestComparison::NothingToCompare => None,
         }
     }
+
+    /// The name `pqh` prints for it: `same`, `different` or `nothing_to_compare`.
+    pub fn name(self) -> &'static str {
+        match self {
+            BestComparison::Same => "same",
+            BestComparison::Different => "different",
+            BestComparison::NothingToCompare => "nothing_to_compare",
+        }
+    }
 }
 
 impl PlanReport {
@@ -142,14 +151,6 @@ impl PlanReport {
             (None, None) => BestComparison::NothingToCompare,
             _ => BestComparison::Different,
         }
-    }
-
-    /// Whether the two plans do *not* disagree: [`compare_best`](Self::compare_best) is
-    /// [`Same`](BestComparison::Same), or [`NothingToCompare`](BestComparison::NothingToCompare)
-    /// (both found no force-closure grasp). Use [`compare_best`](Self::compare_best) to tell
-    /// those two apart before reporting agreement.
-    pub fn same_best_as(&self, other: &PlanReport) -> bool {
-        self.compare_best(other) != BestComparison::Different
     }
 
     /// Seconds of quality evaluation per sample.
@@ -353,12 +354,9 @@ mod tests {
         let none = report(None);
         assert_eq!(none.compare_best(&none), BestComparison::NothingToCompare);
         assert_eq!(none.compare_best(&none).same(), None);
-        // Not a disagreement either (the demo's exit status relies on that).
-        assert!(none.same_best_as(&none));
         let one = report(Some((1, 0.2)));
         assert_eq!(one.compare_best(&none), BestComparison::Different);
         assert_eq!(none.compare_best(&one), BestComparison::Different);
-        assert!(!one.same_best_as(&none));
         assert_eq!(one.compare_best(&one), BestComparison::Same);
         // A tie broken the other way by rounding.
         let tie = report(Some((0, 0.2 * (1.0 + 1e-12))));

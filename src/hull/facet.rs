@@ -41,7 +41,7 @@ pub struct Facet<const D: usize> {
     /// Unit outward normal.
     pub(crate) normal: [f64; D],
     /// Whether `normal` is certified to a relative 1e−11 (else it is the floating-point normal of
-    /// a facet whose cofactors cancelled, refined on demand by [`Hull::refine_normal`]).
+    /// a facet whose cofactors cancelled, refined on demand by `Hull::refine_normal`).
     pub(crate) precise: bool,
     /// Offset in the caller's coordinates.
     pub(crate) offset: f64,

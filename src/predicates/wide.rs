@@ -191,7 +191,7 @@ pub(crate) struct ExactPlane<const D: usize> {
     cofactors: [Wide; D],
     /// Limbs in use: enough for every cofactor times a coordinate difference of up to 63 bits.
     len: usize,
-    /// Column scaling: column j holds multiples of 2^exponents[j].
+    /// Column scaling: column j holds multiples of `2^exponents[j]`.
     exponents: [i32; D],
     /// The base vertex `v0` in column units.
     base: [i64; D],

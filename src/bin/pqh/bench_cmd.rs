@@ -133,26 +133,56 @@ fn grasps(seed: u64, count: usize, contacts: usize, k: usize) -> Result<Vec<Gras
 struct Row {
     method: &'static str,
     force_closure: usize,
+    /// Per evaluated grasp: its index in the set, its time, points, facets and verdict.
+    grasp: Vec<usize>,
     times_us: Vec<f64>,
     points: Vec<usize>,
     facets: Vec<usize>,
-    /// Per grasp: force closure.
     closure: Vec<bool>,
+    values: Vec<f64>,
+    /// The grasps the method could not evaluate (e.g. Qhull's topology errors on nearly flat
+    /// wrench sets), named: counted and shown, not fatal.
+    errors: Vec<String>,
 }
 
 impl Row {
-    fn new(method: &'static str, results: &[Quality]) -> Row {
-        Row {
+    fn new(method: &'static str, results: &[Result<Quality, String>]) -> Row {
+        let mut row = Row {
             method,
-            force_closure: results.iter().filter(|q| q.force_closure).count(),
-            closure: results.iter().map(|q| q.force_closure).collect(),
-            times_us: results
-                .iter()
-                .map(|q| q.stats.elapsed.as_secs_f64() * 1e6)
-                .collect(),
-            points: results.iter().map(|q| q.stats.points_processed).collect(),
-            facets: results.iter().map(|q| q.stats.facets_created).collect(),
+            force_closure: 0,
+            grasp: Vec::new(),
+            times_us: Vec::new(),
+            points: Vec::new(),
+            facets: Vec::new(),
+            closure: Vec::new(),
+            values: Vec::new(),
+            errors: Vec::new(),
+        };
+        for (i, result) in results.iter().enumerate() {
+            match result {
+                Ok(q) => {
+                    row.force_closure += usize::from(q.force_closure);
+                    row.grasp.push(i);
+                    row.times_us.push(q.stats.elapsed.as_secs_f64() * 1e6);
+                    row.points.push(q.stats.points_processed);
+                    row.facets.push(q.stats.facets_created);
+                    row.closure.push(q.force_closure);
+                    row.values.push(q.value);
+                }
+                Err(e) => row.errors.push(format!("grasp {i}: {e}")),
+            }
         }
+        row
+    }
+
+    /// The entry of grasp `g`, when this method evaluated it.
+    fn at(&self, g: usize) -> Option<usize> {
+        self.grasp.binary_search(&g).ok()
+    }
+
+    /// Pairs of entries (this row's, `base`'s) for the grasps both evaluated.
+    fn pairs<'a>(&'a self, base: &'a Row) -> impl Iterator<Item = (usize, usize)> + 'a {
+        (0..self.grasp.len()).filter_map(|j| base.at(self.grasp[j]).map(|p| (j, p)))
     }
 }
 
@@ -175,19 +205,19 @@ fn name(method: Method) -> &'static str {
     }
 }
 
-/// Evaluates `set` one grasp after another with one evaluator.
-fn evaluate_all(set: &[Grasp], metric: Metric, method: Method) -> Result<Vec<Quality>, CliError> {
+/// Evaluates `set` one grasp after another with one evaluator; a grasp the method cannot
+/// evaluate keeps its error.
+fn evaluate_all(set: &[Grasp], metric: Metric, method: Method) -> Vec<Result<Quality, String>> {
     let mut evaluator = Evaluator::new(metric, method);
     let bar = crate::progress::bar(set.len(), name(method));
     let results = set
         .iter()
         .map(|g| {
-            let q = evaluator.evaluate(g);
+            let q = evaluator.evaluate(g).map_err(|e| e.to_string());
             bar.inc(1);
             q
         })
-        .collect::<Result<_, _>>()
-        .map_err(|e| CliError::Geometry(e.to_string()));
+        .collect();
     bar.finish_and_clear();
     results
 }
@@ -320,7 +350,6 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
     for &k in &args.edges {
         let set = grasps(args.seed, args.grasps, args.contacts, k)?;
         let mut rows = Vec::new();
-        let mut values: Vec<Vec<f64>> = Vec::new();
         let mut partial_results = Vec::new();
         for &m in &methods {
             let n = if m == Method::Partial {
@@ -331,45 +360,59 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
             if n == 0 {
                 continue; // --full-grasps 0: partial only
             }
-            let results = evaluate_all(&set[..n], Metric::Q1, m)?;
-            values.push(results.iter().map(|q| q.value).collect());
+            let results = evaluate_all(&set[..n], Metric::Q1, m);
             rows.push(Row::new(name(m), &results));
             if m == Method::Partial {
                 partial_results = results;
             }
         }
+        let partial = &rows[0];
+        if !partial.errors.is_empty() {
+            return Err(CliError::Geometry(format!(
+                "the partial method failed on {} grasps, first: {}",
+                partial.errors.len(),
+                partial.errors[0]
+            )));
+        }
+        let partial_results: Vec<Quality> = partial_results.into_iter().flatten().collect();
         // Every method must give the same answers on the grasps they share.
-        let disagreements = values
+        let disagreements = rows
             .iter()
             .skip(1)
-            .map(|v| {
-                v.iter()
-                    .zip(&values[0])
-                    .filter(|(a, b)| (*a - *b).abs() > 1e-9 * a.abs().max(1e-3))
+            .map(|row| {
+                row.pairs(partial)
+                    .filter(|&(j, p)| {
+                        let (a, b) = (row.values[j], partial.values[p]);
+                        (a - b).abs() > 1e-9 * a.abs().max(1e-3)
+                    })
                     .count()
             })
             .sum::<usize>();
-        let partial = &rows[0];
         let mut entries = Vec::new();
         for row in &rows {
-            let n = row.times_us.len();
             // Ratios over the grasps both methods evaluated: median of per-grasp ratios.
-            let mut time_ratio: Vec<f64> = (0..n)
-                .map(|i| row.times_us[i] / partial.times_us[i])
+            let pairs: Vec<(usize, usize)> = row.pairs(partial).collect();
+            let mut time_ratio: Vec<f64> = pairs
+                .iter()
+                .map(|&(j, p)| row.times_us[j] / partial.times_us[p])
                 .collect();
             // The same over the force-closure grasps alone (the partial method's slow kind:
             // the others are settled by GJK without a hull).
-            let mut closure_ratio: Vec<f64> = (0..n)
-                .filter(|&i| partial.closure[i])
-                .map(|i| time_ratio[i])
+            let mut closure_ratio: Vec<f64> = pairs
+                .iter()
+                .zip(&time_ratio)
+                .filter(|((_, p), _)| partial.closure[*p])
+                .map(|(_, &r)| r)
                 .collect();
-            let points_ratio = mean((0..n).map(|i| row.points[i] as f64))
-                / mean((0..n).map(|i| partial.points[i] as f64));
-            let facets_ratio = mean((0..n).map(|i| row.facets[i] as f64))
-                / mean((0..n).map(|i| partial.facets[i] as f64));
+            let points_ratio = mean(pairs.iter().map(|&(j, _)| row.points[j] as f64))
+                / mean(pairs.iter().map(|&(_, p)| partial.points[p] as f64));
+            let facets_ratio = mean(pairs.iter().map(|&(j, _)| row.facets[j] as f64))
+                / mean(pairs.iter().map(|&(_, p)| partial.facets[p] as f64));
             entries.push(json!({
                 "method": row.method,
-                "grasps": n,
+                "grasps": row.grasp.len(),
+                "errors": row.errors.len(),
+                "first_error": row.errors.first(),
                 "force_closure": row.force_closure,
                 "median_us": median(&mut row.times_us.clone()),
                 "mean_us": mean(row.times_us.iter().copied()),
@@ -429,21 +472,17 @@ fn qinf_row(set: &[Grasp], variant: QinfVariant) -> Value {
         with_zero_wrench: variant == QinfVariant::ZeroWrench,
     };
     let mut evaluator = Evaluator::new(metric, Method::Partial);
-    let mut results = Vec::new();
-    let mut errors = Vec::new();
-    for (i, g) in set.iter().enumerate() {
-        match evaluator.evaluate(g) {
-            Ok(q) => results.push(q),
-            Err(e) => errors.push(format!("grasp {i}: {e}")),
-        }
-    }
+    let results: Vec<_> = set
+        .iter()
+        .map(|g| evaluator.evaluate(g).map_err(|e| e.to_string()))
+        .collect();
     let row = Row::new("partial", &results);
     json!({
         "variant": variant.name(),
         "method": row.method,
-        "grasps": results.len(),
-        "errors": errors.len(),
-        "first_error": errors.first(),
+        "grasps": row.grasp.len(),
+        "errors": row.errors.len(),
+        "first_error": row.errors.first(),
         "force_closure": row.force_closure,
         "median_us": median(&mut row.times_us.clone()),
         "mean_us": mean(row.times_us.iter().copied()),
@@ -495,6 +534,22 @@ fn print_tables(args: &GwsArgs, report: &[Value]) {
                 num(&m["points_ratio_vs_partial"]),
                 num(&m["facets_ratio_vs_partial"])
             );
+        }
+        for m in entry["methods"].as_array().expect("array") {
+            if m["errors"] != 0 {
+                println!(
+                    "     !! {}: {} grasps not evaluated (left out of the ratios), first: {}",
+                    m["method"].as_str().unwrap_or(""),
+                    m["errors"],
+                    // Qhull's messages run to pages: their first sentence names the error.
+                    m["first_error"]
+                        .as_str()
+                        .unwrap_or("")
+                        .chars()
+                        .take(160)
+                        .collect::<String>()
+                );
+            }
         }
         if entry["disagreements"] != 0 {
             println!(

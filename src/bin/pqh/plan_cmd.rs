@@ -245,11 +245,7 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
             "seed": args.seed,
             "partial": report_json(&partial),
             "full": comparison.as_ref().map(|(full, _)| report_json(full)),
-            "comparison": compared.map(|(_, _, c)| match c {
-                BestComparison::Same => "same",
-                BestComparison::Different => "different",
-                BestComparison::NothingToCompare => "nothing_to_compare",
-            }),
+            "comparison": compared.map(|(_, _, c)| c.name()),
             "same_best": same_best,
             "quality_speedup": speedup,
             "comparison_note": note,

@@ -80,7 +80,7 @@ fn sum_support(sets: &[Vec<[f64; 6]>], direction: &[f64; 6]) -> [f64; 6] {
     total
 }
 
-/// Σ_i sets[i][choice[i]], left to right (exact for snapped wrenches and up to 10 contacts).
+/// `Σ_i sets[i][choice[i]]`, left to right (exact for snapped wrenches and up to 10 contacts).
 fn sum(sets: &[Vec<[f64; 6]>], choice: impl Iterator<Item = usize>) -> [f64; 6] {
     let mut total = [0.0; 6];
     for (set, j) in sets.iter().zip(choice) {
