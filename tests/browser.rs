@@ -417,8 +417,7 @@ fn generic_scene_page_rotates_and_reports_errors() {
 fn planned_grasps_page_loads_draws_both_panels_and_rotates() {
     let Some(exe) = browser() else { return };
     let page = scratch("plan.html");
-    // The planner's default object: ../shared/meshes/spot.obj when present, else a generated
-    // ellipsoid (run from the crate root, as the CLI documents).
+    // The planner's default object: the built-in spot.obj.
     let o = Command::new(env!("CARGO_BIN_EXE_pqh"))
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .args([

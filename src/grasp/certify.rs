@@ -36,6 +36,8 @@
 //! carries its rounding bound (γ₆ ≤ 6.7·10⁻¹⁶ of `Σ|a_c b_c|`), so `low` and `high` are rigorous.
 
 use crate::hull::{FacetId, Hull};
+use crate::predicates::exact_cofactor_direction;
+use crate::strategy::nearest::min_norm_point;
 
 /// Rounding of a six-term dot product, relative to `Σ|a_c·b_c|`: γ₆ = 6u/(1 − 6u) ≤ 6.7·10⁻¹⁶,
 /// u = 2⁻⁵³ (Higham, *Accuracy and Stability of Numerical Algorithms*, §3.1), rounded up to
@@ -208,29 +210,39 @@ where
             }
         }
         let mut facet_low = cheap_low;
-        if known && let Some(mut u) = hyperplane_normal(&points) {
-            if dot_with_error(&u, &hull.facet(id).normal()).0 < 0.0 {
-                u = u.map(|c| -c);
-            }
-            let (_, u_high) = norm_bounds(&u);
-            let mut nearest = f64::INFINITY;
-            for p in &points {
-                let (height, error) = dot_with_error(&u, p);
-                nearest = nearest.min(height - error);
-            }
-            let margin = nearest - raw.error * u_high;
-            let g = gauge.upper(&u);
-            if margin > 0.0 {
-                facet_low = facet_low.max(if g > 0.0 { margin / g } else { f64::INFINITY });
-            }
-            let g_low = gauge.lower(&u);
-            if g_low > 0.0 {
-                let (h, error) = (raw.support)(&u);
-                let high = (h + error) / g_low;
-                // The division rounds by half an ulp: nudge up.
-                let high = high * (1.0 + 2e-16);
-                if best.is_none_or(|(b, _)| high < b) {
+        if known {
+            // The raw simplex's own normal: tight for a well-shaped simplex.
+            let own = hyperplane_normal(&points)
+                .or_else(|| exact_normal(&points))
+                .map(|u| {
+                    let outward = dot_with_error(&u, &hull.facet(id).normal()).0 >= 0.0;
+                    if outward { u } else { u.map(|c| -c) }
+                });
+            let mut own_low = f64::NEG_INFINITY;
+            if let Some(u) = own {
+                let (bound, high) = along(&u, &points, raw, gauge);
+                own_low = bound;
+                facet_low = facet_low.max(bound);
+                if let Some(high) = high
+                    && best.is_none_or(|(b, _)| high < b)
+                {
                     best = Some((high, id));
+                }
+            }
+            // A sliver's own plane is tilted by its vertices' perturbation (on a flat face of
+            // the hull, split into thin simplices, it can be far from the face's plane): the
+            // direction of its point nearest the origin bounds it as tightly as the face's
+            // normal would.
+            if own_low <= cheap_low {
+                let nearest = min_norm_point(6, |i| points[i], &[0.0; 6]);
+                if nearest.distance > 0.0 {
+                    let (bound, high) = along(&nearest.point, &points, raw, gauge);
+                    facet_low = facet_low.max(bound);
+                    if let Some(high) = high
+                        && best.is_none_or(|(b, _)| high < b)
+                    {
+                        best = Some((high, id));
+                    }
                 }
             }
         }
@@ -240,6 +252,98 @@ where
     let low = low * (1.0 - 2e-16);
     let (high, facet) = best?;
     Some(Bracket { low, high, facet })
+}
+
+/// An upper bound on the metric of the raw points from facet `id` of the snapped hull: the
+/// support along its raw simplex's own normal (or, failing that, the facet's), through the
+/// gauge. For a *boundary* grasp — the origin within `δ` of the snapped surface, where
+/// [`bracket`] has no lower bound — the raw points lie within rounding of a supporting
+/// hyperplane through the origin, and this bound is tiny: with a lower bound from elsewhere
+/// (0 for a set holding the origin, −GJK's distance otherwise) it pins the value.
+pub(crate) fn upper_bound_at<R, H, G>(
+    hull: &Hull<6>,
+    id: FacetId,
+    raw: &mut RawSide<R, H>,
+    gauge: &mut G,
+) -> Option<f64>
+where
+    R: FnMut(usize) -> Option<[f64; 6]>,
+    H: FnMut(&[f64; 6]) -> (f64, f64),
+    G: Gauge,
+{
+    let normal = hull.facet(id).normal();
+    let mut points = [[0.0; 6]; 6];
+    let mut known = true;
+    for (p, v) in points.iter_mut().zip(hull.facet(id).vertices()) {
+        match (raw.point)(v) {
+            Some(x) => *p = x,
+            None => known = false,
+        }
+    }
+    let own = known
+        .then(|| hyperplane_normal(&points).or_else(|| exact_normal(&points)))
+        .flatten()
+        .map(|u| {
+            if dot_with_error(&u, &normal).0 >= 0.0 {
+                u
+            } else {
+                u.map(|c| -c)
+            }
+        });
+    let mut high: Option<f64> = None;
+    for u in own.into_iter().chain([normal]) {
+        if let (_, Some(h)) = along(&u, &points, raw, gauge) {
+            high = Some(high.map_or(h, |b: f64| b.min(h)));
+        }
+    }
+    high
+}
+
+/// The bounds direction `u` (pointing away from the origin) gives for the raw simplex on
+/// `points`: a lower bound on the metric past that simplex, `(min_j u·r_j − error) / g⁺(u)`
+/// (`−∞` when not positive), and, when the gauge is positive along `u`, the upper bound
+/// `(h(u) + error) / g⁻(u)` on the metric itself. Rigorous for any `u`: every dot product carries
+/// its rounding bound.
+fn along<R, H, G>(
+    u: &[f64; 6],
+    points: &[[f64; 6]; 6],
+    raw: &mut RawSide<R, H>,
+    gauge: &mut G,
+) -> (f64, Option<f64>)
+where
+    H: FnMut(&[f64; 6]) -> (f64, f64),
+    G: Gauge,
+{
+    let (_, u_high) = norm_bounds(u);
+    let mut nearest = f64::INFINITY;
+    for p in points {
+        let (height, error) = dot_with_error(u, p);
+        nearest = nearest.min(height - error);
+    }
+    let margin = nearest - raw.error * u_high;
+    let g = gauge.upper(u);
+    let low = if margin > 0.0 {
+        if g > 0.0 { margin / g } else { f64::INFINITY }
+    } else {
+        f64::NEG_INFINITY
+    };
+    let g_low = gauge.lower(u);
+    let high = (g_low > 0.0).then(|| {
+        let (h, error) = (raw.support)(u);
+        // The division rounds by half an ulp: nudge up.
+        (h + error) / g_low * (1.0 + 2e-16)
+    });
+    (low, high)
+}
+
+/// The direction of the exact cofactors of the simplex on `points` (a few ulps per component),
+/// for the thin simplices whose floating-point normal [`hyperplane_normal`] refuses: a sliver
+/// facet of the snapped hull (a Minkowski sum's flat faces triangulate into many) whose raw
+/// simplex still needs a precise normal, else its bound stays the cheap one, `δ` wide. `None`
+/// when the points are exactly affinely dependent.
+fn exact_normal(points: &[[f64; 6]; 6]) -> Option<[f64; 6]> {
+    let u = exact_cofactor_direction(points);
+    u.iter().any(|&c| c != 0.0).then_some(u)
 }
 
 /// A normal of the hyperplane through six points (not normalised), or `None` when they are

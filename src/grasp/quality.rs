@@ -53,7 +53,9 @@
 //! ```
 
 use super::Grasp;
-use super::certify::{Bracket, BracketScratch, RawSide, UnitBall, bracket, support_with_error};
+use super::certify::{
+    self, Bracket, BracketScratch, RawSide, UnitBall, bracket, support_with_error,
+};
 use super::flatness::{FLAT, Flatness};
 use super::snap::{SnappedCones, pyramid_labels, snapped_union};
 use crate::strategy::nearest::{min_norm_point, min_norm_point_accurate, nearest_in_simplex};
@@ -412,6 +414,28 @@ pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Quality, 
     Ok(quality)
 }
 
+/// Q1 of the raw wrenches `raw` by the partial method, searched on their snapped copy
+/// `snapped` (same indexing, `pyramids` naming each wrench's contact, within `delta` of the raw
+/// ones) and certified on `raw`, as [`Evaluator::evaluate`] does; banded.
+pub(crate) fn q1_certified(
+    raw: &[[f64; 6]],
+    snapped: &[[f64; 6]],
+    pyramids: &[u32],
+    delta: f64,
+    buffers: &mut HullBuffers,
+) -> Quality {
+    let started = Instant::now();
+    let set = Explicit {
+        raw,
+        snapped,
+        pyramids: Some(pyramids),
+        delta,
+    };
+    let mut quality = set.partial(started, buffers).banded(largest_norm(raw));
+    quality.stats.elapsed = started.elapsed();
+    quality
+}
+
 /// Evaluates every grasp on all cores (rayon's current pool), results in input order.
 ///
 /// Each worker thread keeps one [`Evaluator`] per (metric, method) for the life of the thread,
@@ -491,6 +515,11 @@ fn degenerate(w: &[[f64; 6]], started: Instant) -> Quality {
     Quality::new(-nearest.distance, support, no_hull_stats(w.len(), started))
 }
 
+/// A boundary grasp's value is settled without the exact engine when its upper and lower bounds
+/// are each within this fraction of the scale: their midpoint is then within it of the exact
+/// value, half the `1e−14·scale` the metrics promise near zero (see `Explicit::boundary`).
+pub(super) const BOUNDARY: f64 = 5e-15;
+
 /// Q1 of `w` when it lies within [`FLAT`] of its scale of a hyperplane through the origin (see
 /// [`flatness`](super::flatness)): −(its distance from the origin) by Wolfe's algorithm over the
 /// points, within that slab's half-width of the exact value, and never force closure.
@@ -538,13 +567,49 @@ impl Explicit<'_> {
             bracket,
             ..
         } = buffers;
-        if let Ok((h, result)) = HullBuffers::build(hull, self.snapped, self.pyramids, nearest)
-            && result.signed_distance > 0.0
-            && let Some(quality) = self.certify(h, bracket)
-        {
-            return quality;
+        if let Ok((h, result)) = HullBuffers::build(hull, self.snapped, self.pyramids, nearest) {
+            if result.signed_distance > 0.0
+                && let Some(quality) = self.certify(h, bracket)
+            {
+                return quality;
+            }
+            if let Some(quality) = self.boundary(h, result.closest_facet) {
+                return quality;
+            }
         }
         partial_q1(self.raw, None, started, buffers)
+    }
+
+    /// Q1 of a *boundary* grasp — the origin within `δ` of the snapped hull's facet `id`, where
+    /// the bracket has no lower bound — without the exact engine on the raw wrenches (which
+    /// builds slivers there: 150–270 ms per grasp at 4 × 32 edges on a bar). The raw simplex of
+    /// that facet bounds Q1 from above ([`certify::upper_bound_at`]); Wolfe's algorithm bounds it
+    /// from below, by −(the distance from the origin to the hull). When both are within
+    /// `BOUNDARY` of the scale, Q1 is their midpoint, within the `1e−14·scale` the metric
+    /// promises near zero, and the grasp is not force closure.
+    fn boundary(&self, hull: &Hull<6>, id: crate::FacetId) -> Option<Quality> {
+        let raw = self.raw;
+        let scale = largest_norm(raw);
+        let mut side = RawSide {
+            point: |v: usize| Some(raw[v]),
+            error: 0.0,
+            delta: self.delta,
+            support: |u: &[f64; 6]| support_with_error(raw, u),
+        };
+        let high = certify::upper_bound_at(hull, id, &mut side, &mut UnitBall)?;
+        if high > BOUNDARY * scale {
+            return None;
+        }
+        // The lower bound: −(the distance from the origin to the hull), by Wolfe's algorithm
+        // with the accurate residual (plain floating point leaves ~1e−14 of the scale here).
+        let rough = min_norm_point(raw.len(), |i| raw[i], &[0.0; 6]);
+        let nearest = min_norm_point_accurate(raw.len(), |i| raw[i], &[0.0; 6], rough.support());
+        // Its accuracy: 1e−15 of itself plus 1e−30 of the set's size; rounded up generously.
+        let distance = nearest.distance * (1.0 + 1e-14) + 1e-28 * scale;
+        (distance <= BOUNDARY * scale).then(|| {
+            let face = nearest.support().iter().map(|&i| raw[i]);
+            Quality::new(0.5 * (high - distance), face, hull.stats())
+        })
     }
 
     /// Q1 from the full hull of the snapped wrenches, certified on the raw ones when it holds

@@ -68,6 +68,7 @@ mod filter;
 mod tests;
 mod wide;
 
+pub(crate) use exact::exact_cofactor_direction;
 pub use filter::FacetPlane;
 
 /// The sign of an orientation determinant.

@@ -16,8 +16,7 @@ use std::time::Instant;
 
 #[derive(Debug, Args)]
 pub struct OwsArgs {
-    /// Object mesh (OBJ or STL) [default: ../shared/meshes/spot.obj when present, else a
-    /// generated ellipsoid]
+    /// Object mesh (OBJ or STL) [default: the built-in spot.obj]
     #[arg(long)]
     pub mesh: Option<PathBuf>,
     /// Random grasps (contacts sampled on the surface by area)

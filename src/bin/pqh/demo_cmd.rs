@@ -13,7 +13,7 @@ use std::path::PathBuf;
 /// The long help of `pqh demo`.
 pub const LONG_ABOUT: &str = "\
 Shows what pqhull is for, with no input: a random grasp planner (as GraspIt!'s) on an object —
-../shared/meshes/spot.obj when present, else a generated ellipsoid — picks the best of --samples
+the built-in spot.obj (Keenan Crane's cow, CC0) unless --mesh — picks the best of --samples
 4-contact grasps by the Ferrari-Canny metric Q1 and by the object wrench space metric, each
 evaluated with partial hulls (ClosestToOrigin, OwsInflation) and again with full hulls (QuickHull
 to completion; for OWS, the full hull against every disturbance). It prints the best grasps, the
@@ -25,7 +25,7 @@ Exits with status 1 if the partial and full-hull plans disagree on the best gras
 /// Arguments of `pqh demo`.
 #[derive(Debug, Args)]
 pub struct DemoArgs {
-    /// Object mesh [default: ../shared/meshes/spot.obj, else a generated ellipsoid]
+    /// Object mesh (OBJ or STL) [default: the built-in spot.obj]
     #[arg(long)]
     mesh: Option<PathBuf>,
     /// Grasps sampled per metric

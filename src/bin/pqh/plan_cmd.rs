@@ -23,12 +23,17 @@ force-closure grasp among the samples both evaluated, there is nothing to compar
 no verdict are printed (JSON: \"comparison\": \"nothing_to_compare\", \"same_best\" and
 \"quality_speedup\" null, and a \"comparison_note\" saying why).
 
-Without --mesh the object is ../shared/meshes/spot.obj when present, else a generated ellipsoid.
+Without --mesh the object is the built-in spot.obj (Keenan Crane's cow, CC0; data/meshes/ in the
+repository), whatever the working directory.
 --output writes an HTML view of the best grasp by Q1 beside the best by OWS (the seed paper's
 Fig. 10).";
 
-/// The mesh used when `--mesh` is not given, relative to the working directory (the project root).
-pub const DEFAULT_MESH: &str = "../shared/meshes/spot.obj";
+/// The mesh used when `--mesh` is not given: spot.obj (2930 vertices, CC0), built into the binary
+/// so that the default works from any directory.
+const DEFAULT_MESH: &str = include_str!("../../../data/meshes/spot.obj");
+
+/// The name the built-in mesh goes by in reports.
+pub const DEFAULT_MESH_NAME: &str = "built-in spot.obj";
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 pub enum PlanMetricArg {
@@ -42,7 +47,7 @@ pub enum PlanMetricArg {
 
 #[derive(Debug, Args)]
 pub struct PlanArgs {
-    /// Object mesh (OBJ or STL) [default: ../shared/meshes/spot.obj, else a generated ellipsoid]
+    /// Object mesh (OBJ or STL) [default: the built-in spot.obj]
     #[arg(long)]
     pub mesh: Option<PathBuf>,
     /// Contacts per grasp
@@ -78,30 +83,15 @@ pub struct PlanArgs {
 }
 
 /// A generated ellipsoid with semi-axes 0.5 × 0.25 × 0.15: smooth, not a sphere.
-pub fn generated_object() -> Result<Mesh, CliError> {
-    let sphere = Mesh::uv_sphere(1.0, 16, 32).map_err(|e| CliError::Input(e.to_string()))?;
-    let vertices = sphere
-        .vertices()
-        .iter()
-        .map(|v| [0.5 * v[0], 0.25 * v[1], 0.15 * v[2]])
-        .collect();
-    Mesh::try_new(vertices, sphere.triangles().to_vec()).map_err(|e| CliError::Input(e.to_string()))
-}
-
-/// The mesh and a name for it.
+/// The mesh and a name for it: `mesh`, or the built-in spot.obj.
 pub fn load_object(mesh: Option<&Path>) -> Result<(Mesh, String), CliError> {
-    let load = |path: &Path| {
-        Mesh::load(path)
-            .map(|m| (m, path.display().to_string()))
-            .map_err(|e| CliError::Input(e.to_string()))
-    };
     match mesh {
-        Some(path) => load(path),
-        None if Path::new(DEFAULT_MESH).exists() => load(Path::new(DEFAULT_MESH)),
-        None => Ok((
-            generated_object()?,
-            "generated ellipsoid 0.5 × 0.25 × 0.15".to_string(),
-        )),
+        Some(path) => Mesh::load(path)
+            .map(|m| (m, path.display().to_string()))
+            .map_err(|e| CliError::Input(e.to_string())),
+        None => Mesh::from_obj_reader(DEFAULT_MESH.as_bytes(), DEFAULT_MESH_NAME)
+            .map(|m| (m, DEFAULT_MESH_NAME.to_string()))
+            .map_err(|e| CliError::Input(e.to_string())),
     }
 }
 

@@ -6,7 +6,7 @@ use crate::grasp::certify::{BracketScratch, Disturbances, RawSide, bracket, supp
 use crate::grasp::flatness::{FLAT, Flatness};
 use crate::grasp::quality::{
     FORCE_CLOSURE_EPSILON, Gjk, HullBuffers, Method, QualityError, certified_outside, find_or_make,
-    largest_norm, q1_of_wrenches,
+    largest_norm, q1_certified, q1_of_wrenches,
 };
 use crate::grasp::snap::{SnappedCones, pyramid_labels, snapped_union};
 use crate::hull::{FacetId, Hull, HullError, dot};
@@ -102,6 +102,8 @@ struct OwsBuffers {
     bracket: BracketScratch,
     /// The slab test's workspace.
     flatness: Flatness,
+    /// Q1's buffers, for the verdict when the OWS certificate cannot decide.
+    q1: HullBuffers,
 }
 
 impl OwsEvaluator {
@@ -240,9 +242,15 @@ fn ows_with(
             });
         }
     }
-    // The exact engine on the raw wrenches: force closure under the band from Q1, then the
-    // search on exactly these numbers.
-    let q1 = q1_of_wrenches(raw, Method::Partial)?;
+    // Force closure under the band from Q1 (certified on the snapped search when there is one:
+    // the exact engine alone builds slivers on boundary grasps), then the search on exactly
+    // the caller's numbers.
+    let q1 = match set.snapped {
+        Some((snapped, pyramids, delta)) => {
+            q1_certified(raw, snapped, pyramids, delta, &mut buffers.q1)
+        }
+        None => q1_of_wrenches(raw, Method::Partial)?,
+    };
     if !q1.force_closure {
         return Ok(not_force_closure(q1.stats));
     }

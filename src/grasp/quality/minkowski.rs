@@ -1,7 +1,7 @@
 //! Q∞ over the Minkowski sum ⊕_i W_i, implicitly (support function) or materialised.
 
 use super::separation::{GJK_ITERATIONS, Gjk, TOUCHING, Verdict};
-use super::{HullBuffers, Quality, QualityError, degenerate, full_q1, no_hull_stats};
+use super::{BOUNDARY, HullBuffers, Quality, QualityError, degenerate, full_q1, no_hull_stats};
 use crate::grasp::certify::{self, RawSide, UnitBall, support_with_error};
 use crate::grasp::flatness::{FLAT, Flatness};
 use crate::grasp::snap::SnappedCones;
@@ -466,13 +466,36 @@ pub(super) fn partial(
     });
     let h = hull.get_or_insert_with(Hull::empty);
     let snapped = h.rebuild_with_strategy(seeds, &mut *nearest);
-    if let Ok(result) = snapped
-        && result.signed_distance > 0.0
-    {
+    if let Ok(result) = snapped {
         let source = nearest.source_mut();
         let raw_point = |v: usize| source.raw_point(&h.point(v));
-        if let Some(quality) = certify_sum(h, cones, &source.raw_sets, raw_point, bracket) {
+        if result.signed_distance > 0.0
+            && let Some(quality) = certify_sum(h, cones, &source.raw_sets, raw_point, bracket)
+        {
             return Ok(quality);
+        }
+        // A boundary grasp with the zero wrench: the origin, a point of the sum, is within δ of
+        // the snapped surface. The sum's value lies in [0, the upper bound along the raw simplex
+        // of the nearest facet]; when that is within `BOUNDARY` of the scale, its midpoint is
+        // the value to the accuracy promised near zero (the raw sum's exact hull would be
+        // slivers: seconds per grasp).
+        if with_zero_wrench {
+            let raw_point = |v: usize| source.raw_point(&h.point(v));
+            let (delta, error) = raw_bounds(cones, &source.raw_sets);
+            let raw_sets = &source.raw_sets;
+            let mut side = RawSide {
+                point: raw_point,
+                error,
+                delta,
+                support: |u: &[f64; 6]| sum_support_with_error(raw_sets, u),
+            };
+            if let Some(high) =
+                certify::upper_bound_at(h, result.closest_facet, &mut side, &mut UnitBall)
+                && high <= BOUNDARY * scale
+            {
+                let origin = std::iter::once([0.0; 6]);
+                return Ok(Quality::new(0.5 * high.max(0.0), origin, h.stats()).banded(scale));
+            }
         }
     }
     // The exact engine on the raw sum.
