@@ -353,3 +353,54 @@ fn q_inf_of_flat_sums_agrees_with_the_materialised_sum() {
         }
     }
 }
+
+/// Boundary grasps: 4 contacts on the axis-aligned faces of a bar with 32 edges, whose wrench
+/// hull holds the origin within rounding (the seed-1 set of `pqh bench gws`). They are answered
+/// from the snapped search's nearest facet and Wolfe's algorithm, not the exact engine (which
+/// builds slivers there): the value must still be the exact engine's on the raw wrenches to the
+/// `1e-14·scale` promised near zero, the verdict "not force closure", and Q∞ with the zero
+/// wrench within [0, m·Q1] (up to the same accuracy).
+#[test]
+fn boundary_grasps_agree_with_the_exact_engine_on_the_raw_wrenches() {
+    use pqhull::grasp::quality::q1_of_wrenches;
+    let mut rng = Rng::new(1);
+    let friction = FrictionModel::try_new(0.5, 32).unwrap();
+    let set: Vec<Grasp> = (0..200)
+        .map(|_| Grasp::random_on_box(&mut rng, [0.5, 0.2, 0.1], 4, friction))
+        .collect();
+    let mut q1 = Evaluator::new(Metric::Q1, Method::Partial);
+    let mut qinf = Evaluator::new(
+        Metric::QInf {
+            with_zero_wrench: true,
+        },
+        Method::Partial,
+    );
+    let mut boundary = 0;
+    for (i, grasp) in set.iter().enumerate() {
+        let wrenches = grasp.wrenches();
+        let exact = q1_of_wrenches(&wrenches, Method::Partial).unwrap();
+        let scale = exact.scale;
+        if exact.value.abs() > 1e-12 * scale {
+            continue;
+        }
+        boundary += 1;
+        let a = q1.evaluate(grasp).unwrap();
+        assert!(!a.force_closure, "grasp {i}");
+        assert!(
+            (a.value - exact.value).abs() <= 1e-14 * scale,
+            "grasp {i}: {:e} vs exact {:e}",
+            a.value,
+            exact.value
+        );
+        let b = qinf.evaluate(grasp).unwrap();
+        assert!(!b.force_closure, "grasp {i}");
+        let m = grasp.contact_count() as f64;
+        assert!(
+            b.value >= -1e-14 * b.scale && b.value <= m * exact.value.max(0.0) + 1e-14 * b.scale,
+            "grasp {i}: Q∞+0 {:e}, Q1 {:e}",
+            b.value,
+            exact.value
+        );
+    }
+    assert!(boundary >= 3, "{boundary} boundary grasps");
+}
