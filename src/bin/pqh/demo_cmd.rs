@@ -175,9 +175,8 @@ pub fn run(args: &DemoArgs) -> Result<(), CliError> {
                 if r.agree() { "yes" } else { "NO" }
             );
         }
-        match &view {
-            Ok(path) => println!("\nwrote {} (Q1-best beside OWS-best)", path.display()),
-            Err(e) => println!("\nno view written: {e}"),
+        if let Ok(path) = &view {
+            println!("\nwrote {} (Q1-best beside OWS-best)", path.display());
         }
     }
     if runs.iter().any(|r| !r.agree()) {
@@ -187,5 +186,7 @@ pub fn run(args: &DemoArgs) -> Result<(), CliError> {
                 .into(),
         ));
     }
+    // The view was asked for (--output has a default): not writing it is an error (exit 2).
+    view?;
     Ok(())
 }
