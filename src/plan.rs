@@ -31,11 +31,19 @@
 
 use crate::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod};
 use crate::grasp::quality::{Evaluator, Method, Metric, QualityError};
-use crate::grasp::{Contact, FrictionModel, Grasp, GraspError};
+use crate::grasp::{Contact, FrictionModel, Grasp, GraspError, MAX_CONTACTS};
 use crate::mesh::{Mesh, SurfaceSampler};
 use crate::rbox::Rng;
 use std::fmt;
 use std::time::{Duration, Instant};
+
+/// The most samples a plan accepts: 1,000,000.
+///
+/// Why this bound: a plan keeps only its best grasp, so its memory does not grow with the samples,
+/// but its time does (about a millisecond per sample for Q1 at 4 contacts × 8 edges by the partial
+/// method, far more for full hulls): a million samples is hours of work. A larger count is almost
+/// certainly a typing error, and is refused before any work starts.
+pub const MAX_SAMPLES: usize = 1_000_000;
 
 /// The metric a plan optimises.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -60,9 +68,9 @@ pub enum PlanMethod {
 /// What to plan.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PlanConfig {
-    /// Contacts per grasp (m ≥ 1).
+    /// Contacts per grasp (1 ≤ m ≤ [`MAX_CONTACTS`]).
     pub contacts: usize,
-    /// Grasps sampled.
+    /// Grasps sampled (1 ≤ samples ≤ [`MAX_SAMPLES`]).
     pub samples: usize,
     /// Friction model of every contact.
     pub friction: FrictionModel,
@@ -160,10 +168,20 @@ impl PlanReport {
 }
 
 /// Why a plan could not run.
+///
+/// Non-exhaustive: more limits may be added.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum PlanError {
     /// `contacts` or `samples` is zero.
     Empty,
+    /// More samples than [`MAX_SAMPLES`].
+    TooManySamples {
+        /// The number of samples asked for.
+        samples: usize,
+        /// The limit, [`MAX_SAMPLES`].
+        max: usize,
+    },
     /// `PlanMetric::Ows` without an object wrench space.
     NoWrenchSpace,
     /// A sampled contact or grasp was invalid (cannot happen for a valid mesh; reported, not
@@ -177,6 +195,12 @@ impl fmt::Display for PlanError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             PlanError::Empty => write!(f, "a plan needs at least one contact and one sample"),
+            PlanError::TooManySamples { samples, max } => {
+                write!(
+                    f,
+                    "{samples} samples are too many for one plan (at most {max})"
+                )
+            }
             PlanError::NoWrenchSpace => {
                 write!(f, "the OWS metric needs the object's wrench space")
             }
@@ -238,7 +262,10 @@ fn torque_frame(mesh: &Mesh, space: Option<&ObjectWrenchSpace>) -> ([f64; 3], f6
 /// given, it fixes the torque frame).
 ///
 /// # Errors
-/// [`PlanError`] for an empty configuration, a missing wrench space, or a failed evaluation.
+/// [`PlanError`] for an empty configuration, more than [`MAX_SAMPLES`] samples
+/// ([`PlanError::TooManySamples`]) or [`MAX_CONTACTS`] contacts
+/// ([`GraspError::TooManyContacts`] in [`PlanError::Grasp`]; both checked before any work), a
+/// missing wrench space, or a failed evaluation.
 pub fn plan(
     mesh: &Mesh,
     space: Option<&ObjectWrenchSpace>,
@@ -261,6 +288,18 @@ pub fn plan_with_progress(
 ) -> Result<PlanReport, PlanError> {
     if config.contacts == 0 || config.samples == 0 {
         return Err(PlanError::Empty);
+    }
+    if config.samples > MAX_SAMPLES {
+        return Err(PlanError::TooManySamples {
+            samples: config.samples,
+            max: MAX_SAMPLES,
+        });
+    }
+    if config.contacts > MAX_CONTACTS {
+        return Err(PlanError::Grasp(GraspError::TooManyContacts {
+            contacts: config.contacts,
+            max: MAX_CONTACTS,
+        }));
     }
     let started = Instant::now();
     let mut scorer = match (config.metric, method) {
@@ -347,6 +386,45 @@ mod tests {
             other_time: Duration::ZERO,
             facets_created: 0,
         }
+    }
+
+    #[test]
+    fn sizes_are_checked_before_any_work() {
+        let object = Mesh::uv_sphere(0.3, 4, 8).unwrap();
+        let config = PlanConfig {
+            contacts: 4,
+            samples: MAX_SAMPLES + 1,
+            friction: FrictionModel::try_new(0.5, 4).unwrap(),
+            metric: PlanMetric::Q1,
+            seed: 1,
+        };
+        let mut calls = 0;
+        let got = plan_with_progress(&object, None, &config, PlanMethod::Partial, |_| calls += 1);
+        assert_eq!(
+            got,
+            Err(PlanError::TooManySamples {
+                samples: MAX_SAMPLES + 1,
+                max: MAX_SAMPLES
+            })
+        );
+        assert_eq!(calls, 0);
+        let many = PlanConfig {
+            contacts: usize::MAX,
+            samples: 1,
+            ..config
+        };
+        let err = plan(&object, None, &many, PlanMethod::Partial).unwrap_err();
+        assert!(
+            matches!(
+                err,
+                PlanError::Grasp(GraspError::TooManyContacts {
+                    max: MAX_CONTACTS,
+                    ..
+                })
+            ),
+            "{err:?}"
+        );
+        assert!(err.to_string().contains("at most 256"), "{err}");
     }
 
     #[test]

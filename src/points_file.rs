@@ -5,7 +5,8 @@
 //! * one point per line; its coordinates are separated by commas and/or whitespace
 //!   (`1.5, -2, 3e-4`, `1.5 -2 3e-4` and `1.5,-2 , 3e-4` are the same point);
 //! * `#` starts a comment, on its own line or after a point;
-//! * blank lines (and comment-only lines) are ignored; `\n` and `\r\n` line endings both work;
+//! * blank lines (and comment-only lines) are ignored; `\n`, `\r\n` and lone `\r` (old Mac)
+//!   line endings all work, and line numbers count each;
 //! * the dimension is the number of coordinates on the first data row; every other row must have
 //!   as many;
 //! * numbers are Rust `f64` literals (`1`, `-0.5`, `.5`, `1e-3`, `+2`); `nan`, `inf` and numbers
@@ -205,7 +206,12 @@ pub fn parse_points(text: &str) -> Result<PointTable, ParseError> {
     };
     let mut first_line = 0;
     let mut row = Vec::new();
-    for (index, raw) in text.lines().enumerate() {
+    // `\n` and `\r\n` end lines; so does a lone `\r`, which `str::lines` would leave inside a
+    // line (whitespace to the number parser: every point on one row).
+    let lines = text
+        .split('\n')
+        .flat_map(|l| l.strip_suffix('\r').unwrap_or(l).split('\r'));
+    for (index, raw) in lines.enumerate() {
         let line = index + 1;
         let data = raw.split_once('#').map_or(raw, |(data, _)| data).trim();
         if data.is_empty() {
@@ -270,6 +276,26 @@ impl FromStr for PointTable {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn every_line_ending() {
+        for text in [
+            "0 0\n1 0\n0 1\n",
+            "0 0\r\n1 0\r\n0 1\r\n",
+            "0 0\r1 0\r0 1\r",
+            "0 0\r1 0\n0 1",
+        ] {
+            let t = parse_points(text).unwrap();
+            assert_eq!((t.dimension(), t.len()), (2, 3), "{text:?}");
+            assert_eq!(t.lines(), &[1, 2, 3], "{text:?}");
+        }
+        // Line numbers count lone-CR lines too.
+        let err = parse_points("0 0\r1 0\r1 x\r").unwrap_err();
+        assert_eq!(err.line(), Some(3));
+        // A blank line in CR-LF is one blank line, not two.
+        let t = parse_points("0 0\r\n\r\n1 1\r\n").unwrap();
+        assert_eq!(t.lines(), &[1, 3]);
+    }
 
     #[test]
     fn separators_comments_and_blank_lines() {

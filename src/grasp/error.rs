@@ -8,7 +8,10 @@ use std::fmt;
 /// Contact variants carry `contact: Option<usize>`: `None` when the contact was built on its own
 /// with [`Contact::try_new`](super::Contact::try_new), `Some(i)` once the caller (a parser, a grasp
 /// generator) has attached the index with [`GraspError::at_contact`].
+///
+/// Non-exhaustive: more limits may be added.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum GraspError {
     /// A contact position has a NaN or infinite coordinate.
     NonFinitePosition {
@@ -52,8 +55,22 @@ pub enum GraspError {
         /// The number of edges given.
         cone_edges: usize,
     },
+    /// More friction-cone edges than [`MAX_CONE_EDGES`](super::MAX_CONE_EDGES).
+    TooManyConeEdges {
+        /// The number of edges given.
+        cone_edges: usize,
+        /// The limit, [`MAX_CONE_EDGES`](super::MAX_CONE_EDGES).
+        max: usize,
+    },
     /// A grasp needs at least one contact.
     NoContacts,
+    /// More contacts than [`MAX_CONTACTS`](super::MAX_CONTACTS).
+    TooManyContacts {
+        /// The number of contacts given.
+        contacts: usize,
+        /// The limit, [`MAX_CONTACTS`](super::MAX_CONTACTS).
+        max: usize,
+    },
     /// The torque reference point has a NaN or infinite coordinate.
     NonFiniteTorqueReference,
     /// The torque scale ρ is not a finite number greater than zero.
@@ -152,7 +169,16 @@ impl fmt::Display for GraspError {
                 f,
                 "{cone_edges} friction-cone edges are too few (at least 3 are needed)"
             ),
+            GraspError::TooManyConeEdges { cone_edges, max } => write!(
+                f,
+                "{cone_edges} friction-cone edges are too many (at most {max}: more change no \
+                 answer and would only cost memory)"
+            ),
             GraspError::NoContacts => write!(f, "a grasp needs at least one contact"),
+            GraspError::TooManyContacts { contacts, max } => write!(
+                f,
+                "{contacts} contacts are too many for one grasp (at most {max})"
+            ),
             GraspError::NonFiniteTorqueReference => {
                 write!(
                     f,
@@ -186,6 +212,14 @@ mod tests {
             GraspError::NoContacts,
             GraspError::NonFiniteTorqueReference,
             GraspError::InvalidTorqueScale { torque_scale: 0.0 },
+            GraspError::TooManyConeEdges {
+                cone_edges: 5000,
+                max: 1024,
+            },
+            GraspError::TooManyContacts {
+                contacts: 300,
+                max: 256,
+            },
         ]
     }
 
@@ -208,6 +242,8 @@ mod tests {
         }
         assert!(all()[6].to_string().contains("-0.5"));
         assert!(all()[7].to_string().contains('2'));
+        assert!(all()[11].to_string().contains("5000") && all()[11].to_string().contains("1024"));
+        assert!(all()[12].to_string().contains("300") && all()[12].to_string().contains("256"));
         assert_eq!(
             GraspError::ZeroTangent { contact: Some(3) }.to_string(),
             "contact 3: the tangent is the zero vector"

@@ -5,6 +5,21 @@ use std::f64::consts::PI;
 use super::vec3::{add, scale};
 use super::{Contact, GraspError};
 
+/// The most friction-cone edges a [`FrictionModel`] accepts: 1024.
+///
+/// Why this bound: a k-edge pyramid inscribed in the friction cone misses it by at most
+/// 1 − cos(π/k) of the cone's radius, 4.7·10⁻⁶ at k = 1024 — far below the precision to which any
+/// friction coefficient is known, so more edges change no answer that matters. Every set built from
+/// a model grows with k: a grasp's Q1 wrench set has m·k points, its Q∞ Minkowski sum k^m, and the
+/// object wrench space of a mesh 3·(k + 1) disturbances per triangle (about 148 KB per triangle at
+/// the limit). Without a bound, one grasp asking for 10¹² edges would try to allocate terabytes and
+/// abort the process. At the limit, Q1 of a 4-contact grasp by the partial method takes well under
+/// a second (docs/limits.md).
+pub const MAX_CONE_EDGES: usize = 1024;
+
+/// The fewest friction-cone edges a [`FrictionModel`] accepts: 3 (fewer span no cone).
+pub const MIN_CONE_EDGES: usize = 3;
+
 /// Coulomb friction with coefficient μ, linearised by k cone edges.
 ///
 /// Edge j (0 ≤ j < k) of a contact with unit inward normal n and unit tangent t is
@@ -26,13 +41,30 @@ impl FrictionModel {
     /// # Errors
     ///
     /// [`GraspError::InvalidFriction`] when μ is negative, NaN or infinite;
-    /// [`GraspError::TooFewConeEdges`] when k < 3.
+    /// [`GraspError::TooFewConeEdges`] when k < [`MIN_CONE_EDGES`] (3);
+    /// [`GraspError::TooManyConeEdges`] when k > [`MAX_CONE_EDGES`] (1024). Nothing is allocated
+    /// either way.
+    ///
+    /// ```
+    /// use pqhull::grasp::{FrictionModel, GraspError, MAX_CONE_EDGES};
+    ///
+    /// assert!(FrictionModel::try_new(0.5, MAX_CONE_EDGES).is_ok());
+    /// let err = FrictionModel::try_new(0.5, 1_000_000_000_000).unwrap_err();
+    /// assert!(matches!(err, GraspError::TooManyConeEdges { max: MAX_CONE_EDGES, .. }));
+    /// assert!(err.to_string().contains("at most 1024"));
+    /// ```
     pub fn try_new(friction: f64, cone_edges: usize) -> Result<FrictionModel, GraspError> {
         if !friction.is_finite() || friction < 0.0 {
             return Err(GraspError::InvalidFriction { friction });
         }
-        if cone_edges < 3 {
+        if cone_edges < MIN_CONE_EDGES {
             return Err(GraspError::TooFewConeEdges { cone_edges });
+        }
+        if cone_edges > MAX_CONE_EDGES {
+            return Err(GraspError::TooManyConeEdges {
+                cone_edges,
+                max: MAX_CONE_EDGES,
+            });
         }
         Ok(FrictionModel {
             friction,
@@ -45,7 +77,7 @@ impl FrictionModel {
         self.friction
     }
 
-    /// The number of cone edges k (≥ 3).
+    /// The number of cone edges k ([`MIN_CONE_EDGES`] ≤ k ≤ [`MAX_CONE_EDGES`]).
     pub fn cone_edges(&self) -> usize {
         self.cone_edges
     }
@@ -100,6 +132,32 @@ mod tests {
         }
         let fm = FrictionModel::try_new(0.0, 3).unwrap();
         assert_eq!((fm.friction(), fm.cone_edges()), (0.0, 3));
+    }
+
+    #[test]
+    fn cone_edges_are_bounded_before_anything_is_allocated() {
+        let fm = FrictionModel::try_new(0.5, MAX_CONE_EDGES).unwrap();
+        assert_eq!(fm.cone_edges(), MAX_CONE_EDGES);
+        for k in [MAX_CONE_EDGES + 1, 1 << 40, usize::MAX] {
+            let err = FrictionModel::try_new(0.5, k).unwrap_err();
+            assert_eq!(
+                err,
+                GraspError::TooManyConeEdges {
+                    cone_edges: k,
+                    max: MAX_CONE_EDGES
+                }
+            );
+            let message = err.to_string();
+            assert!(
+                message.contains(&k.to_string()) && message.contains("at most 1024"),
+                "{message}"
+            );
+        }
+        // μ is checked first, whatever k is.
+        assert!(matches!(
+            FrictionModel::try_new(f64::NAN, usize::MAX),
+            Err(GraspError::InvalidFriction { .. })
+        ));
     }
 
     #[test]

@@ -71,9 +71,19 @@ mod wrench;
 
 pub use contact::{Contact, TANGENT_PARALLEL_TOLERANCE};
 pub use error::GraspError;
-pub use friction::FrictionModel;
+pub use friction::{FrictionModel, MAX_CONE_EDGES, MIN_CONE_EDGES};
 
 use vec3::is_finite;
+
+/// The most contacts a [`Grasp`] accepts: 256.
+///
+/// Why this bound: grasps have a few contacts (a hand's fingertips and phalanges, a few dozen for
+/// whole-arm grasps or contact patches sampled as points); 256 leaves room for all of them. With
+/// [`MAX_CONE_EDGES`] it bounds a grasp's Q1 wrench set to 256 · 1024 = 262,144 points (12.6 MB);
+/// Q1 of such a grasp by the partial method takes seconds (measured in docs/limits.md). Q∞'s
+/// Minkowski sum has k^m points and is never materialised by the partial method, but its time
+/// grows quickly with m: this bound does not make Q∞ of hundreds of contacts fast.
+pub const MAX_CONTACTS: usize = 256;
 
 /// A grasp: m ≥ 1 contacts sharing one friction model, a torque reference point c and a torque
 /// scale ρ (see the [module docs](self) for the conventions).
@@ -92,7 +102,8 @@ impl Grasp {
     ///
     /// # Errors
     ///
-    /// [`GraspError::NoContacts`] when `contacts` is empty.
+    /// [`GraspError::NoContacts`] when `contacts` is empty, [`GraspError::TooManyContacts`] when
+    /// it has more than [`MAX_CONTACTS`].
     pub fn try_new(contacts: Vec<Contact>, friction: FrictionModel) -> Result<Grasp, GraspError> {
         Grasp::builder(contacts, friction).build()
     }
@@ -112,7 +123,7 @@ impl Grasp {
         &self.contacts
     }
 
-    /// The number of contacts m (≥ 1).
+    /// The number of contacts m (1 ≤ m ≤ [`MAX_CONTACTS`]).
     pub fn contact_count(&self) -> usize {
         self.contacts.len()
     }
@@ -162,11 +173,18 @@ impl GraspBuilder {
     /// # Errors
     ///
     /// [`GraspError::NoContacts`] when there are no contacts,
+    /// [`GraspError::TooManyContacts`] when there are more than [`MAX_CONTACTS`],
     /// [`GraspError::NonFiniteTorqueReference`] when c has a NaN or infinite coordinate,
     /// [`GraspError::InvalidTorqueScale`] when ρ is not finite or not greater than 0.
     pub fn build(self) -> Result<Grasp, GraspError> {
         if self.contacts.is_empty() {
             return Err(GraspError::NoContacts);
+        }
+        if self.contacts.len() > MAX_CONTACTS {
+            return Err(GraspError::TooManyContacts {
+                contacts: self.contacts.len(),
+                max: MAX_CONTACTS,
+            });
         }
         if !is_finite(self.torque_reference) {
             return Err(GraspError::NonFiniteTorqueReference);

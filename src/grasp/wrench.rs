@@ -312,6 +312,23 @@ mod tests {
     }
 
     #[test]
+    fn contact_count_is_bounded() {
+        use crate::grasp::MAX_CONTACTS;
+        let fm = FrictionModel::try_new(0.5, 4).unwrap();
+        let one = cube_contacts()[0];
+        assert!(Grasp::try_new(vec![one; MAX_CONTACTS], fm).is_ok());
+        let got = Grasp::try_new(vec![one; MAX_CONTACTS + 1], fm);
+        assert_eq!(
+            got,
+            Err(GraspError::TooManyContacts {
+                contacts: MAX_CONTACTS + 1,
+                max: MAX_CONTACTS
+            })
+        );
+        assert!(got.unwrap_err().to_string().contains("at most 256"));
+    }
+
+    #[test]
     #[should_panic(expected = "the buffer holds 3 wrenches")]
     fn contact_wrenches_rejects_a_wrong_buffer() {
         let fm = FrictionModel::try_new(0.5, 4).unwrap();

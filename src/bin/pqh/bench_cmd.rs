@@ -8,6 +8,7 @@ use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, evaluate_batch}
 use pqhull::grasp::{FrictionModel, Grasp};
 use pqhull::rbox::Rng;
 use serde_json::{Value, json};
+use std::io::Write;
 use std::time::Instant;
 
 pub const GWS_LONG_ABOUT: &str = "\
@@ -71,17 +72,18 @@ impl QinfVariant {
 
 #[derive(Debug, Args)]
 pub struct GwsArgs {
-    /// Random grasps per k (partial method, Q∞ and batch)
-    #[arg(long, default_value_t = 200)]
+    /// Random grasps per k (partial method, Q∞ and batch), 1 to 100000
+    #[arg(long, default_value_t = 200, value_parser = crate::limits::bench_grasps())]
     pub grasps: usize,
-    /// At most this many of them for the full-hull methods (they are slow at large k)
-    #[arg(long, default_value_t = 10)]
+    /// At most this many of them for the full-hull methods (they are slow at large k), 0 to 100000
+    #[arg(long, default_value_t = 10, value_parser = crate::limits::bench_subset())]
     pub full_grasps: usize,
-    /// Cone edges, comma separated
-    #[arg(long, value_delimiter = ',', default_value = "4,8,16,32,64")]
+    /// Cone edges, comma separated, each 3 to 1024
+    #[arg(long, value_delimiter = ',', default_value = "4,8,16,32,64",
+          value_parser = crate::limits::cone_edges())]
     pub edges: Vec<usize>,
-    /// Contacts per grasp
-    #[arg(long, default_value_t = 4)]
+    /// Contacts per grasp, 1 to 256
+    #[arg(long, default_value_t = 4, value_parser = crate::limits::contacts())]
     pub contacts: usize,
     /// Q1 methods, comma separated (qhull needs the `qhull` feature); partial always runs, first
     #[arg(
@@ -103,11 +105,12 @@ pub struct GwsArgs {
         default_value = "zero-wrench,plain"
     )]
     pub qinf: Vec<QinfVariant>,
-    /// Batch pool sizes, comma separated [default: 1,<available parallelism>]
-    #[arg(long, value_delimiter = ',', value_name = "N,...")]
+    /// Batch pool sizes, comma separated, each 1 to 256 [default: 1,<available parallelism>]
+    #[arg(long, value_delimiter = ',', value_name = "N,...",
+          value_parser = crate::limits::threads())]
     pub threads: Option<Vec<usize>>,
-    /// Timed rounds of each batch measurement (the median is reported); 0: no batch
-    #[arg(long, default_value_t = 3)]
+    /// Timed rounds of each batch measurement (the median is reported), 0 to 1000; 0: no batch
+    #[arg(long, default_value_t = 3, value_parser = crate::limits::count(0, 1000))]
     pub batch_rounds: usize,
     /// Each batch round repeats the set until this much one-thread work (ms); 0: one pass
     #[arg(long, default_value_t = 200.0)]
@@ -231,10 +234,11 @@ fn thread_counts(args: &GwsArgs) -> Result<Vec<usize>, CliError> {
             if n > 1 { vec![1, n] } else { vec![1] }
         }
     };
-    if counts.contains(&0) {
-        return Err(CliError::Usage(
-            "--threads: pool sizes must be at least 1".into(),
-        ));
+    let max = crate::limits::MAX_THREADS;
+    if let Some(n) = counts.iter().find(|&&n| !(1..=max).contains(&n)) {
+        return Err(CliError::Usage(format!(
+            "--threads: pool size {n} is not in 1..={max}"
+        )));
     }
     Ok(counts)
 }
@@ -346,6 +350,8 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
             variants.push(v);
         }
     }
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::new(stdout.lock());
     let mut report = Vec::new();
     for &k in &args.edges {
         let set = grasps(args.seed, args.grasps, args.contacts, k)?;
@@ -446,7 +452,8 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
         }));
     }
     if args.json {
-        println!(
+        writeln!(
+            out,
             "{}",
             json!({
                 "benchmark": "gws",
@@ -458,10 +465,12 @@ pub fn run(args: &BenchArgs) -> Result<(), CliError> {
                 "qinf_max_edges": args.qinf_max_edges,
                 "results": report,
             })
-        );
+        )?;
+        out.flush()?;
         return Ok(());
     }
-    print_tables(args, &report);
+    print_tables(&mut out, args, &report)?;
+    out.flush()?;
     Ok(())
 }
 
@@ -496,12 +505,14 @@ fn num(v: &Value) -> f64 {
     v.as_f64().unwrap_or(f64::NAN)
 }
 
-fn print_tables(args: &GwsArgs, report: &[Value]) {
-    println!(
+fn print_tables(out: &mut impl Write, args: &GwsArgs, report: &[Value]) -> std::io::Result<()> {
+    writeln!(
+        out,
         "GWS Q1, {} contacts, random grasps on a 1 x 0.4 x 0.2 bar (seed {})",
         args.contacts, args.seed
-    );
-    println!(
+    )?;
+    writeln!(
+        out,
         "{:>4} {:>8} {:>6} {:>4} {:>12} {:>12} {:>10} {:>10} {:>10} {:>10} {:>10} {:>10}",
         "k",
         "method",
@@ -515,10 +526,11 @@ fn print_tables(args: &GwsArgs, report: &[Value]) {
         "x time fc",
         "x points",
         "x facets"
-    );
+    )?;
     for entry in report {
         for m in entry["methods"].as_array().expect("array") {
-            println!(
+            writeln!(
+                out,
                 "{:>4} {:>8} {:>6} {:>4} {:>12.1} {:>12.1} {:>10.1} {:>10.1} {:>10.1} {:>10.1} \
                  {:>10.2} {:>10.1}",
                 entry["cone_edges"].as_u64().unwrap_or(0),
@@ -533,7 +545,7 @@ fn print_tables(args: &GwsArgs, report: &[Value]) {
                 num(&m["force_closure_time_ratio_vs_partial"]),
                 num(&m["points_ratio_vs_partial"]),
                 num(&m["facets_ratio_vs_partial"])
-            );
+            )?;
         }
         for m in entry["methods"].as_array().expect("array") {
             if m["errors"] != 0 {
@@ -552,29 +564,36 @@ fn print_tables(args: &GwsArgs, report: &[Value]) {
             }
         }
         if entry["disagreements"] != 0 {
-            println!(
+            writeln!(
+                out,
                 "     !! {} grasps where methods disagree",
                 entry["disagreements"]
-            );
+            )?;
         }
     }
-    println!(
+    writeln!(
+        out,
         "x = full method / partial, on the grasps both evaluated (time: median of per-grasp ratios; \
          x time fc: the same over the force-closure grasps alone)"
-    );
+    )?;
     if report
         .iter()
         .any(|e| e["qinf"].as_array().is_some_and(|q| !q.is_empty()))
     {
-        println!();
-        println!("Q-inf by the partial hull (implicit Minkowski sum; fc = force closure)");
-        println!(
+        writeln!(out)?;
+        writeln!(
+            out,
+            "Q-inf by the partial hull (implicit Minkowski sum; fc = force closure)"
+        )?;
+        writeln!(
+            out,
             "{:>4} {:>12} {:>6} {:>6} {:>12} {:>12} {:>12} {:>10} {:>10}",
             "k", "variant", "grasps", "fc", "median_us", "mean_us", "max_us", "points", "facets"
-        );
+        )?;
         for entry in report {
             for q in entry["qinf"].as_array().into_iter().flatten() {
-                println!(
+                writeln!(
+                    out,
                     "{:>4} {:>12} {:>6} {:>6} {:>12.1} {:>12.1} {:>12.1} {:>10.1} {:>10.1}",
                     entry["cone_edges"].as_u64().unwrap_or(0),
                     q["variant"].as_str().unwrap_or(""),
@@ -585,13 +604,14 @@ fn print_tables(args: &GwsArgs, report: &[Value]) {
                     num(&q["max_us"]),
                     num(&q["mean_points_processed"]),
                     num(&q["mean_facets_created"])
-                );
+                )?;
                 if q["errors"] != 0 {
-                    println!(
+                    writeln!(
+                        out,
                         "     !! {} grasps not evaluated, first: {}",
                         q["errors"],
                         q["first_error"].as_str().unwrap_or("")
-                    );
+                    )?;
                 }
             }
         }
@@ -600,19 +620,22 @@ fn print_tables(args: &GwsArgs, report: &[Value]) {
         .iter()
         .any(|e| e["batch"].as_array().is_some_and(|b| !b.is_empty()))
     {
-        println!();
-        println!(
+        writeln!(out)?;
+        writeln!(
+            out,
             "Batch Q1 (partial, evaluate_batch), median of {} rounds of `passes` passes each \
              (median_s: per pass)",
             args.batch_rounds
-        );
-        println!(
+        )?;
+        writeln!(
+            out,
             "{:>4} {:>7} {:>6} {:>6} {:>10} {:>10} {:>10}",
             "k", "threads", "grasps", "passes", "median_s", "grasps/s", "x 1 thread"
-        );
+        )?;
         for entry in report {
             for b in entry["batch"].as_array().into_iter().flatten() {
-                println!(
+                writeln!(
+                    out,
                     "{:>4} {:>7} {:>6} {:>6} {:>10.4} {:>10.1} {:>10.2}",
                     entry["cone_edges"].as_u64().unwrap_or(0),
                     b["threads"].as_u64().unwrap_or(0),
@@ -621,14 +644,16 @@ fn print_tables(args: &GwsArgs, report: &[Value]) {
                     num(&b["median_s"]),
                     num(&b["grasps_per_s"]),
                     num(&b["speedup_vs_1_thread"])
-                );
+                )?;
                 if b["mismatches"] != 0 {
-                    println!(
+                    writeln!(
+                        out,
                         "     !! {} batch results differ from sequential",
                         b["mismatches"]
-                    );
+                    )?;
                 }
             }
         }
     }
+    Ok(())
 }

@@ -11,6 +11,7 @@ use pqhull::grasp::{FrictionModel, Grasp};
 use pqhull::mesh::SurfaceSampler;
 use pqhull::rbox::Rng;
 use serde_json::{Value, json};
+use std::io::Write;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -19,21 +20,22 @@ pub struct OwsArgs {
     /// Object mesh (OBJ or STL) [default: the built-in spot.obj]
     #[arg(long)]
     pub mesh: Option<PathBuf>,
-    /// Random grasps (contacts sampled on the surface by area)
-    #[arg(long, default_value_t = 200)]
+    /// Random grasps (contacts sampled on the surface by area), 1 to 100000
+    #[arg(long, default_value_t = 200, value_parser = crate::limits::bench_grasps())]
     pub grasps: usize,
-    /// At most this many of them for the brute-force method (it is slow)
-    #[arg(long, default_value_t = 20)]
+    /// At most this many of them for the brute-force method (it is slow), 0 to 100000
+    #[arg(long, default_value_t = 20, value_parser = crate::limits::bench_subset())]
     pub brute_grasps: usize,
     /// At most this many for Algorithm 2 as published (`partial-rays`: every disturbance
-    /// assigned to a facet; tens of ms per grasp on a mesh)
-    #[arg(long, default_value_t = 20)]
+    /// assigned to a facet; tens of ms per grasp on a mesh), 0 to 100000
+    #[arg(long, default_value_t = 20, value_parser = crate::limits::bench_subset())]
     pub rays_grasps: usize,
-    /// Contacts per grasp
-    #[arg(long, default_value_t = 4)]
+    /// Contacts per grasp, 1 to 256
+    #[arg(long, default_value_t = 4, value_parser = crate::limits::contacts())]
     pub contacts: usize,
-    /// Cone edges, for the grasps and the disturbances alike
-    #[arg(long, default_value_t = 16)]
+    /// Cone edges, for the grasps and the disturbances alike, 3 to 1024 (the object wrench space
+    /// of a mesh holds 3·(k + 1) disturbances per triangle)
+    #[arg(long, default_value_t = 16, value_parser = crate::limits::cone_edges())]
     pub edges: usize,
     /// Friction coefficient, for the grasps and the disturbances alike
     #[arg(long, default_value_t = 0.5)]
@@ -228,11 +230,15 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
         },
         "ellipsoid_relative_error": quantiles(&mut errors),
     });
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::new(stdout.lock());
     if args.json {
-        println!("{report}");
+        writeln!(out, "{report}")?;
+        out.flush()?;
         return Ok(());
     }
-    println!(
+    writeln!(
+        out,
         "OWS on {mesh_name}: {} vertices, {} disturbances (prepared in {prepare_ms:.0} ms); {} \
          grasps, {} contacts × {} edges, μ = {}",
         report["vertices"],
@@ -241,52 +247,59 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
         args.contacts,
         args.edges,
         args.friction
-    );
-    println!(
+    )?;
+    writeln!(
+        out,
         "force closure: {force_closure}; partial vs brute force: {disagreements} disagreements \
          of {}; vs partial-rays: {rays_disagreements} of {}",
         brute.len(),
         rays.len()
-    );
-    println!(
+    )?;
+    writeln!(
+        out,
         "(the ellipsoid of the disturbances took {ellipsoid_ms:.1} ms, once per object; \
          '-fc' rows: force-closure grasps only)"
-    );
-    println!(
+    )?;
+    writeln!(
+        out,
         "{:<16} {:>7} {:>12} {:>12}",
         "method", "grasps", "median µs", "mean µs"
-    );
+    )?;
     for row in &rows {
-        println!(
+        writeln!(
+            out,
             "{:<16} {:>7} {:>12.1} {:>12.1}",
             row["method"].as_str().unwrap_or(""),
             row["grasps"].as_u64().unwrap_or(0),
             median_of(row),
             row["mean_us"].as_f64().unwrap_or(f64::NAN)
-        );
+        )?;
     }
     let ratio = |key: &str| report["ratios"][key].as_f64().unwrap_or(f64::NAN);
-    println!(
+    writeln!(
+        out,
         "brute / partial (same grasps): {:.1}× (force closure only: {:.1}×)   partial OWS / \
          partial Q1: {:.2}× (force closure only: {:.2}×)",
         ratio("brute_over_partial"),
         ratio("brute_over_partial_force_closure"),
         ratio("partial_over_q1"),
         ratio("partial_over_q1_force_closure")
-    );
-    println!(
+    )?;
+    writeln!(
+        out,
         "partial-rays (Algorithm 2 as published) / partial (same grasps): {:.1}× (force closure \
          only: {:.1}×)",
         ratio("rays_over_partial"),
         ratio("rays_over_partial_force_closure")
-    );
+    )?;
     let e = &report["ellipsoid_relative_error"];
     let q = |key: &str| {
         e[key]
             .as_f64()
             .map_or("-".to_string(), |x| format!("{x:+.4}"))
     };
-    println!(
+    writeln!(
+        out,
         "ellipsoid relative error (approx − exact) / exact over {} force-closure grasps: min {} \
          q25 {} median {} q75 {} max {}",
         e["count"],
@@ -295,6 +308,7 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
         q("median"),
         q("q75"),
         q("max")
-    );
+    )?;
+    out.flush()?;
     Ok(())
 }

@@ -185,9 +185,8 @@ pub fn run(args: &DemoArgs) -> Result<(), CliError> {
                 }
             );
         }
-        match &view {
-            Ok(path) => println!("\nwrote {} (Q1-best beside OWS-best)", path.display()),
-            Err(e) => println!("\nno view written: {e}"),
+        if let Ok(path) = &view {
+            println!("\nwrote {} (Q1-best beside OWS-best)", path.display());
         }
     }
     if runs
@@ -200,5 +199,7 @@ pub fn run(args: &DemoArgs) -> Result<(), CliError> {
                 .into(),
         ));
     }
+    // The view was asked for (--output has a default): not writing it is an error (exit 2).
+    view?;
     Ok(())
 }

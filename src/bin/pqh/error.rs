@@ -2,7 +2,7 @@
 
 use std::fmt;
 
-/// Everything that makes `pqh` fail. Each is reported as one `pqh: ` line on stderr.
+/// Everything that makes `pqh` fail. Each is reported as one `pqh: error: ` line on stderr.
 #[derive(Debug)]
 pub enum CliError {
     /// Bad option values (exit 2).
@@ -11,7 +11,7 @@ pub enum CliError {
     Input(String),
     /// The points admit no hull (exit 1).
     Geometry(String),
-    /// Writing the output failed (exit 1; a closed pipe is not reported).
+    /// Writing the output failed (exit 2; a closed pipe is not reported and exits 0).
     Output(std::io::Error),
 }
 
@@ -19,8 +19,8 @@ impl CliError {
     /// The process exit status for this error.
     pub fn exit_code(&self) -> u8 {
         match self {
-            CliError::Usage(_) | CliError::Input(_) => 2,
-            CliError::Geometry(_) | CliError::Output(_) => 1,
+            CliError::Usage(_) | CliError::Input(_) | CliError::Output(_) => 2,
+            CliError::Geometry(_) => 1,
         }
     }
 }

@@ -2,11 +2,12 @@
 //! order.
 
 use crate::error::CliError;
+use crate::limits::{MAX_CONE_EDGES, MAX_CONTACTS, MAX_THREADS, MIN_CONE_EDGES};
 use clap::{Args, ValueEnum};
 use pqhull::Stats;
 use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod, OwsQuality, SpaceOrigin};
 use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, QualityError};
-use pqhull::grasp::{Contact, FrictionModel, Grasp};
+use pqhull::grasp::{Contact, FrictionModel, Grasp, GraspError};
 use pqhull::mesh::{CentreKind, Mesh};
 use serde_json::{Value, json};
 use std::io::{Read, Write};
@@ -34,7 +35,12 @@ torque_reference/torque_scale), or --disturbances FILE (one
 task wrench space). Methods: partial (PQHOWS, default), brute (full hull x every disturbance),
 ellipsoid (Borst et al.'s approximation; a lower bound; force_closure is decided on the grasp's own
 wrenches, and an error line replaces a value the mapped hull cannot give). quality is null and
-force_closure false for a grasp that is not force closure.";
+force_closure false for a grasp that is not force closure.
+
+Limits (docs/limits.md): cone_edges from 3 to 1024, 1 to 256 contacts per grasp, --threads 1 to
+256; a grasp beyond a limit gets its own error line naming the field and the limit. Input with no
+grasp at all, or in which no grasp could be read (every one is an error line), exits with status
+2 after the error lines.";
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 pub enum MetricArg {
@@ -70,8 +76,8 @@ pub struct GraspArgs {
     /// Method
     #[arg(long, value_enum, default_value_t = MethodArg::Partial)]
     pub method: MethodArg,
-    /// Worker threads (default: all cores)
-    #[arg(long)]
+    /// Worker threads, 1 to 256 [default: all cores]
+    #[arg(long, value_parser = crate::limits::threads())]
     pub threads: Option<usize>,
     /// Q∞ with the zero wrench added to every contact (GraspIt!'s variant)
     #[arg(long)]
@@ -85,8 +91,8 @@ pub struct GraspArgs {
     /// OWS with --mesh: friction coefficient of the disturbance cones (default: the first grasp's)
     #[arg(long)]
     pub ows_friction: Option<f64>,
-    /// OWS with --mesh: edges of the disturbance cones (default: the first grasp's)
-    #[arg(long)]
+    /// OWS with --mesh: edges of the disturbance cones, 3 to 1024 (default: the first grasp's)
+    #[arg(long, value_parser = crate::limits::cone_edges())]
     pub ows_edges: Option<usize>,
 }
 
@@ -134,20 +140,140 @@ fn read_input(file: &Option<PathBuf>) -> Result<String, CliError> {
     }
 }
 
-/// The grasps as JSON values: one document (object or array) or JSON Lines. A line that is not
-/// JSON becomes an error entry for its index.
+/// The grasps as JSON values: one document (object or array) or JSON Lines. An array element or a
+/// line that is not JSON becomes an error entry for its index, so one bad grasp (a number out of
+/// `f64`'s range, say) does not hide the others.
 fn split(text: &str) -> Vec<Result<Value, String>> {
-    if let Ok(value) = serde_json::from_str::<Value>(text) {
-        return match value {
-            Value::Array(items) => items.into_iter().map(Ok).collect(),
-            other => vec![Ok(other)],
-        };
+    let trimmed = text.trim();
+    if trimmed.is_empty() {
+        return Vec::new();
+    }
+    if trimmed.starts_with('[')
+        && let Some(elements) = array_elements(trimmed)
+    {
+        return elements
+            .into_iter()
+            .map(|e| serde_json::from_str(e).map_err(|err| not_json(e, &err)))
+            .collect();
+    }
+    match serde_json::from_str::<Value>(text) {
+        Ok(value) => return vec![Ok(value)],
+        // One object over several lines (not JSON Lines): one entry.
+        Err(err) if trimmed.starts_with('{') && value_end(trimmed) == Some(trimmed.len()) => {
+            return vec![Err(not_json(trimmed, &err))];
+        }
+        Err(_) => {}
     }
     text.lines()
         .enumerate()
         .filter(|(_, l)| !l.trim().is_empty())
-        .map(|(n, l)| serde_json::from_str(l).map_err(|e| format!("line {}: not JSON: {e}", n + 1)))
+        .map(|(n, l)| {
+            serde_json::from_str(l).map_err(|e| format!("line {}: {}", n + 1, not_json(l, &e)))
+        })
         .collect()
+}
+
+/// The byte offset just after the JSON value (object or array) that `text` starts with, found by
+/// matching brackets outside strings; `None` if they never balance.
+fn value_end(text: &str) -> Option<usize> {
+    let mut depth = 0usize;
+    let (mut in_string, mut escaped) = (false, false);
+    for (i, b) in text.bytes().enumerate() {
+        if in_string {
+            match b {
+                _ if escaped => escaped = false,
+                b'\\' => escaped = true,
+                b'"' => in_string = false,
+                _ => {}
+            }
+            continue;
+        }
+        match b {
+            b'"' => in_string = true,
+            b'[' | b'{' => depth += 1,
+            b']' | b'}' => {
+                depth = depth.checked_sub(1)?;
+                if depth == 0 {
+                    return Some(i + 1);
+                }
+            }
+            _ => {}
+        }
+    }
+    None
+}
+
+/// The top-level elements of the JSON array `text` (which starts with `[`), as text, split at
+/// the commas outside strings and nested values; `None` unless the array's brackets balance and
+/// only whitespace follows it.
+fn array_elements(text: &str) -> Option<Vec<&str>> {
+    if value_end(text)? != text.len() || !text.ends_with(']') {
+        return None;
+    }
+    let inner = &text[1..text.len() - 1];
+    let mut elements = Vec::new();
+    let mut depth = 0usize;
+    let (mut in_string, mut escaped) = (false, false);
+    let mut start = 0;
+    for (i, b) in inner.bytes().enumerate() {
+        if in_string {
+            match b {
+                _ if escaped => escaped = false,
+                b'\\' => escaped = true,
+                b'"' => in_string = false,
+                _ => {}
+            }
+            continue;
+        }
+        match b {
+            b'"' => in_string = true,
+            b'[' | b'{' => depth += 1,
+            b']' | b'}' => depth = depth.saturating_sub(1),
+            b',' if depth == 0 => {
+                elements.push(inner[start..i].trim());
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    let last = inner[start..].trim();
+    if !last.is_empty() || !elements.is_empty() {
+        elements.push(last);
+    }
+    Some(elements)
+}
+
+/// serde_json's error on `text`, naming the field when a number is out of `f64`'s range
+/// (serde_json cannot represent it, so the grasp never reaches [`parse_grasp`]).
+fn not_json(text: &str, err: &serde_json::Error) -> String {
+    let message = err.to_string();
+    if message.starts_with("number out of range")
+        && let Some(field) = field_before(text, err.line(), err.column())
+    {
+        let expected = if field == "cone_edges" {
+            format!(" (expected a whole number from {MIN_CONE_EDGES} to {MAX_CONE_EDGES})")
+        } else {
+            String::new()
+        };
+        return format!("\"{field}\": {message}{expected}");
+    }
+    format!("not JSON: {message}")
+}
+
+/// The name of the object key whose value contains (1-based) `line`, `column` of `text`.
+fn field_before(text: &str, line: usize, column: usize) -> Option<&str> {
+    let line_start: usize = text
+        .split_inclusive('\n')
+        .take(line.checked_sub(1)?)
+        .map(str::len)
+        .sum();
+    let mut offset = (line_start + column).min(text.len());
+    while !text.is_char_boundary(offset) {
+        offset -= 1;
+    }
+    let before = &text[..offset];
+    let key = before[..before.rfind(':')?].trim_end().strip_suffix('"')?;
+    Some(&key[key.rfind('"')? + 1..])
 }
 
 fn vec3(value: &Value, what: &str) -> Result<[f64; 3], String> {
@@ -171,6 +297,13 @@ pub fn parse_grasp(value: &Value) -> Result<Grasp, String> {
         .get("contacts")
         .and_then(Value::as_array)
         .ok_or("missing \"contacts\" array")?;
+    if contacts.len() > MAX_CONTACTS {
+        let too_many = GraspError::TooManyContacts {
+            contacts: contacts.len(),
+            max: MAX_CONTACTS,
+        };
+        return Err(format!("\"contacts\": {too_many}"));
+    }
     let mut parsed = Vec::with_capacity(contacts.len());
     for (i, c) in contacts.iter().enumerate() {
         let field = |name: &str| {
@@ -191,11 +324,13 @@ pub fn parse_grasp(value: &Value) -> Result<Grasp, String> {
         .get("friction")
         .and_then(Value::as_f64)
         .ok_or("missing or non-numeric \"friction\"")?;
-    let edges = object
-        .get("cone_edges")
-        .and_then(Value::as_u64)
-        .ok_or("missing or non-integer \"cone_edges\"")?;
-    let model = FrictionModel::try_new(friction, edges as usize).map_err(|e| e.to_string())?;
+    let edges = cone_edges(object.get("cone_edges").ok_or("missing \"cone_edges\"")?)?;
+    let model = FrictionModel::try_new(friction, edges).map_err(|e| match e {
+        GraspError::TooFewConeEdges { .. } | GraspError::TooManyConeEdges { .. } => {
+            format!("\"cone_edges\": {e}")
+        }
+        _ => e.to_string(),
+    })?;
     let mut builder = Grasp::builder(parsed, model);
     if let Some(c) = object.get("torque_reference") {
         builder = builder.torque_reference(vec3(c, "torque_reference")?);
@@ -205,6 +340,23 @@ pub fn parse_grasp(value: &Value) -> Result<Grasp, String> {
         builder = builder.torque_scale(rho);
     }
     builder.build().map_err(|e| e.to_string())
+}
+
+/// The number of cone edges in `value`: a whole number (`8.0` counts). Too large a number is
+/// an error naming the limit; otherwise the range is checked by [`FrictionModel::try_new`].
+fn cone_edges(value: &Value) -> Result<usize, String> {
+    if let Some(k) = value.as_u64() {
+        return Ok(usize::try_from(k).unwrap_or(usize::MAX));
+    }
+    match value.as_f64() {
+        Some(k) if k > MAX_CONE_EDGES as f64 => Err(format!(
+            "\"cone_edges\": {value} friction-cone edges are too many (at most {MAX_CONE_EDGES})"
+        )),
+        Some(k) if k >= 0.0 && k.fract() == 0.0 => Ok(k as usize),
+        _ => Err(format!(
+            "\"cone_edges\": {value} is not a whole number from {MIN_CONE_EDGES} to {MAX_CONE_EDGES}"
+        )),
+    }
 }
 
 /// The output line of grasp `index`: its verdict, value and work, or the error that stopped it.
@@ -271,7 +423,9 @@ pub fn with_threads<T: Send>(
     work: impl FnOnce() -> T + Send,
 ) -> Result<T, CliError> {
     match threads {
-        Some(0) => Err(CliError::Usage("--threads must be at least 1".into())),
+        Some(n) if !(1..=MAX_THREADS).contains(&n) => Err(CliError::Usage(format!(
+            "--threads: {n} is not in 1..={MAX_THREADS}"
+        ))),
         Some(n) => Ok(rayon::ThreadPoolBuilder::new()
             .num_threads(n)
             .build()
@@ -366,7 +520,7 @@ fn run_ows(
     let started = std::time::Instant::now();
     let space = prepare_space(args.mesh.as_deref(), args.disturbances.as_deref(), friction)?;
     eprintln!(
-        "pqh: {} (prepared in {:.1} ms)",
+        "pqh: note: {} (prepared in {:.1} ms)",
         describe_space(&space),
         started.elapsed().as_secs_f64() * 1e3
     );
@@ -418,10 +572,17 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
     }
     let text = read_input(&args.file)?;
     let values = split(&text);
+    if values.is_empty() {
+        return Err(CliError::Input(format!(
+            "{}: no grasp in the input (expected a JSON object, a JSON array or JSON Lines)",
+            input_name(&args.file)
+        )));
+    }
     let entries: Vec<Result<Grasp, String>> = values
         .iter()
         .map(|v| v.clone().and_then(|v| parse_grasp(&v)))
         .collect();
+    let readable = entries.iter().filter(|e| e.is_ok()).count();
     let lines = match args.metric {
         MetricArg::Ows => run_ows(args, entries, &values)?,
         MetricArg::Q1 | MetricArg::Qinf => {
@@ -447,5 +608,23 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
         writeln!(out, "{line}")?;
     }
     out.flush()?;
+    if readable == 0 {
+        let what = match values.len() {
+            1 => "the grasp could not be read (see its error line)".to_string(),
+            n => format!("none of the {n} grasps could be read (see the error lines)"),
+        };
+        return Err(CliError::Input(format!(
+            "{}: {what}",
+            input_name(&args.file)
+        )));
+    }
     Ok(())
+}
+
+/// The input's name in messages: the path, or `<stdin>`.
+fn input_name(file: &Option<PathBuf>) -> String {
+    match file.as_deref().filter(|p| p.as_os_str() != "-") {
+        Some(path) => path.display().to_string(),
+        None => "<stdin>".to_string(),
+    }
 }

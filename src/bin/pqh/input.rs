@@ -40,20 +40,58 @@ impl<'a> Source<'a> {
     }
 }
 
-/// Parses a point given on the command line (`x,y,...`, commas and/or spaces).
+/// Parses a point given on the command line (`x,y,...`: fields separated by commas, and/or
+/// coordinates by whitespace, as in a points file). An empty field (`1,,2`, a trailing comma) is
+/// an error naming it, not skipped.
 pub fn parse_point(option: &str, text: &str) -> Result<Vec<f64>, CliError> {
     let usage = |m: String| CliError::Usage(format!("{option}: {m}"));
-    let coords = text
-        .split(|c: char| c == ',' || c.is_whitespace())
-        .filter(|t| !t.is_empty())
-        .map(|t| match t.parse::<f64>() {
-            Ok(x) if x.is_finite() => Ok(x),
-            Ok(_) => Err(usage(format!("'{t}' is not finite"))),
-            Err(_) => Err(usage(format!("'{t}' is not a number"))),
-        })
-        .collect::<Result<Vec<_>, _>>()?;
-    if coords.is_empty() {
+    let mut coords = Vec::new();
+    if text.trim().is_empty() {
         return Err(usage("no coordinates given".to_string()));
     }
+    for (index, field) in text.split(',').enumerate() {
+        let field = field.trim();
+        if field.is_empty() {
+            return Err(usage(format!(
+                "field {} of '{text}' is empty (two commas in a row, or a comma at an end?)",
+                index + 1
+            )));
+        }
+        for t in field.split_whitespace() {
+            match t.parse::<f64>() {
+                Ok(x) if x.is_finite() => coords.push(x),
+                Ok(_) => return Err(usage(format!("'{t}' is not finite"))),
+                Err(_) => return Err(usage(format!("'{t}' is not a number"))),
+            }
+        }
+    }
     Ok(coords)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::parse_point;
+
+    #[test]
+    fn points_on_the_command_line() {
+        assert_eq!(parse_point("--origin", "1,-2").unwrap(), vec![1.0, -2.0]);
+        assert_eq!(
+            parse_point("--origin", " 1 2, 3 ").unwrap(),
+            vec![1.0, 2.0, 3.0]
+        );
+        for (text, needle) in [
+            ("1,,2", "field 2"),
+            ("1,2,", "field 3"),
+            (",1", "field 1"),
+            ("", "no coordinates"),
+            ("1,x", "'x'"),
+            ("1,inf", "not finite"),
+        ] {
+            let err = parse_point("--origin", text).unwrap_err().to_string();
+            assert!(
+                err.starts_with("--origin: ") && err.contains(needle),
+                "{text}: {err}"
+            );
+        }
+    }
 }

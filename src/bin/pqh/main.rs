@@ -10,23 +10,26 @@ mod error;
 mod grasp_cmd;
 mod hull_cmd;
 mod input;
+mod limits;
 mod plan_cmd;
 mod plan_view;
 mod progress;
 mod trace_cmd;
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 use error::CliError;
 use std::process::ExitCode;
 
 const EXIT_STATUS_HELP: &str = "\
 Exit status:
-  0  success
-  1  the points admit no hull (too few, or affinely dependent: all on one line, plane, ...)
-  2  usage or input error (bad option, unreadable file, malformed points file, unsupported
-     dimension)
+  0  success (also when the reader of the output closes the pipe early)
+  1  the points admit no hull (too few, or affinely dependent: all on one line, plane, ...), or
+     pqh demo, plan or compare found a disagreement
+  2  usage, input or output error (bad option, a size beyond its limit, unreadable or malformed
+     input, unsupported dimension, no grasp in the input, output not writable)
 
-Errors are reported on stderr as one line starting with 'pqh: '.";
+An error is one line on stderr starting with 'pqh: error: '; other lines on stderr (notes) start
+with 'pqh: note: '. Size limits and exit statuses: docs/limits.md.";
 
 /// Exact convex hulls and partial hulls in 2 to 8 dimensions.
 #[derive(Debug, Parser)]
@@ -79,8 +82,91 @@ enum Command {
     Compare(compare_cmd::CompareArgs),
 }
 
+/// The command with every limit attached (see `limits`).
+fn command() -> clap::Command {
+    limits::with_demo_limits(Cli::command())
+}
+
+/// Prints clap's `error` as `pqh` reports errors: help and version on stdout with status 0;
+/// anything else as one `pqh: error: ` line (clap's first paragraph, joined) with a hint to the
+/// subcommand's `--help`, status 2.
+fn clap_error(error: &clap::Error) -> ExitCode {
+    use clap::error::ErrorKind;
+    if matches!(
+        error.kind(),
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion
+    ) {
+        // Help and version go to stdout; a closed pipe is not an error.
+        let _ = error.print();
+        return ExitCode::SUCCESS;
+    }
+    let rendered = error.render().to_string();
+    let first_paragraph: Vec<&str> = rendered
+        .lines()
+        .map(str::trim)
+        .take_while(|l| !l.is_empty())
+        .collect();
+    let message = first_paragraph.join(" ");
+    let message = message.strip_prefix("error: ").unwrap_or(&message);
+    let message = if message.is_empty()
+        || error.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
+    {
+        "a subcommand is needed".to_string()
+    } else {
+        message.to_string()
+    };
+    eprintln!("pqh: error: {message}; try '{} --help'", invoked_command());
+    ExitCode::from(2)
+}
+
+/// `pqh` and the subcommands named on the command line (`pqh bench gws`), for the `--help` hint.
+fn invoked_command() -> String {
+    let root = command();
+    let mut current = &root;
+    let mut path = vec!["pqh".to_string()];
+    for arg in std::env::args_os().skip(1) {
+        let Some(arg) = arg.to_str() else { continue };
+        if let Some(sub) = current.find_subcommand(arg) {
+            path.push(sub.get_name().to_string());
+            current = sub;
+        }
+    }
+    path.join(" ")
+}
+
+/// `println!` panics when stdout cannot be written (a closed pipe, a full disk). The commands
+/// write through `writeln!` and report such errors themselves; this hook is the net for any
+/// `println!` left: a closed pipe ends quietly (status 0), another write error is one
+/// `pqh: error:` line with status 2, like every other output error.
+fn catch_print_failures() {
+    let default = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        let payload = info.payload();
+        let message = payload
+            .downcast_ref::<String>()
+            .map(String::as_str)
+            .or_else(|| payload.downcast_ref::<&str>().copied())
+            .unwrap_or("");
+        if let Some(reason) = message.strip_prefix("failed printing to stdout: ") {
+            if reason.contains("Broken pipe") || reason.contains("os error 32") {
+                std::process::exit(0);
+            }
+            eprintln!("pqh: error: cannot write output: {reason}");
+            std::process::exit(2);
+        }
+        default(info)
+    }));
+}
+
 fn main() -> ExitCode {
-    let cli = Cli::parse();
+    catch_print_failures();
+    let cli = match command()
+        .try_get_matches()
+        .and_then(|matches| Cli::from_arg_matches(&matches))
+    {
+        Ok(cli) => cli,
+        Err(error) => return clap_error(&error),
+    };
     progress::set_quiet(cli.quiet);
     let result = match cli.command {
         Command::Hull(args) => hull_cmd::run(&args),
@@ -97,7 +183,7 @@ fn main() -> ExitCode {
         Err(err) => {
             // One line, whatever the message contains.
             let message = err.to_string().replace(['\n', '\r'], " ");
-            eprintln!("pqh: {message}");
+            eprintln!("pqh: error: {message}");
             ExitCode::from(err.exit_code())
         }
     }
@@ -105,11 +191,9 @@ fn main() -> ExitCode {
 
 #[cfg(test)]
 mod tests {
-    use super::Cli;
-    use clap::CommandFactory;
 
     #[test]
     fn cli_definition_is_consistent() {
-        Cli::command().debug_assert();
+        super::command().debug_assert();
     }
 }

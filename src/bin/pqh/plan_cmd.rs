@@ -4,12 +4,14 @@ use crate::error::CliError;
 use crate::progress;
 use clap::{Args, ValueEnum};
 use pqhull::grasp::FrictionModel;
+use pqhull::grasp::GraspError;
 use pqhull::grasp::ows::ObjectWrenchSpace;
 use pqhull::mesh::Mesh;
 use pqhull::plan::{
-    BestComparison, PlanConfig, PlanMethod, PlanMetric, PlanReport, plan_with_progress,
+    BestComparison, PlanConfig, PlanError, PlanMethod, PlanMetric, PlanReport, plan_with_progress,
 };
 use serde_json::{Value, json};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 pub const LONG_ABOUT: &str = "\
@@ -50,17 +52,17 @@ pub struct PlanArgs {
     /// Object mesh (OBJ or STL) [default: the built-in spot.obj]
     #[arg(long)]
     pub mesh: Option<PathBuf>,
-    /// Contacts per grasp
-    #[arg(long, default_value_t = 4)]
+    /// Contacts per grasp, 1 to 256
+    #[arg(long, default_value_t = 4, value_parser = crate::limits::contacts())]
     pub contacts: usize,
-    /// Grasps sampled
-    #[arg(long, default_value_t = 200)]
+    /// Grasps sampled, 1 to 1000000
+    #[arg(long, default_value_t = 200, value_parser = crate::limits::samples())]
     pub samples: usize,
     /// Samples for the full-hull run (the first ones; 0: skip it) [default: --samples; for qinf,
     /// 2: the full method builds the hull of all k^m Minkowski points, about 2 minutes per grasp
     /// on spot at 4 contacts × 8 edges; with so few samples neither run may find a force-closure
-    /// grasp, and then nothing is compared]
-    #[arg(long)]
+    /// grasp, and then nothing is compared; at most 1000000]
+    #[arg(long, value_parser = crate::limits::count(0, crate::limits::MAX_SAMPLES))]
     pub full_samples: Option<usize>,
     /// Metric to maximise
     #[arg(long, value_enum, default_value_t = PlanMetricArg::Q1)]
@@ -68,8 +70,8 @@ pub struct PlanArgs {
     /// Friction coefficient (contacts and, for ows, disturbances)
     #[arg(long, default_value_t = 0.5)]
     pub friction: f64,
-    /// Friction cone edges
-    #[arg(long, default_value_t = 8)]
+    /// Friction cone edges, 3 to 1024
+    #[arg(long, default_value_t = 8, value_parser = crate::limits::cone_edges())]
     pub edges: usize,
     /// Seed of the contact sampling
     #[arg(long, default_value_t = 1)]
@@ -115,7 +117,13 @@ pub fn run_plan(
     let report = plan_with_progress(mesh, space, config, method, |done| {
         bar.set_position(done as u64)
     })
-    .map_err(|e| CliError::Geometry(e.to_string()));
+    .map_err(|e| match e {
+        // Sizes beyond a limit: the options' fault, not the geometry's.
+        PlanError::Empty
+        | PlanError::TooManySamples { .. }
+        | PlanError::Grasp(GraspError::TooManyContacts { .. }) => CliError::Usage(e.to_string()),
+        _ => CliError::Geometry(e.to_string()),
+    });
     bar.finish_and_clear();
     report
 }
@@ -225,6 +233,8 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
             )
         })
     });
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::new(stdout.lock());
     if args.json {
         let document = json!({
             "mesh": name,
@@ -241,22 +251,25 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
             "comparison_note": note,
             "output": views.as_ref().map(|p| p.display().to_string()),
         });
-        println!("{document}");
+        writeln!(out, "{document}")?;
     } else {
-        println!(
+        writeln!(
+            out,
             "plan on {name}: {} samples × {} contacts, μ = {}, {} cone edges, metric {:?}",
             args.samples, args.contacts, args.friction, args.edges, args.metric
-        );
-        println!(
+        )?;
+        writeln!(
+            out,
             "{:<10} {:>8} {:>8} {:>12} {:>12} {:>12}",
             "method", "samples", "closure", "quality s", "other s", "best"
-        );
+        )?;
         let mut rows = vec![("partial", &partial)];
         if let Some((full, _)) = &comparison {
             rows.push(("full", full));
         }
         for (method, r) in rows {
-            println!(
+            writeln!(
+                out,
                 "{:<10} {:>8} {:>8} {:>12.4} {:>12.4} {:>12}",
                 method,
                 r.samples,
@@ -267,21 +280,24 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
                     "{:.6} (#{})",
                     b.value, b.sample
                 ))
-            );
+            )?;
         }
         if let (Some(s), Some(same)) = (speedup, same_best) {
-            println!(
+            writeln!(
+                out,
                 "quality evaluation per sample: full / partial = {s:.1}×; same best grasp: {}",
                 if same { "yes" } else { "NO" }
-            );
+            )?;
         }
         if let Some(note) = &note {
-            println!("full vs partial: {note}");
+            writeln!(out, "full vs partial: {note}")?;
         }
         if let Some(path) = &views {
-            println!("wrote {}", path.display());
+            writeln!(out, "wrote {}", path.display())?;
         }
     }
+    out.flush()?;
+    drop(out);
     if same_best == Some(false) {
         return Err(CliError::Geometry(
             "the partial and full-hull plans chose different best grasps".into(),

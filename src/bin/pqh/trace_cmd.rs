@@ -6,6 +6,7 @@ use clap::{Args, ValueEnum};
 use pqhull::rbox::{Family, Rng, generate_flat};
 use pqhull::viz::{Event, Trace, html, svg};
 use pqhull::{ClosestToOrigin, FarthestPoint, Hull, OwsInflation};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// The long help of `pqh trace`.
@@ -39,7 +40,7 @@ pub struct TraceArgs {
     #[arg(long, value_name = "NAME")]
     family: Option<String>,
 
-    /// Number of generated points [default: 40]
+    /// Number of generated points, at most 5000 [default: 40]
     #[arg(long, value_name = "N")]
     points: Option<usize>,
 
@@ -252,20 +253,23 @@ fn trace<const D: usize>(
             }
         }
     }
+    let stdout = std::io::stdout();
+    let mut out = stdout.lock();
     for (s, trace) in strategies.iter().zip(&traces) {
         let expansions = trace
             .events
             .iter()
             .filter(|e| matches!(e, Event::Expanded { .. }))
             .count();
-        println!(
+        writeln!(
+            out,
             "{}: {} steps, {expansions} expansions; {}",
             s.name(),
             trace.events.len(),
             trace.stop_reason().unwrap_or("no stop recorded")
-        );
+        )?;
     }
-    println!("wrote {}", args.output.display());
+    writeln!(out, "wrote {}", args.output.display())?;
     Ok(())
 }
 
