@@ -549,7 +549,8 @@ fn print_tables(out: &mut impl Write, args: &GwsArgs, report: &[Value]) -> std::
         }
         for m in entry["methods"].as_array().expect("array") {
             if m["errors"] != 0 {
-                println!(
+                writeln!(
+                    out,
                     "     !! {}: {} grasps not evaluated (left out of the ratios), first: {}",
                     m["method"].as_str().unwrap_or(""),
                     m["errors"],
@@ -560,7 +561,7 @@ fn print_tables(out: &mut impl Write, args: &GwsArgs, report: &[Value]) -> std::
                         .chars()
                         .take(160)
                         .collect::<String>()
-                );
+                )?;
             }
         }
         if entry["disagreements"] != 0 {
