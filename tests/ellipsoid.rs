@@ -453,7 +453,7 @@ fn points_nearly_all_on_the_ellipsoid_converge() {
 #[test]
 fn object_wrench_space_of_a_sphere() {
     let mut rng = Rng::new(12);
-    let contacts: Vec<Contact> = (0..300)
+    let contacts: Vec<Contact> = (0..pqhull::grasp::MAX_CONTACTS)
         .map(|_| {
             let v = rng.unit_vector(3);
             let position = [0.5 * v[0], 0.5 * v[1], 0.5 * v[2]];

@@ -264,9 +264,10 @@ fn batch_keeps_input_order() {
     }
 }
 
-/// A flat Minkowski sum too large to materialise (an antipodal pinch, rank 5, with 1100² > 2²⁰
-/// points): not force closure, with the distance found by the support-function GJK instead of an
-/// error.
+/// A flat Minkowski sum too large to materialise (an antipodal pinch, rank 5, at the largest cone
+/// edge count, with the zero wrench: 1025² > 2²⁰ points): not force closure, answered by the slab
+/// test and GJK instead of an error, by the partial and the full method alike; without the zero
+/// wrench (1024² points) the same.
 #[test]
 fn q_inf_of_a_flat_sum_too_large_to_materialise() {
     let pinch = Grasp::try_new(
@@ -274,50 +275,39 @@ fn q_inf_of_a_flat_sum_too_large_to_materialise() {
             Contact::try_new([-1.0, 0.0, 0.0], [1.0, 0.0, 0.0], None).unwrap(),
             Contact::try_new([1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], None).unwrap(),
         ],
-        FrictionModel::try_new(0.5, 1100).unwrap(),
+        FrictionModel::try_new(0.5, pqhull::grasp::MAX_CONE_EDGES).unwrap(),
     )
     .unwrap();
-    let q = Evaluator::new(
-        Metric::QInf {
-            with_zero_wrench: false,
-        },
-        Method::Partial,
-    )
-    .evaluate(&pinch)
-    .unwrap();
-    assert!(!q.force_closure);
-    // The two cones' sum contains the origin's neighbourhood within the flat: distance 0.
-    assert!(q.value.abs() < 1e-9, "{}", q.value);
-    // The full method answers it from the slab test too (before materialising anything), and
-    // still refuses to materialise a sum that size which is not flat.
-    let full = |grasp: &Grasp| {
-        Evaluator::new(
-            Metric::QInf {
-                with_zero_wrench: false,
-            },
-            Method::Full,
-        )
-        .evaluate(grasp)
+    let by = |with_zero_wrench: bool, method: Method, grasp: &Grasp| {
+        Evaluator::new(Metric::QInf { with_zero_wrench }, method).evaluate(grasp)
     };
-    let flat = full(&pinch).unwrap();
-    assert!(!flat.force_closure);
-    assert!(
-        (flat.value - q.value).abs() < 1e-9,
-        "{} vs {}",
-        flat.value,
-        q.value
-    );
+    for with_zero_wrench in [true, false] {
+        let q = by(with_zero_wrench, Method::Partial, &pinch).unwrap();
+        assert!(!q.force_closure);
+        // The two cones' sum contains the origin's neighbourhood within the flat: distance 0.
+        assert!(q.value.abs() < 1e-9, "{}", q.value);
+        // The full method answers it from the slab test too, before materialising anything.
+        let flat = by(with_zero_wrench, Method::Full, &pinch).unwrap();
+        assert!(!flat.force_closure);
+        assert!(
+            (flat.value - q.value).abs() < 1e-9,
+            "{} vs {}",
+            flat.value,
+            q.value
+        );
+    }
+    // A sum that size which is not flat is still refused by the full method (128³ > 2²⁰).
     let tilted = Grasp::try_new(
         vec![
             Contact::try_new([-1.0, 0.0, 0.0], [1.0, 0.0, 0.0], None).unwrap(),
             Contact::try_new([1.0, 0.3, 0.0], [-1.0, 0.0, 0.0], None).unwrap(),
             Contact::try_new([0.0, 1.0, 0.2], [0.0, -1.0, 0.0], None).unwrap(),
         ],
-        FrictionModel::try_new(0.5, 1100).unwrap(),
+        FrictionModel::try_new(0.5, 128).unwrap(),
     )
     .unwrap();
     assert!(matches!(
-        full(&tilted),
+        by(false, Method::Full, &tilted),
         Err(pqhull::grasp::quality::QualityError::MinkowskiTooLarge { .. })
     ));
 }
