@@ -394,3 +394,52 @@ fn boundary_grasps_agree_with_the_exact_engine_on_the_raw_wrenches() {
     }
     assert!(boundary >= 3, "{boundary} boundary grasps");
 }
+
+/// Wrenches too large for the metrics' squared norms are a clear error, never NaN or a null
+/// quality (a friction coefficient of 1e160 used to print `"quality": null`); just below the
+/// limit the partial and full methods still agree (a consistency check only: Qhull itself is
+/// not reliable at coordinates of 1e99).
+#[test]
+fn huge_wrenches_are_an_error_and_large_ones_are_finite() {
+    use pqhull::grasp::quality::{MAX_WRENCH_COORDINATE, QualityError};
+    let contacts = vec![
+        Contact::try_new([0.1, 0.0, 0.0], [-1.0, 0.0, 0.0], None).unwrap(),
+        Contact::try_new([-0.1, 0.02, 0.0], [1.0, 0.0, 0.0], None).unwrap(),
+        Contact::try_new([0.0, 0.1, 0.03], [0.0, -1.0, 0.0], None).unwrap(),
+        Contact::try_new([0.02, -0.1, -0.02], [0.0, 1.0, 0.0], None).unwrap(),
+    ];
+    for (mu, ok) in [(1e160, false), (1e120, false), (1e99, true), (0.5, true)] {
+        let grasp =
+            Grasp::try_new(contacts.clone(), FrictionModel::try_new(mu, 8).unwrap()).unwrap();
+        for metric in [
+            Metric::Q1,
+            Metric::QInf {
+                with_zero_wrench: true,
+            },
+        ] {
+            let q = Evaluator::new(metric, Method::Partial).evaluate(&grasp);
+            if !ok {
+                assert!(
+                    matches!(q, Err(QualityError::WrenchTooLarge { largest })
+                        if largest > MAX_WRENCH_COORDINATE),
+                    "μ = {mu:e}: {q:?}"
+                );
+                continue;
+            }
+            let q = q.unwrap();
+            assert!(q.value.is_finite(), "μ = {mu:e}: {q:?}");
+            if metric != Metric::Q1 {
+                continue; // the full Q∞ hull of 9^4 points takes minutes
+            }
+            let (a, b) = partial_and_full(metric, &grasp);
+            assert!(b.value.is_finite(), "μ = {mu:e}");
+            assert_eq!(a.force_closure, b.force_closure, "μ = {mu:e}");
+            assert!(
+                (a.value - b.value).abs() <= 1e-12 * a.value.abs().max(1e-2 * a.scale),
+                "μ = {mu:e}: {} vs {}",
+                a.value,
+                b.value
+            );
+        }
+    }
+}

@@ -171,11 +171,42 @@ pub fn is_force_closure(value: f64, scale: f64) -> bool {
     value >= FORCE_CLOSURE_EPSILON * scale && value > 0.0
 }
 
+/// The largest wrench coordinate the metrics accept. They are computed from squared norms and
+/// products of them (GJK, Wolfe's algorithm, plane offsets), which overflow for wrenches far
+/// below `f64::MAX` (measured: a friction coefficient of 1e160 gave NaN); 1e100 keeps a wide
+/// margin. There is no lower limit: every force has norm at least 1 (its unit normal push).
+/// Beyond it, [`QualityError::WrenchTooLarge`]: express the grasp in other units (positions,
+/// torque scale) or with a smaller friction coefficient.
+pub const MAX_WRENCH_COORDINATE: f64 = 1e100;
+
+/// [`QualityError::NonFiniteWrench`] or [`QualityError::WrenchTooLarge`] for wrenches the
+/// metrics cannot evaluate.
+pub(crate) fn check_wrenches(wrenches: &[[f64; 6]]) -> Result<(), QualityError> {
+    let mut largest = 0.0f64;
+    for &x in wrenches.iter().flatten() {
+        if !x.is_finite() {
+            return Err(QualityError::NonFiniteWrench);
+        }
+        largest = largest.max(x.abs());
+    }
+    if largest > MAX_WRENCH_COORDINATE {
+        return Err(QualityError::WrenchTooLarge { largest });
+    }
+    Ok(())
+}
+
 /// Why a grasp could not be evaluated.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum QualityError {
-    /// A wrench overflowed (a torque scale tiny next to the lever arms).
+    /// A wrench overflowed (a friction coefficient, a lever arm or the inverse torque scale too
+    /// large for `f64`).
     NonFiniteWrench,
+    /// A wrench coordinate above [`MAX_WRENCH_COORDINATE`].
+    WrenchTooLarge {
+        /// The largest wrench coordinate (absolute value).
+        largest: f64,
+    },
     /// The full or Qhull method would have to materialise more Minkowski points than
     /// [`MINKOWSKI_MATERIALISE_LIMIT`] (`None`: more than `usize::MAX`).
     MinkowskiTooLarge {
@@ -202,7 +233,14 @@ impl fmt::Display for QualityError {
         match self {
             QualityError::NonFiniteWrench => write!(
                 f,
-                "a wrench is not finite: the torque scale is too small for the lever arms"
+                "a wrench is not finite: the friction coefficient, a lever arm or 1/torque_scale \
+                 overflows f64"
+            ),
+            QualityError::WrenchTooLarge { largest } => write!(
+                f,
+                "a wrench coordinate is {largest:e}, above the {MAX_WRENCH_COORDINATE:e} the \
+                 metrics accept (their squared norms would overflow): use other units (positions, \
+                 torque_scale) or a smaller friction coefficient"
             ),
             QualityError::MinkowskiTooLarge { points } => {
                 let count = points.map_or("more than usize::MAX".to_string(), |p| p.to_string());
@@ -302,6 +340,7 @@ impl Evaluator {
     ///
     /// # Errors
     /// [`QualityError::NonFiniteWrench`] when the torque scale overflows the wrenches;
+    /// [`QualityError::WrenchTooLarge`] above [`MAX_WRENCH_COORDINATE`];
     /// [`QualityError::MinkowskiTooLarge`] for Q∞ by a full method with too many points;
     /// [`QualityError::Qhull`] when Qhull fails.
     pub fn evaluate(&mut self, grasp: &Grasp) -> Result<Quality, QualityError> {
@@ -310,6 +349,7 @@ impl Evaluator {
         if !self.cones.is_finite() {
             return Err(QualityError::NonFiniteWrench);
         }
+        check_wrenches(&self.cones.raw)?;
         let mut quality = match self.metric {
             Metric::Q1 => {
                 snapped_union(&self.cones, &mut self.wrenches);
@@ -390,11 +430,10 @@ pub fn q_inf(grasp: &Grasp) -> Result<Quality, QualityError> {
 /// ```
 ///
 /// # Errors
-/// [`QualityError::NonFiniteWrench`] for a NaN or infinite coordinate; [`QualityError::Qhull`].
+/// [`QualityError::NonFiniteWrench`] for a NaN or infinite coordinate;
+/// [`QualityError::WrenchTooLarge`] above [`MAX_WRENCH_COORDINATE`]; [`QualityError::Qhull`].
 pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Quality, QualityError> {
-    if wrenches.iter().flatten().any(|x| !x.is_finite()) {
-        return Err(QualityError::NonFiniteWrench);
-    }
+    check_wrenches(wrenches)?;
     if wrenches.is_empty() {
         return Ok(Quality::new(
             f64::NEG_INFINITY,

@@ -5,8 +5,8 @@ use crate::grasp::Grasp;
 use crate::grasp::certify::{BracketScratch, Disturbances, RawSide, bracket, support_with_error};
 use crate::grasp::flatness::{FLAT, Flatness};
 use crate::grasp::quality::{
-    FORCE_CLOSURE_EPSILON, Gjk, HullBuffers, Method, QualityError, certified_outside, find_or_make,
-    largest_norm, q1_certified, q1_of_wrenches,
+    FORCE_CLOSURE_EPSILON, Gjk, HullBuffers, Method, QualityError, certified_outside,
+    check_wrenches, find_or_make, largest_norm, q1_certified, q1_of_wrenches,
 };
 use crate::grasp::snap::{SnappedCones, pyramid_labels, snapped_union};
 use crate::hull::{FacetId, Hull, HullError, dot};
@@ -167,7 +167,9 @@ impl OwsEvaluator {
 /// Q_OWS of an explicit grasp wrench set (exact on exactly these numbers) against `space`.
 ///
 /// # Errors
-/// [`QualityError::NonFiniteWrench`] for a NaN or infinite coordinate; [`QualityError::Ellipsoid`].
+/// [`QualityError::NonFiniteWrench`] for a NaN or infinite coordinate;
+/// [`QualityError::WrenchTooLarge`] above
+/// [`MAX_WRENCH_COORDINATE`](crate::grasp::quality::MAX_WRENCH_COORDINATE); [`QualityError::Ellipsoid`].
 pub fn ows_of_wrenches(
     wrenches: &[[f64; 6]],
     space: &ObjectWrenchSpace,
@@ -209,9 +211,7 @@ fn ows_with(
     buffers: &mut OwsBuffers,
 ) -> Result<OwsQuality, QualityError> {
     let raw = set.raw;
-    if raw.iter().flatten().any(|x| !x.is_finite()) {
-        return Err(QualityError::NonFiniteWrench);
-    }
+    check_wrenches(raw)?;
     if raw.is_empty() {
         return Ok(not_force_closure(Stats::default()));
     }
