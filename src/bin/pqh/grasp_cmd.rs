@@ -173,12 +173,11 @@ fn split(text: &str) -> Vec<Result<Value, String>> {
         .collect()
 }
 
-/// The byte offset just after the JSON value (object or array) that `text` starts with, found by
-/// matching brackets outside strings; `None` if they never balance.
-fn value_end(text: &str) -> Option<usize> {
-    let mut depth = 0usize;
+/// The bytes of JSON `text` outside string literals, with their offsets: the brackets and commas
+/// that give its structure (string contents, escapes included, are skipped).
+fn structural(text: &str) -> impl Iterator<Item = (usize, u8)> + '_ {
     let (mut in_string, mut escaped) = (false, false);
-    for (i, b) in text.bytes().enumerate() {
+    text.bytes().enumerate().filter(move |&(_, b)| {
         if in_string {
             match b {
                 _ if escaped => escaped = false,
@@ -186,10 +185,19 @@ fn value_end(text: &str) -> Option<usize> {
                 b'"' => in_string = false,
                 _ => {}
             }
-            continue;
+            return false;
         }
+        in_string = b == b'"';
+        !in_string
+    })
+}
+
+/// The byte offset just after the JSON value (object or array) that `text` starts with, found by
+/// matching brackets outside strings; `None` if they never balance.
+fn value_end(text: &str) -> Option<usize> {
+    let mut depth = 0usize;
+    for (i, b) in structural(text) {
         match b {
-            b'"' => in_string = true,
             b'[' | b'{' => depth += 1,
             b']' | b'}' => {
                 depth = depth.checked_sub(1)?;
@@ -213,20 +221,9 @@ fn array_elements(text: &str) -> Option<Vec<&str>> {
     let inner = &text[1..text.len() - 1];
     let mut elements = Vec::new();
     let mut depth = 0usize;
-    let (mut in_string, mut escaped) = (false, false);
     let mut start = 0;
-    for (i, b) in inner.bytes().enumerate() {
-        if in_string {
-            match b {
-                _ if escaped => escaped = false,
-                b'\\' => escaped = true,
-                b'"' => in_string = false,
-                _ => {}
-            }
-            continue;
-        }
+    for (i, b) in structural(inner) {
         match b {
-            b'"' => in_string = true,
             b'[' | b'{' => depth += 1,
             b']' | b'}' => depth = depth.saturating_sub(1),
             b',' if depth == 0 => {
