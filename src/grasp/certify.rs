@@ -200,24 +200,10 @@ where
         if cheap_low >= low {
             break; // every remaining facet's bound is at least this one's
         }
-        let vertices = hull.facet(id).vertices();
-        let mut points = [[0.0; 6]; 6];
-        let mut known = true;
-        for (p, &v) in points.iter_mut().zip(&vertices) {
-            match (raw.point)(v) {
-                Some(x) => *p = x,
-                None => known = false,
-            }
-        }
         let mut facet_low = cheap_low;
-        if known {
+        if let Some(points) = raw_simplex(hull, id, &mut raw.point) {
             // The raw simplex's own normal: tight for a well-shaped simplex.
-            let own = hyperplane_normal(&points)
-                .or_else(|| exact_normal(&points))
-                .map(|u| {
-                    let outward = dot_with_error(&u, &hull.facet(id).normal()).0 >= 0.0;
-                    if outward { u } else { u.map(|c| -c) }
-                });
+            let own = own_normal(hull, id, &points);
             let mut own_low = f64::NEG_INFINITY;
             if let Some(u) = own {
                 let (bound, high) = along(&u, &points, raw, gauge);
@@ -271,32 +257,38 @@ where
     H: FnMut(&[f64; 6]) -> (f64, f64),
     G: Gauge,
 {
-    let normal = hull.facet(id).normal();
-    let mut points = [[0.0; 6]; 6];
-    let mut known = true;
-    for (p, v) in points.iter_mut().zip(hull.facet(id).vertices()) {
-        match (raw.point)(v) {
-            Some(x) => *p = x,
-            None => known = false,
-        }
-    }
-    let own = known
-        .then(|| hyperplane_normal(&points).or_else(|| exact_normal(&points)))
-        .flatten()
-        .map(|u| {
-            if dot_with_error(&u, &normal).0 >= 0.0 {
-                u
-            } else {
-                u.map(|c| -c)
-            }
-        });
+    let points = raw_simplex(hull, id, &mut raw.point);
+    let own = points.and_then(|p| own_normal(hull, id, &p));
+    // `along`'s lower bound (the only use of the points) is not needed here.
+    let points = points.unwrap_or_default();
     let mut high: Option<f64> = None;
-    for u in own.into_iter().chain([normal]) {
+    for u in own.into_iter().chain([hull.facet(id).normal()]) {
         if let (_, Some(h)) = along(&u, &points, raw, gauge) {
             high = Some(high.map_or(h, |b: f64| b.min(h)));
         }
     }
     high
+}
+
+/// The raw points of facet `id`'s vertices, when every one is known.
+fn raw_simplex<R>(hull: &Hull<6>, id: FacetId, point: &mut R) -> Option<[[f64; 6]; 6]>
+where
+    R: FnMut(usize) -> Option<[f64; 6]>,
+{
+    let vertices = hull.facet(id).vertices();
+    let mut points = [[0.0; 6]; 6];
+    for (p, &v) in points.iter_mut().zip(&vertices) {
+        *p = point(v)?;
+    }
+    Some(points)
+}
+
+/// The normal of the raw simplex on `points` (floating point, or from the exact cofactors for a
+/// thin one), oriented as facet `id`'s.
+fn own_normal(hull: &Hull<6>, id: FacetId, points: &[[f64; 6]; 6]) -> Option<[f64; 6]> {
+    let u = hyperplane_normal(points).or_else(|| exact_normal(points))?;
+    let outward = dot_with_error(&u, &hull.facet(id).normal()).0 >= 0.0;
+    Some(if outward { u } else { u.map(|c| -c) })
 }
 
 /// The bounds direction `u` (pointing away from the origin) gives for the raw simplex on
