@@ -58,6 +58,7 @@ use super::certify::{
 };
 use super::flatness::{FLAT, Flatness};
 use super::snap::{SnappedCones, pyramid_labels, snapped_union};
+use crate::predicates::times_power_of_two;
 use crate::strategy::nearest::{min_norm_point, min_norm_point_accurate, nearest_in_simplex};
 use crate::strategy::{ClosestToOrigin, Stats};
 use crate::{Hull, HullError};
@@ -151,6 +152,60 @@ impl Quality {
         self.force_closure = is_force_closure(self.value, scale);
         self
     }
+
+    /// This quality of wrenches divided by 2^`e` ([`WrenchUnit`]), for the caller's wrenches:
+    /// value, scale and deciding wrenches times 2^`e` (the verdict is scale-free).
+    fn in_caller_units(mut self, unit: WrenchUnit) -> Self {
+        let up = |x: f64| times_power_of_two(x, unit.0);
+        self.value = up(self.value);
+        self.scale = up(self.scale);
+        for w in &mut self.deciding[..self.deciding_len] {
+            *w = w.map(up);
+        }
+        self
+    }
+}
+
+/// Wrenches whose largest coordinate lies outside [2^−`UNIT_RANGE`, 2^`UNIT_RANGE`] are
+/// evaluated divided by a power of two 2^e that brings it into [0.5, 1): an exact change of
+/// units (bar bits below 2^−1022 of the largest coordinate), after which no norm, square or
+/// tolerance of the metrics underflows. Wrenches of size 2^−900 had their scale, a norm, come
+/// out 0 (their squares underflowed), and with it the force-closure band.
+const UNIT_RANGE: i32 = 256;
+
+/// The exponent e of the unit 2^e the wrenches are evaluated in (see [`UNIT_RANGE`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct WrenchUnit(pub(crate) i32);
+
+impl WrenchUnit {
+    /// The unit for wrenches whose largest coordinate magnitude is `largest` (finite).
+    pub(crate) fn for_largest(largest: f64) -> Self {
+        let range = 2f64.powi(UNIT_RANGE);
+        if largest == 0.0 || (largest >= 1.0 / range && largest <= range) {
+            return WrenchUnit(0);
+        }
+        // 2^(e−1) ≤ largest < 2^e, from the exponent bits (largest is normal here).
+        let biased = ((largest.to_bits() >> 52) & 0x7ff) as i32;
+        WrenchUnit(biased - 1022)
+    }
+
+    /// `x` in this unit: divided by 2^e.
+    pub(crate) fn down(self, x: f64) -> f64 {
+        times_power_of_two(x, -self.0)
+    }
+
+    /// `w` in this unit.
+    pub(crate) fn apply(self, w: [f64; 6]) -> [f64; 6] {
+        w.map(|x| self.down(x))
+    }
+}
+
+/// The largest coordinate magnitude of `wrenches`.
+fn largest_coordinate(wrenches: &[[f64; 6]]) -> f64 {
+    wrenches
+        .iter()
+        .flatten()
+        .fold(0.0f64, |m, x| m.max(x.abs()))
 }
 
 /// The width of the force-closure band, relative to the wrench scale: a grasp is force closure
@@ -350,11 +405,13 @@ impl Evaluator {
             return Err(QualityError::NonFiniteWrench);
         }
         check_wrenches(&self.cones.raw)?;
+        let unit = WrenchUnit::for_largest(largest_coordinate(&self.cones.raw));
+        self.cones.rescale(unit);
         let mut quality = match self.metric {
             Metric::Q1 => {
                 snapped_union(&self.cones, &mut self.wrenches);
                 let edges = self.cones.edges();
-                pyramid_labels(grasp.contact_count(), edges, &mut self.pyramids);
+                pyramid_labels(self.cones.contacts(), edges, &mut self.pyramids);
                 let scale = largest_norm(&self.cones.raw);
                 let raw = Explicit {
                     raw: &self.cones.raw,
@@ -384,6 +441,7 @@ impl Evaluator {
                 )?,
             },
         };
+        quality = quality.in_caller_units(unit);
         quality.stats.elapsed = started.elapsed();
         Ok(quality)
     }
@@ -434,6 +492,12 @@ pub fn q_inf(grasp: &Grasp) -> Result<Quality, QualityError> {
 /// [`QualityError::WrenchTooLarge`] above [`MAX_WRENCH_COORDINATE`]; [`QualityError::Qhull`].
 pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Quality, QualityError> {
     check_wrenches(wrenches)?;
+    let unit = WrenchUnit::for_largest(largest_coordinate(wrenches));
+    if unit != WrenchUnit(0) {
+        let scaled: Vec<[f64; 6]> = wrenches.iter().map(|&w| unit.apply(w)).collect();
+        let quality = q1_of_wrenches(&scaled, method)?;
+        return Ok(quality.in_caller_units(unit));
+    }
     if wrenches.is_empty() {
         return Ok(Quality::new(
             f64::NEG_INFINITY,

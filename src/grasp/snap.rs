@@ -11,6 +11,12 @@
 //! wrench per contact (the Q∞ Minkowski points) is exact too for up to 10 contacts
 //! (< 3m·2^48 < 2^53 units). The change is below 2^−24 ≈ 6·10^−8 relative to the largest
 //! coordinate — far below the error of the k-edge friction pyramid itself.
+//!
+//! Identical contacts (equal position, normal and tangent, hence equal wrenches) are kept once,
+//! with their multiplicity: a repeated contact adds nothing to the Q1 union, and r copies of a
+//! convex set C sum to r·C, so the Q∞ Minkowski sum needs each distinct contact once, scaled by
+//! its multiplicity. Generated grasps repeat contacts often, and the sum's tied tuples otherwise
+//! grow like (ties)^r.
 
 use super::Grasp;
 use super::vec3::sub;
@@ -19,17 +25,23 @@ use std::f64::consts::PI;
 /// Bits kept by the snapping (see the module docs for why 24).
 const BITS: i32 = 24;
 
-/// The snapped generators of every contact: `[u, v, s]` per contact, and the snapped (cos, sin)
-/// of every edge angle.
+/// The snapped generators of every distinct contact: `[u, v, s]` per contact, and the snapped
+/// (cos, sin) of every edge angle. "Contact" below means a distinct one (see the module docs).
 #[derive(Clone, Debug, Default)]
 pub(crate) struct SnappedCones {
     pub(crate) generators: Vec<[[f64; 6]; 3]>,
     pub(crate) angles: Vec<(f64, f64)>,
-    /// The caller's wrenches, as [`Grasp::wrenches`] computes them (contact-major): the points
-    /// every reported value is certified on.
+    /// The caller's wrenches, as [`Grasp::wrenches`] computes them (contact-major, each distinct
+    /// contact once): the points every reported value is certified on.
     pub(crate) raw: Vec<[f64; 6]>,
     /// Per contact: an upper bound on the distance between a raw wrench and its snapped one.
     pub(crate) delta: Vec<f64>,
+    /// Per contact: how many of the grasp's contacts it stands for (at least 1).
+    pub(crate) multiplicity: Vec<u32>,
+    /// Per contact of the grasp: the distinct contact standing for it.
+    pub(crate) representative: Vec<u32>,
+    /// Per contact: its index in the grasp (the first of its copies).
+    first: Vec<usize>,
 }
 
 fn snap(x: f64, grid: f64) -> f64 {
@@ -41,8 +53,9 @@ impl SnappedCones {
     pub(crate) fn fill(&mut self, grasp: &Grasp) {
         let mu = grasp.friction.friction();
         let k = grasp.friction.cone_edges();
+        self.merge_repeats(grasp);
         self.generators.clear();
-        for contact in &grasp.contacts {
+        for contact in self.first.iter().map(|&i| &grasp.contacts[i]) {
             let r = sub(contact.position(), grasp.torque_reference);
             let scaled = |v: [f64; 3]| v.map(|x| x * mu);
             self.generators.push([
@@ -77,7 +90,11 @@ impl SnappedCones {
             let (sin, cos) = (2.0 * PI * j as f64 / k as f64).sin_cos();
             (snap(cos, unit), snap(sin, unit))
         }));
-        grasp.wrenches_into(&mut self.raw);
+        self.raw.clear();
+        self.raw.resize(self.first.len() * k, [0.0; 6]);
+        for (&i, out) in self.first.iter().zip(self.raw.chunks_exact_mut(k)) {
+            grasp.contact_wrenches(i, out);
+        }
         self.delta.clear();
         for i in 0..self.generators.len() {
             let largest = (0..k)
@@ -93,6 +110,53 @@ impl SnappedCones {
             // The differences, squares and root round by a few ulps: 1e−15 relative covers them.
             self.delta.push(largest * (1.0 + 1e-15));
         }
+    }
+
+    /// Divides every wrench (snapped generators, raw wrenches, δ) by the power of two `unit`:
+    /// exact, so the snapped wrenches stay exactly planar and their sums exact.
+    pub(crate) fn rescale(&mut self, unit: super::quality::WrenchUnit) {
+        if unit.0 == 0 {
+            return;
+        }
+        for generator in &mut self.generators {
+            for w in generator.iter_mut() {
+                *w = unit.apply(*w);
+            }
+        }
+        for w in &mut self.raw {
+            *w = unit.apply(*w);
+        }
+        for d in &mut self.delta {
+            // Rounded up: δ must stay an upper bound.
+            *d = unit.down(*d) * (1.0 + 1e-15) + f64::from_bits(1);
+        }
+    }
+
+    /// Groups the grasp's contacts into distinct ones (quadratic in m ≤ 256, with an early exit
+    /// per comparison: microseconds, against a hull's milliseconds).
+    fn merge_repeats(&mut self, grasp: &Grasp) {
+        self.first.clear();
+        self.multiplicity.clear();
+        self.representative.clear();
+        for (i, contact) in grasp.contacts.iter().enumerate() {
+            let found = self
+                .first
+                .iter()
+                .position(|&f| grasp.contacts[f] == *contact);
+            let d = found.unwrap_or_else(|| {
+                self.first.push(i);
+                self.multiplicity.push(0);
+                self.first.len() - 1
+            });
+            self.multiplicity[d] += 1;
+            self.representative
+                .push(u32::try_from(d).expect("at most MAX_CONTACTS contacts"));
+        }
+    }
+
+    /// The number of distinct contacts.
+    pub(crate) fn contacts(&self) -> usize {
+        self.generators.len()
     }
 
     /// The number of cone edges per contact.
@@ -127,11 +191,14 @@ impl Grasp {
     pub fn snapped_wrenches_into(&self, out: &mut Vec<[f64; 6]>) {
         let mut cones = SnappedCones::default();
         cones.fill(self);
-        snapped_union(&cones, out);
+        out.clear();
+        for &d in &cones.representative {
+            out.extend((0..cones.edges()).map(|j| cones.wrench(d as usize, j)));
+        }
     }
 }
 
-/// The union of the snapped wrenches, contact-major.
+/// The union of the snapped wrenches, contact-major, each distinct contact once.
 pub(crate) fn snapped_union(cones: &SnappedCones, out: &mut Vec<[f64; 6]>) {
     out.clear();
     for i in 0..cones.generators.len() {

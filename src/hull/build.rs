@@ -2,7 +2,7 @@
 
 use super::expand::Scratch;
 use super::facet::MAX_FLATS;
-use super::facet::{Facet, FacetId, dot};
+use super::facet::{Facet, FacetId, dot, norm};
 use super::{Hull, HullError, NO_FLAT};
 use crate::predicates::{FacetPlane, Sign, affinely_independent_subset, orientation};
 use crate::strategy::Stats;
@@ -77,7 +77,12 @@ impl<const D: usize> Hull<D> {
         self.scale = scale;
         self.points
             .extend(input.iter().map(|p| p.map(|x| x * scale)));
-        let simplex = initial_simplex(&self.points)?;
+        self.mark_repeats();
+        let mut simplex = initial_simplex(&self.points)?;
+        // Its vertices are distinct points: name each by its first copy, as every vertex is.
+        for s in &mut simplex[..=D] {
+            *s = self.scratch.first_copy[*s] as usize;
+        }
         let simplex = &simplex[..=D];
 
         let mut interior = [0.0; D];
@@ -111,11 +116,51 @@ impl<const D: usize> Hull<D> {
         let all: [FacetId; 9] = std::array::from_fn(|k| FacetId((first + k) as u32));
         let all = &all[..=D];
         for p in 0..self.points.len() as u32 {
-            if !simplex.contains(&(p as usize)) {
+            if !simplex.contains(&(p as usize)) && self.scratch.first_copy[p as usize] == p {
                 self.assign(p, all);
             }
         }
         Ok(())
+    }
+
+    /// Whether input `p` equals an input with a smaller index (so never enters an outside set).
+    pub(crate) fn is_repeat(&self, p: usize) -> bool {
+        self.scratch
+            .first_copy
+            .get(p)
+            .is_some_and(|&first| first as usize != p)
+    }
+
+    /// Writes, in `scratch.first_copy`, the smallest index of a point equal to each point (itself
+    /// if none is smaller). Only the first copy is ever assigned to an outside set: a copy is never beyond a hull holding the first
+    /// (equal points are on the same side of every plane), so the hull is the same, and the
+    /// time does not grow with repetition (copies would otherwise follow the first through every
+    /// outside-set redistribution). A sort, O(n log n), in kept buffers.
+    fn mark_repeats(&mut self) {
+        let Scratch {
+            order, first_copy, ..
+        } = &mut self.scratch;
+        let points = &self.points;
+        order.clear();
+        order.extend(0..points.len() as u32);
+        order.sort_unstable_by(|&a, &b| {
+            let (p, q) = (&points[a as usize], &points[b as usize]);
+            p.iter()
+                .zip(q)
+                // Finite (checked above), so `partial_cmp` is total; −0 equals 0, as in `==`.
+                .map(|(x, y)| x.partial_cmp(y).unwrap_or(std::cmp::Ordering::Equal))
+                .find(|o| o.is_ne())
+                .unwrap_or(a.cmp(&b))
+        });
+        first_copy.clear();
+        first_copy.extend(0..points.len() as u32);
+        // Ties are in index order: a run of equal points starts with the first copy.
+        for pair in order.windows(2) {
+            let (a, b) = (pair[0] as usize, pair[1] as usize);
+            if points[a] == points[b] {
+                first_copy[b] = first_copy[a];
+            }
+        }
     }
 
     pub(crate) fn coords(&self, vertices: &[u32; D]) -> [[f64; D]; D] {
@@ -141,7 +186,7 @@ impl<const D: usize> Hull<D> {
         let facet = &self.facets[id.index()];
         let coords = self.coords(&facet.vertices);
         let exact = facet.plane.exact_normal_direction(&coords);
-        let length = dot(&exact, &exact).sqrt();
+        let length = norm(&exact);
         exact.map(|c| c / length)
     }
 
@@ -149,8 +194,10 @@ impl<const D: usize> Hull<D> {
     pub(crate) fn push_facet(&mut self, vertices: [u32; D], neighbors: [FacetId; D]) -> FacetId {
         let coords = self.coords(&vertices);
         let plane = FacetPlane::new(&coords);
-        let norm = dot(plane.cofactors(), plane.cofactors()).sqrt();
-        let inv_norm = 1.0 / norm;
+        // Without overflow or underflow of the squares: the cofactors of a wide-ranging input
+        // (one axis 1e40 times the others, in 6-D) are products of D − 1 small coordinates, whose
+        // squares underflowed to give NaN normals.
+        let inv_norm = 1.0 / norm(plane.cofactors());
         let largest = plane.cofactors().iter().fold(0.0f64, |m, c| m.max(c.abs()));
         let error = plane
             .cofactor_errors()
@@ -159,8 +206,18 @@ impl<const D: usize> Hull<D> {
         // When the floating-point cofactors cancel (a thin facet), the normal is refined from the
         // exact cofactors only when someone needs it precise (`refine_normal`): most such facets
         // are transient, and the queue orders of the strategies only need approximate distances.
-        let precise = error <= 1e-11 * largest;
-        let normal = plane.cofactors().map(|c| c * inv_norm);
+        // Cofactors near the subnormal range have lost bits that their error bound (itself
+        // rounded there) need not show: they too are refined.
+        let mut precise = error <= 1e-11 * largest && largest >= MIN_PRECISE_COFACTOR;
+        let mut normal = plane.cofactors().map(|c| c * inv_norm);
+        if !(largest.is_finite() && error.is_finite() && inv_norm > 0.0 && inv_norm.is_finite()) {
+            // Cofactors that overflow (coordinates too large and too spread to be scaled
+            // exactly, so left unscaled): the exact direction now, as nothing else can give one.
+            let exact = plane.exact_normal_direction(&coords);
+            let length = norm(&exact);
+            normal = exact.map(|c| c / length);
+            precise = true;
+        }
         let offset = dot(&normal, &coords[0]) / self.scale;
         let flats = self.flats_within(&vertices);
         let serial = self.next_serial;
@@ -215,7 +272,9 @@ impl<const D: usize> Hull<D> {
                 if best.is_none_or(|(_, d, _)| distance > d) {
                     best = Some((id, distance, value));
                 }
-            } else if value >= -bound {
+            } else if !(value < -bound) {
+                // Undecided unless certainly behind: also when the value is NaN (coordinates so
+                // large, unscalable, that the floating-point products overflow).
                 undecided = true;
             }
         }
@@ -224,7 +283,7 @@ impl<const D: usize> Hull<D> {
             for &id in candidates {
                 let facet = &self.facets[id.index()];
                 let (value, bound) = facet.plane.evaluate(&point);
-                if value.abs() <= bound
+                if !(value.abs() > bound)
                     && facet.plane.side(&point, || self.coords(&facet.vertices)) == Sign::Positive
                 {
                     best = Some((id, value * facet.inv_norm, value.max(0.0)));
@@ -295,6 +354,10 @@ impl<const D: usize> Hull<D> {
         flats
     }
 }
+
+/// The smallest largest-cofactor trusted without refinement: about 2^−897, far above the
+/// subnormals (below 2^−1022) where the products and their error bounds lose bits.
+const MIN_PRECISE_COFACTOR: f64 = 1e-270;
 
 fn first_non_finite<const D: usize>(points: &[[f64; D]]) -> Option<(usize, usize)> {
     points

@@ -108,7 +108,8 @@ impl<const D: usize> Hull<D> {
             }
         }
         for (p, point) in self.points.iter().enumerate() {
-            if owner[p].is_some() {
+            // A repeated point stands or falls with its first copy, checked in its own turn.
+            if owner[p].is_some() || self.is_repeat(p) {
                 continue;
             }
             for &id in &live {

@@ -20,6 +20,10 @@ pub(crate) struct Scratch<const D: usize> {
     /// Points of removed outside sets awaiting reassignment.
     orphans: Vec<u32>,
     stack: Vec<FacetId>,
+    /// Input indices sorted by coordinates, and each input's first copy: see
+    /// [`Hull::initialise`](super::Hull).
+    pub(crate) order: Vec<u32>,
+    pub(crate) first_copy: Vec<u32>,
 }
 
 /// A multiplicative hash of a sorted ridge key (FxHash's constant), good enough for the small

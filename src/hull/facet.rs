@@ -127,3 +127,16 @@ impl<const D: usize> Facet<D> {
 pub(crate) fn dot<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
+
+/// The Euclidean norm of `v` without overflow or underflow of the squares.
+pub(crate) fn norm<const D: usize>(v: &[f64; D]) -> f64 {
+    let largest = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    if largest == 0.0 || !largest.is_finite() {
+        return largest;
+    }
+    largest
+        * v.iter()
+            .map(|x| (x / largest) * (x / largest))
+            .sum::<f64>()
+            .sqrt()
+}

@@ -29,7 +29,7 @@ pub use facet::{Facet, FacetId};
 
 use crate::predicates::Sign;
 use crate::strategy::{FarthestPoint, Stats, Step, Strategy};
-pub(crate) use facet::dot;
+pub(crate) use facet::{dot, norm};
 
 /// No declared flat (see [`Hull::rebuild_with_flats`]).
 pub(crate) const NO_FLAT: u32 = u32::MAX;
@@ -258,7 +258,8 @@ impl<const D: usize> Hull<D> {
     /// Volume of the current hull, in the caller's units (partial hulls have smaller volume).
     ///
     /// Computed as the sum of signed cone volumes from an interior point, using each facet's
-    /// cofactor vector, so it costs one dot product per facet.
+    /// cofactor vector, so it costs one dot product per facet. A volume beyond `f64::MAX` is
+    /// `+∞`, one below the smallest subnormal is 0 (as for any `f64` result out of range).
     pub fn volume(&self) -> f64 {
         let mut sum = 0.0;
         for (_, facet) in self.facets() {
@@ -267,6 +268,11 @@ impl<const D: usize> Hull<D> {
             sum -= value;
         }
         let factorial: f64 = (1..=D).map(|k| k as f64).product();
+        // Every cone volume is non-negative, so a sum that overflowed (to ∞, or NaN from ∞ − ∞
+        // of rounded cone volumes) stands for a volume beyond f64::MAX.
+        if !sum.is_finite() {
+            return f64::INFINITY;
+        }
         sum / factorial / self.scale.powi(D as i32)
     }
 
@@ -334,8 +340,7 @@ impl<const D: usize> Hull<D> {
         let (value, bound) = facet.plane.evaluate(&scaled);
         let cofactors = facet.plane.cofactors();
         let errors = facet.plane.cofactor_errors();
-        let length = dot(cofactors, cofactors).sqrt();
-        let error = dot(errors, errors).sqrt();
+        let (length, error) = (norm(cofactors), norm(errors));
         if length.partial_cmp(&error) != Some(std::cmp::Ordering::Greater) || !bound.is_finite() {
             return f64::INFINITY;
         }

@@ -70,6 +70,7 @@ mod wide;
 
 pub(crate) use exact::exact_cofactor_direction;
 pub use filter::FacetPlane;
+pub(crate) use wide::times_power_of_two;
 
 /// The sign of an orientation determinant.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -1,6 +1,8 @@
 //! `ClosestToOrigin`: the PQHGWS algorithm (Liu & Carpin, Algorithm 1), made exact.
 
-use super::nearest::{min_norm_point, min_norm_point_accurate, nearest_face_in_simplex};
+use super::nearest::{
+    min_norm_point, min_norm_point_accurate, nearest_face_in_simplex, norm, rescaled,
+};
 use super::{Queued, ReusableStrategy, Stats, Step, Strategy};
 use crate::hull::{FacetId, Hull, dot};
 use crate::predicates::Sign;
@@ -417,10 +419,11 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
         );
         // Heights along q − x measured from the query, where q − x is known accurately: the
         // supporting plane through x is at height −|q − x|².
-        let direction = closest.offset.map(|c| -c);
+        // Along q − x divided by a power of two (see `nearest_point`): exact in direction.
+        let direction = rescaled(&closest.offset.map(|c| -c));
         let query = self.query;
         let height = |p: [f64; D]| dot(&direction, &std::array::from_fn(|c| p[c] - query[c]));
-        let level = -dot(&direction, &direction);
+        let level = dot(&direction, &closest.offset);
         let mut best: Option<(f64, FacetId, usize)> = None;
         for (g, facet) in hull.facets() {
             for p in facet.outside_set() {
@@ -525,18 +528,21 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
         // to a few ulps, so the test is limited by the D-term dot products with v − q). Nearly
         // coincident points can make Wolfe's linear algebra fail; then try every face of every
         // facet the query sees instead.
+        // q − x, and u = (q − x)/2^e with its largest coordinate in [0.5, 1): products with u
+        // do not overflow for a far query (|q − x|² would from 1e155).
         let direction = nearest.offset.map(|c| -c);
-        let squared = dot(&direction, &direction);
+        let unit = rescaled(&direction);
+        let squared = dot(&unit, &direction);
         let mut reach = 0.0f64;
         let mut worst = f64::NEG_INFINITY;
         for &v in vertices {
             let p = hull.point(v);
             let from_query: [f64; D] = std::array::from_fn(|c| p[c] - self.query[c]);
-            reach = reach.max(dot(&from_query, &from_query));
-            // (q − x)·(v − x) = (q − x)·(v − q) + |q − x|²
-            worst = worst.max(dot(&direction, &from_query) + squared);
+            reach = reach.max(norm(&from_query));
+            // (q − x)·(v − x) = (q − x)·(v − q) + |q − x|², here divided by 2^e
+            worst = worst.max(dot(&unit, &from_query) + squared);
         }
-        let slack = 2.0 * (D as f64 + 4.0) * f64::EPSILON * (squared * reach).sqrt();
+        let slack = 2.0 * (D as f64 + 4.0) * f64::EPSILON * dot(&unit, &unit).sqrt() * reach;
         let optimal = worst <= slack;
         if optimal {
             let support = nearest.support().iter().map(|&i| vertices[i]);

@@ -21,6 +21,7 @@
 //! entering point swapped in for one of the others when that gets strictly nearer.
 
 use crate::hull::dot;
+pub(crate) use crate::hull::norm;
 
 /// Optimality tolerance: stop when `|x|² − min_j x·p_j ≤ TOL·M·|x|` (`M` = largest `|p_j − q|`).
 const TOL: f64 = 1e-14;
@@ -88,8 +89,16 @@ pub(crate) fn min_norm_point_accurate<const D: usize>(
     wolfe::<D, true>(count, point, query, start)
 }
 
+/// Coordinates (of the points and the query together) whose largest magnitude lies outside
+/// [2^−`SQUARE_SAFE`, 2^`SQUARE_SAFE`] are first brought to [0.5, 1) by a power of two: squared
+/// distances of larger ones overflow (a query at 1e155 from a unit hull gave −∞), and of smaller
+/// ones underflow. 2^400 leaves room for D ≤ 8 squares and their sums.
+const SQUARE_SAFE: i32 = 400;
+
 /// Wolfe's algorithm; `ACCURATE` selects the double-double residual (and `start`, which the plain
-/// variant ignores).
+/// variant ignores). Works in units of a power of two when the coordinates are huge or tiny (see
+/// [`SQUARE_SAFE`]): an exact change of units, except that coordinates below 2^−1022 of the
+/// largest lose low bits, far below the result's rounding.
 fn wolfe<const D: usize, const ACCURATE: bool>(
     count: usize,
     point: impl Fn(usize) -> [f64; D],
@@ -97,6 +106,36 @@ fn wolfe<const D: usize, const ACCURATE: bool>(
     start: &[usize],
 ) -> Nearest<D> {
     assert!(count > 0, "min_norm_point: no points");
+    let magnitude = |p: &[f64; D]| p.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let largest = (0..count).fold(magnitude(query), |m, i| m.max(magnitude(&point(i))));
+    let safe = 2f64.powi(SQUARE_SAFE);
+    if largest <= safe && (largest >= 1.0 / safe || largest == 0.0) || !largest.is_finite() {
+        return wolfe_in_range::<D, ACCURATE>(count, point, query, start);
+    }
+    // 2^e ≤ largest < 2^(e+1): divide by 2^(e+1), in two factors so neither over- nor underflows
+    // (as `rescaled`).
+    let e = power_of_two_below(largest).log2() as i32 + 1;
+    // Each factor alone may overflow (2^1024 for a query near f64::MAX): applied in two steps.
+    let (down, up) = (
+        (2f64.powi(-e / 2), 2f64.powi(-e - (-e / 2))),
+        (2f64.powi(e / 2), 2f64.powi(e - e / 2)),
+    );
+    let scaled = |p: [f64; D]| p.map(|x| x * down.0 * down.1);
+    let mut nearest =
+        wolfe_in_range::<D, ACCURATE>(count, |i| scaled(point(i)), &scaled(*query), start);
+    nearest.point = nearest.point.map(|x| x * up.0 * up.1);
+    nearest.offset = nearest.offset.map(|x| x * up.0 * up.1);
+    nearest.distance = nearest.distance * up.0 * up.1;
+    nearest
+}
+
+/// [`wolfe`] on coordinates whose squares neither overflow nor underflow.
+fn wolfe_in_range<const D: usize, const ACCURATE: bool>(
+    count: usize,
+    point: impl Fn(usize) -> [f64; D],
+    query: &[f64; D],
+    start: &[usize],
+) -> Nearest<D> {
     let mut largest = 0.0f64;
     let mut first = (f64::INFINITY, 0);
     for i in 0..count {
@@ -296,6 +335,19 @@ fn finish<const D: usize>(
 
 /// The largest power of two not above `x` (1 for zero or non-finite `x`), built in two halves so
 /// that neither factor overflows.
+/// `v` divided by a power of two that brings its largest coordinate into [0.5, 1) (zero stays
+/// zero): an exact change of length, after which dot products with it neither overflow nor
+/// underflow where `v`'s own square would.
+pub(crate) fn rescaled<const D: usize>(v: &[f64; D]) -> [f64; D] {
+    let largest = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    if largest == 0.0 || !largest.is_finite() {
+        return *v;
+    }
+    let e = power_of_two_below(largest).log2() as i32 + 1;
+    let down = (2f64.powi(-e / 2), 2f64.powi(-e - (-e / 2)));
+    v.map(|x| x * down.0 * down.1)
+}
+
 fn power_of_two_below(x: f64) -> f64 {
     if !(x.is_finite() && x > 0.0) {
         return 1.0;

@@ -152,7 +152,7 @@ impl OwsEvaluator {
         }
         snapped_union(&self.cones, &mut self.wrenches);
         let edges = grasp.friction().cone_edges();
-        pyramid_labels(grasp.contact_count(), edges, &mut self.pyramids);
+        pyramid_labels(self.cones.contacts(), edges, &mut self.pyramids);
         let delta = self.cones.delta.iter().fold(0.0, |m: f64, &d| m.max(d));
         let set = GraspSet {
             raw: &self.cones.raw,

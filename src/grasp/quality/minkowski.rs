@@ -15,22 +15,26 @@ use std::time::Instant;
 pub const MINKOWSKI_MATERIALISE_LIMIT: usize = 1 << 20;
 
 /// Refills `sets` with the per-contact wrench sets (with the zero wrench if asked), reusing
-/// their buffers: the snapped wrenches, or the caller's raw ones when `raw`.
+/// their buffers: the snapped wrenches, or the caller's raw ones when `raw`, each scaled by its
+/// contact's multiplicity (r copies of a convex set sum to r times it; see
+/// [`snap`](crate::grasp::snap)).
 fn fill_sets(
     sets: &mut Vec<Vec<[f64; 6]>>,
     cones: &SnappedCones,
     with_zero_wrench: bool,
     raw: bool,
 ) {
-    let contacts = cones.generators.len();
+    let contacts = cones.contacts();
     let k = cones.edges();
     sets.resize_with(contacts, Vec::new);
     for (i, set) in sets.iter_mut().enumerate() {
         set.clear();
+        let r = f64::from(cones.multiplicity[i]);
+        let scaled = |w: [f64; 6]| w.map(|x| r * x);
         if raw {
-            set.extend_from_slice(&cones.raw[i * k..(i + 1) * k]);
+            set.extend(cones.raw[i * k..(i + 1) * k].iter().map(|&w| scaled(w)));
         } else {
-            set.extend((0..k).map(|j| cones.wrench(i, j)));
+            set.extend((0..k).map(|j| scaled(cones.wrench(i, j))));
         }
         if with_zero_wrench {
             set.push([0.0; 6]);
@@ -39,18 +43,29 @@ fn fill_sets(
 }
 
 /// The raw side of a Minkowski sum for [`certify::bracket`]: `δ` (the distance between a
-/// snapped Minkowski point, exact, and the exact sum of the same raw wrenches), the rounding of a
-/// raw sum computed in `f64`, and the sum's support function with its rounding bound.
+/// snapped Minkowski point as computed and the exact sum of the same raw wrenches) and the
+/// rounding of a raw sum computed in `f64`.
 fn raw_bounds(cones: &SnappedCones, raw_sets: &[Vec<[f64; 6]>]) -> (f64, f64) {
-    let delta: f64 = cones.delta.iter().sum::<f64>() * (1.0 + 1e-15);
-    let sizes: f64 = raw_sets
+    // m counts every contact of the grasp: a merged contact's scaling r·w rounds once more.
+    let m: f64 = cones.multiplicity.iter().map(|&r| f64::from(r)).sum();
+    let scaled_delta: f64 = cones
+        .delta
         .iter()
-        .map(|set| set.iter().map(|w| dot(w, w).sqrt()).fold(0.0, f64::max))
+        .zip(&cones.multiplicity)
+        .map(|(d, &r)| d * f64::from(r))
         .sum();
+    let sizes: f64 = raw_scale(raw_sets);
     // A left-to-right sum of m vectors: each coordinate is off by at most γ_(m−1)·Σ|w_ic|, so
     // the error vector by at most γ_m·Σ|w_i| (γ_m ≤ 1.2e−16·m for small m).
-    let error = 1.2e-16 * raw_sets.len() as f64 * sizes * (1.0 + 1e-15);
-    (delta, error)
+    let error = 1.2e-16 * m * sizes * (1.0 + 1e-15);
+    // Snapped sums are exact up to 10 contacts (see `snap`); beyond, they round like raw ones
+    // (their sizes are within δ of the raw sizes), which δ must then cover.
+    let snapped_rounding = if m > 10.0 {
+        1.2e-16 * m * (sizes + scaled_delta) * (1.0 + 1e-15)
+    } else {
+        0.0
+    };
+    ((scaled_delta + snapped_rounding) * (1.0 + 1e-15), error)
 }
 
 /// The support function of the sum of `sets`: Σ_i max_j u·w_ij, with a rounding bound.
@@ -80,7 +95,8 @@ fn sum_support(sets: &[Vec<[f64; 6]>], direction: &[f64; 6]) -> [f64; 6] {
     total
 }
 
-/// `Σ_i sets[i][choice[i]]`, left to right (exact for snapped wrenches and up to 10 contacts).
+/// `Σ_i sets[i][choice[i]]`, left to right (exact for snapped wrenches and up to 10 contacts,
+/// counted with multiplicity).
 fn sum(sets: &[Vec<[f64; 6]>], choice: impl Iterator<Item = usize>) -> [f64; 6] {
     let mut total = [0.0; 6];
     for (set, j) in sets.iter().zip(choice) {
@@ -142,6 +158,8 @@ pub(super) struct MinkowskiSource {
     with_zero_wrench: bool,
     /// The caller's raw wrench sets (with the zero wrench if asked), whatever `sets` holds.
     raw_sets: Vec<Vec<[f64; 6]>>,
+    /// The caller's raw wrenches, unscaled: the union whose force closure the sum shares.
+    union: Vec<[f64; 6]>,
     /// Every point handed out (seeds and insertions), and its tuple (`contacts` entries each in
     /// `tuples`): how a hull vertex finds its raw point for the certificate.
     log: Vec<[f64; 6]>,
@@ -153,6 +171,8 @@ impl MinkowskiSource {
     fn fill(&mut self, cones: &SnappedCones, with_zero_wrench: bool, raw: bool) {
         fill_sets(&mut self.sets, cones, with_zero_wrench, raw);
         fill_sets(&mut self.raw_sets, cones, with_zero_wrench, true);
+        self.union.clear();
+        self.union.extend_from_slice(&cones.raw);
         self.log.clear();
         self.tuples.clear();
         self.with_zero_wrench = with_zero_wrench;
@@ -184,13 +204,8 @@ impl MinkowskiSource {
     /// The support point of the union of the contacts' raw cone edges (no zero wrench): the
     /// hull whose force closure Q∞ with the zero wrench shares.
     fn raw_union_support(&self, direction: &[f64; 6]) -> [f64; 6] {
-        let zero = usize::from(self.with_zero_wrench);
         let mut best = (f64::NEG_INFINITY, [0.0; 6]);
-        for w in self
-            .raw_sets
-            .iter()
-            .flat_map(|set| &set[..set.len() - zero])
-        {
+        for w in &self.union {
             let height = dot(direction, w);
             if height > best.0 {
                 best = (height, *w);
@@ -433,7 +448,10 @@ pub(super) fn partial(
     source.fill(cones, with_zero_wrench, false);
     let scale = source.raw_scale();
     if with_zero_wrench {
-        let largest = source.sizes.iter().fold(0.0, |m: f64, &s| m.max(s));
+        let largest = source
+            .union
+            .iter()
+            .fold(0.0, |m: f64, w| m.max(dot(w, w).sqrt()));
         let start = [source.raw_union_support(&[1.0, 0.0, 0.0, 0.0, 0.0, 0.0])];
         let verdict = gjk.run(
             |v| source.raw_union_support(v),
