@@ -132,8 +132,8 @@ impl Job<'_> {
             .table
             .to_arrays::<D>()
             .expect("dispatched on the table's dimension");
-        // The hull keeps its own copy of the points: neither the table nor the arrays are needed
-        // while it is built (the table) or printed (both).
+        // The hull copies the points: the table is not needed once the arrays are made, nor the
+        // arrays once the hull is built.
         drop(self.table);
         let geometry = |e: HullError| CliError::Geometry(format!("{}: {e}", self.source));
         let (hull, outcome) = match self.strategy {
