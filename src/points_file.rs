@@ -199,24 +199,152 @@ impl std::error::Error for ParseError {}
 /// Parses a points file (see the [module documentation](self) for the format).
 pub fn parse_points(text: &str) -> Result<PointTable, ParseError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let mut table = PointTable {
-        dimension: 0,
-        coords: Vec::new(),
-        lines: Vec::new(),
-    };
-    let mut first_line = 0;
-    let mut row = Vec::new();
-    // `\n` and `\r\n` end lines; so does a lone `\r`, which `str::lines` would leave inside a
-    // line (whitespace to the number parser: every point on one row).
-    let lines = text
-        .split('\n')
-        .flat_map(|l| l.strip_suffix('\r').unwrap_or(l).split('\r'));
-    for (index, raw) in lines.enumerate() {
-        let line = index + 1;
+    let mut parser = Parser::default();
+    for chunk in text.split('\n') {
+        parser.chunk(chunk)?;
+    }
+    parser.finish()
+}
+
+/// Why a points stream could not be read by [`read_points`].
+#[derive(Debug)]
+pub enum ReadError {
+    /// Reading failed, or the input is not UTF-8 (as [`std::io::Read::read_to_string`] reports
+    /// it).
+    Io(std::io::Error),
+    /// The input was read but is not a valid points file.
+    Parse(ParseError),
+}
+
+impl fmt::Display for ReadError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ReadError::Io(e) => write!(f, "cannot read: {e}"),
+            ReadError::Parse(e) => e.fmt(f),
+        }
+    }
+}
+
+impl std::error::Error for ReadError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            ReadError::Io(e) => Some(e),
+            ReadError::Parse(e) => Some(e),
+        }
+    }
+}
+
+/// Reads and parses a points file from `reader` one line at a time, without holding the text:
+/// memory is the table plus the longest line.
+///
+/// The outcome is that of reading the whole input into a `String` and calling [`parse_points`]:
+/// the same table, the same [`ParseError`] (first error, same line numbers), and an I/O error
+/// anywhere in the input — invalid UTF-8 included — wins over a parse error, so after a parse
+/// error the rest of the input is still read (and checked, not stored).
+///
+/// ```
+/// use pqhull::points_file::{ReadError, read_points};
+///
+/// let table = read_points("0 0\r\n1, 0\n0 1 # apex\n".as_bytes()).unwrap();
+/// assert_eq!((table.dimension(), table.len()), (2, 3));
+///
+/// let err = read_points("0 0\n1\n".as_bytes()).unwrap_err();
+/// assert!(matches!(err, ReadError::Parse(_)));
+/// assert_eq!(err.to_string(), "line 2: expected 2 coordinates (from line 1), found 1");
+///
+/// let err = read_points(&b"0 0\n1 x\n\xff\n"[..]).unwrap_err();
+/// assert!(matches!(err, ReadError::Io(_)));
+/// assert_eq!(err.to_string(), "cannot read: stream did not contain valid UTF-8");
+/// ```
+///
+/// # Errors
+/// [`ReadError::Io`] when reading fails or the input is not UTF-8, else [`ReadError::Parse`].
+pub fn read_points<R: std::io::BufRead>(mut reader: R) -> Result<PointTable, ReadError> {
+    let mut parser = Parser::default();
+    let mut failed: Option<ParseError> = None;
+    let mut buffer = Vec::new();
+    let mut first = true;
+    loop {
+        buffer.clear();
+        if reader
+            .read_until(b'\n', &mut buffer)
+            .map_err(ReadError::Io)?
+            == 0
+        {
+            break;
+        }
+        let bytes = buffer.strip_suffix(b"\n").unwrap_or(&buffer);
+        // `\n` never occurs inside a multi-byte character, so the input is UTF-8 exactly when
+        // every chunk is.
+        let chunk = std::str::from_utf8(bytes).map_err(|_| {
+            ReadError::Io(std::io::Error::new(
+                std::io::ErrorKind::InvalidData,
+                "stream did not contain valid UTF-8",
+            ))
+        })?;
+        let chunk = if std::mem::take(&mut first) {
+            chunk.strip_prefix('\u{feff}').unwrap_or(chunk)
+        } else {
+            chunk
+        };
+        if failed.is_none()
+            && let Err(e) = parser.chunk(chunk)
+        {
+            failed = Some(e);
+        }
+    }
+    match failed {
+        Some(e) => Err(ReadError::Parse(e)),
+        None => parser.finish().map_err(ReadError::Parse),
+    }
+}
+
+/// The state of a parse, fed one `\n`-separated chunk of the text at a time.
+struct Parser {
+    table: PointTable,
+    /// The line of the first data row (0 before it).
+    first_line: usize,
+    /// Lines seen so far.
+    line: usize,
+    /// The current row's coordinates (reused).
+    row: Vec<f64>,
+}
+
+impl Default for Parser {
+    fn default() -> Self {
+        Self {
+            table: PointTable {
+                dimension: 0,
+                coords: Vec::new(),
+                lines: Vec::new(),
+            },
+            first_line: 0,
+            line: 0,
+            row: Vec::new(),
+        }
+    }
+}
+
+impl Parser {
+    /// Parses the text between two `\n` (or an end of the text), which holds one line or, with
+    /// lone `\r` line endings, several.
+    fn chunk(&mut self, chunk: &str) -> Result<(), ParseError> {
+        // `\n` and `\r\n` end lines; so does a lone `\r`, which `str::lines` would leave inside
+        // a line (whitespace to the number parser: every point on one row).
+        for raw in chunk.strip_suffix('\r').unwrap_or(chunk).split('\r') {
+            self.line += 1;
+            self.parse_line(raw)?;
+        }
+        Ok(())
+    }
+
+    fn parse_line(&mut self, raw: &str) -> Result<(), ParseError> {
+        let line = self.line;
         let data = raw.split_once('#').map_or(raw, |(data, _)| data).trim();
         if data.is_empty() {
-            continue;
+            return Ok(());
         }
+        let row = &mut self.row;
         row.clear();
         let mut column = 0;
         for field in data.split(',') {
@@ -244,24 +372,29 @@ pub fn parse_points(text: &str) -> Result<PointTable, ParseError> {
                 row.push(value);
             }
         }
+        let table = &mut self.table;
         if table.lines.is_empty() {
             table.dimension = row.len();
-            first_line = line;
+            self.first_line = line;
         } else if row.len() != table.dimension {
             return Err(ParseError::WrongLength {
                 line,
                 expected: table.dimension,
-                first_line,
+                first_line: self.first_line,
                 found: row.len(),
             });
         }
-        table.coords.extend_from_slice(&row);
+        table.coords.extend_from_slice(row);
         table.lines.push(line);
+        Ok(())
     }
-    if table.lines.is_empty() {
-        return Err(ParseError::Empty);
+
+    fn finish(self) -> Result<PointTable, ParseError> {
+        if self.table.lines.is_empty() {
+            return Err(ParseError::Empty);
+        }
+        Ok(self.table)
     }
-    Ok(table)
 }
 
 impl FromStr for PointTable {
@@ -438,6 +571,76 @@ mod tests {
             assert_eq!(e.line(), None);
             assert_eq!(e.to_string(), "no points: the input has no data rows");
         }
+    }
+
+    /// `read_points` on a stream gives exactly what `parse_points` gives on the whole text.
+    #[test]
+    fn reading_a_stream_is_parsing_the_text() {
+        let texts = [
+            "0 0\n1 0\n0 1\n",
+            "0 0\r\n1 0\r\n0 1\r\n",
+            "0 0\r1 0\r0 1\r",
+            "0 0\r1 0\n0 1",
+            "0 0\r\n\r\n1 1\r\n",
+            "\u{feff}1,2\r\n# c\r\n3 4\r\n\r\n5 6",
+            "1 2\r",
+            "# c\n\n1 2 3\n4 5 6\n\n7 8\n",
+            "0 0\r1 0\r1 x\r",
+            "1 2\n3 abc\n",
+            "1 2\n3 1e400\n",
+            "0 0\n1,2,\n",
+            "",
+            "\n\n",
+            "# only a comment\n   \n# another\r\n",
+            "\u{feff}",
+            "1 2\n\u{feff}3 4\n",
+        ];
+        for text in texts {
+            let whole = parse_points(text);
+            // A one-byte buffer splits every read, a large one reads everything at once.
+            for capacity in [1, 3, 1 << 16] {
+                let streamed =
+                    read_points(std::io::BufReader::with_capacity(capacity, text.as_bytes()));
+                match (&whole, streamed) {
+                    (Ok(a), Ok(b)) => assert_eq!(*a, b, "{text:?}"),
+                    (Err(a), Err(ReadError::Parse(b))) => assert_eq!(*a, b, "{text:?}"),
+                    (a, b) => panic!("{text:?}: {a:?} but streamed {b:?}"),
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_read_error_anywhere_wins_over_a_parse_error() {
+        // Invalid UTF-8 after a parse error: the text could not have been read whole either.
+        for bytes in [&b"0 0\n1 x\n\xff\n"[..], b"\xff 0\n", b"0 0\n1 1\n2 \xc3"] {
+            let err = read_points(bytes).unwrap_err();
+            assert!(
+                matches!(&err, ReadError::Io(e) if e.kind() == std::io::ErrorKind::InvalidData),
+                "{err:?}"
+            );
+            // The message is the standard library's for `read_to_string` on such input.
+            let mut text = String::new();
+            let std_err = std::io::Read::read_to_string(&mut &bytes[..], &mut text).unwrap_err();
+            assert_eq!(err.to_string(), format!("cannot read: {std_err}"));
+        }
+        // An I/O error after some good lines and a bad one.
+        struct Failing<'a>(&'a [u8]);
+        impl std::io::Read for Failing<'_> {
+            fn read(&mut self, buf: &mut [u8]) -> std::io::Result<usize> {
+                if self.0.is_empty() {
+                    return Err(std::io::Error::other("disk on fire"));
+                }
+                std::io::Read::read(&mut self.0, buf)
+            }
+        }
+        let err = read_points(std::io::BufReader::new(Failing(b"0 0\n1 x\n"))).unwrap_err();
+        assert!(matches!(err, ReadError::Io(_)), "{err:?}");
+        assert_eq!(err.to_string(), "cannot read: disk on fire");
+        assert!(std::error::Error::source(&err).is_some());
+        // A parse error is reported as itself.
+        let err = read_points(&b"0 0\n1 x\n"[..]).unwrap_err();
+        assert_eq!(err.to_string(), "line 2: coordinate 2 'x' is not a number");
     }
 
     #[test]

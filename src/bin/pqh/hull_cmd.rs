@@ -4,9 +4,8 @@ use crate::error::CliError;
 use crate::input::{Source, parse_point};
 use clap::{Args, ValueEnum};
 use pqhull::points_file::PointTable;
+use pqhull::strategy::DistanceResult;
 use pqhull::{ClosestToOrigin, FacetId, Hull, HullError, Stats};
-use serde_json::{Value, json};
-use std::collections::HashMap;
 use std::io::Write;
 use std::path::PathBuf;
 
@@ -61,35 +60,6 @@ impl StrategyArg {
     }
 }
 
-/// One facet, with neighbours as positions in the report's facet list.
-struct FacetReport {
-    vertices: Vec<usize>,
-    normal: Vec<f64>,
-    offset: f64,
-    neighbors: Vec<Option<usize>>,
-}
-
-/// The closest-to-origin answer.
-struct DistanceReport {
-    query: Vec<f64>,
-    signed_distance: f64,
-    closest_facet_vertices: Vec<usize>,
-    closest_facet_position: Option<usize>,
-    nearest_point: Vec<f64>,
-}
-
-/// A hull, with the dimension erased, ready to print.
-struct HullReport {
-    dimension: usize,
-    points: usize,
-    strategy: StrategyArg,
-    vertices: Vec<usize>,
-    facets: Vec<FacetReport>,
-    volume: Option<f64>,
-    distance: Option<DistanceReport>,
-    stats: Stats,
-}
-
 /// Runs `pqh hull`.
 pub fn run(args: &HullArgs) -> Result<(), CliError> {
     let origin = match (&args.origin, args.strategy) {
@@ -113,12 +83,16 @@ pub fn run(args: &HullArgs) -> Result<(), CliError> {
             source.name()
         )));
     }
+    let name = source.name();
+    let first_line = table.line(0);
     let job = Job {
-        table: &table,
+        table,
         strategy: args.strategy,
         origin: origin.as_deref(),
+        json: args.json,
+        source: &name,
     };
-    let report = match d {
+    match d {
         2 => job.run::<2>(),
         3 => job.run::<3>(),
         4 => job.run::<4>(),
@@ -126,46 +100,52 @@ pub fn run(args: &HullArgs) -> Result<(), CliError> {
         6 => job.run::<6>(),
         7 => job.run::<7>(),
         8 => job.run::<8>(),
-        _ => {
-            return Err(CliError::Input(format!(
-                "{}: the points have dimension {d} (from line {}); pqh supports dimensions 2 to 8",
-                source.name(),
-                table.line(0)
-            )));
-        }
+        _ => Err(CliError::Input(format!(
+            "{name}: the points have dimension {d} (from line {first_line}); pqh supports \
+             dimensions 2 to 8"
+        ))),
     }
-    .map_err(|e| CliError::Geometry(format!("{}: {e}", source.name())))?;
-
-    let stdout = std::io::stdout();
-    let mut out = std::io::BufWriter::new(stdout.lock());
-    if args.json {
-        serde_json::to_writer(&mut out, &report.to_json()).map_err(std::io::Error::from)?;
-        writeln!(out)?;
-    } else {
-        report.write_human(&mut out, &source.name())?;
-    }
-    out.flush()?;
-    Ok(())
 }
 
-/// What to build, independent of the dimension.
+/// What to build and print, independent of the dimension.
 struct Job<'a> {
-    table: &'a PointTable,
+    table: PointTable,
     strategy: StrategyArg,
     origin: Option<&'a [f64]>,
+    json: bool,
+    /// The input's name, for messages and the human output.
+    source: &'a str,
+}
+
+/// What a run found besides the hull itself.
+struct Outcome<const D: usize> {
+    strategy: StrategyArg,
+    volume: Option<f64>,
+    distance: Option<([f64; D], DistanceResult<D>)>,
+    stats: Stats,
 }
 
 impl Job<'_> {
-    fn run<const D: usize>(&self) -> Result<HullReport, HullError> {
+    /// Builds the hull, then writes it to standard output straight from the hull's facets.
+    fn run<const D: usize>(self) -> Result<(), CliError> {
         let points = self
             .table
             .to_arrays::<D>()
             .expect("dispatched on the table's dimension");
-        let (hull, volume, distance, stats) = match self.strategy {
+        // The hull copies the points: the table is not needed once the arrays are made, nor the
+        // arrays once the hull is built.
+        drop(self.table);
+        let geometry = |e: HullError| CliError::Geometry(format!("{}: {e}", self.source));
+        let (hull, outcome) = match self.strategy {
             StrategyArg::Full => {
-                let hull = Hull::<D>::try_new(&points)?;
-                let (volume, stats) = (hull.volume(), hull.stats());
-                (hull, Some(volume), None, stats)
+                let hull = Hull::<D>::try_new(&points).map_err(geometry)?;
+                let outcome = Outcome {
+                    strategy: self.strategy,
+                    volume: Some(hull.volume()),
+                    distance: None,
+                    stats: hull.stats(),
+                };
+                (hull, outcome)
             }
             StrategyArg::ClosestToOrigin => {
                 let query: [f64; D] = match self.origin {
@@ -173,149 +153,229 @@ impl Job<'_> {
                     None => [0.0; D],
                 };
                 let (hull, result) =
-                    Hull::try_with_strategy(&points, ClosestToOrigin::towards(query))?;
-                let stats = result.stats;
-                (hull, None, Some((query, result)), stats)
+                    Hull::try_with_strategy(&points, ClosestToOrigin::towards(query))
+                        .map_err(geometry)?;
+                let outcome = Outcome {
+                    strategy: self.strategy,
+                    volume: None,
+                    stats: result.stats,
+                    distance: Some((query, result)),
+                };
+                (hull, outcome)
             }
         };
-        let positions: HashMap<FacetId, usize> = hull
-            .facets()
-            .enumerate()
-            .map(|(pos, (id, _))| (id, pos))
-            .collect();
-        let facets = hull
-            .facets()
-            .map(|(_, f)| FacetReport {
-                vertices: f.vertices().to_vec(),
-                normal: f.normal().to_vec(),
-                offset: f.offset(),
-                neighbors: f
-                    .neighbors()
-                    .iter()
-                    .map(|n| positions.get(n).copied())
-                    .collect(),
-            })
-            .collect();
-        let distance = distance.map(|(query, r)| DistanceReport {
-            query: query.to_vec(),
-            signed_distance: r.signed_distance,
-            closest_facet_vertices: r.closest_facet_vertices.to_vec(),
-            closest_facet_position: positions.get(&r.closest_facet).copied(),
-            nearest_point: r.nearest_point.to_vec(),
-        });
-        Ok(HullReport {
-            dimension: D,
-            points: points.len(),
-            strategy: self.strategy,
-            vertices: hull.vertex_indices(),
-            facets,
-            volume,
-            distance,
-            stats,
-        })
+        drop(points);
+
+        let stdout = std::io::stdout();
+        let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout.lock());
+        if self.json {
+            write_json(&mut out, &hull, &outcome)?;
+            writeln!(out)?;
+        } else {
+            write_human(&mut out, &hull, &outcome, self.source)?;
+        }
+        out.flush()?;
+        Ok(())
     }
 }
 
-impl HullReport {
-    fn to_json(&self) -> Value {
-        let facets: Vec<Value> = self
-            .facets
-            .iter()
-            .map(|f| {
-                json!({
-                    "vertices": f.vertices,
-                    "normal": f.normal,
-                    "offset": f.offset,
-                    "neighbors": f.neighbors,
-                })
-            })
-            .collect();
-        let mut obj = json!({
-            "dimension": self.dimension,
-            "points": self.points,
-            "strategy": self.strategy.name(),
-            "vertices": self.vertices,
-            "facets": facets,
-            "stats": {
-                "points_processed": self.stats.points_processed,
-                "facets_created": self.stats.facets_created,
-                "expansions": self.stats.expansions,
-                "elapsed_us": u64::try_from(self.stats.elapsed.as_micros()).unwrap_or(u64::MAX),
-            },
-        });
-        let map = obj.as_object_mut().expect("an object");
-        if let Some(volume) = self.volume {
-            map.insert("volume".into(), json!(volume));
-        }
-        if let Some(d) = &self.distance {
-            map.insert("origin".into(), json!(d.query));
-            map.insert("origin_distance".into(), json!(d.signed_distance));
-            map.insert("closest_facet".into(), json!(d.closest_facet_vertices));
-            map.insert(
-                "closest_facet_index".into(),
-                json!(d.closest_facet_position),
-            );
-            map.insert("nearest_point".into(), json!(d.nearest_point));
-        }
-        obj
+/// Writes `value` as serde_json writes it (compact; floats shortest round-trip, NaN and
+/// infinities as `null`), so that the streamed document is the one `serde_json::to_writer` of a
+/// `Value` gave.
+macro_rules! put {
+    ($out:expr, $value:expr) => {
+        serde_json::to_writer(&mut *$out, $value).map_err(std::io::Error::from)
+    };
+}
+
+/// Writes the members of one JSON object, keys in the order serde_json's default (sorted) `Map`
+/// printed them before the output was streamed: strictly increasing, checked in debug builds.
+struct JsonObject<'k> {
+    last: Option<&'k str>,
+}
+
+impl<'k> JsonObject<'k> {
+    fn begin(out: &mut impl Write) -> std::io::Result<Self> {
+        out.write_all(b"{")?;
+        Ok(Self { last: None })
     }
 
-    fn write_human(&self, out: &mut impl Write, source: &str) -> std::io::Result<()> {
-        const SHOWN: usize = 32;
-        let list = |xs: &[usize]| {
-            let mut s: Vec<String> = xs.iter().take(SHOWN).map(usize::to_string).collect();
-            if xs.len() > SHOWN {
-                s.push(format!("... ({} more)", xs.len() - SHOWN));
-            }
-            s.join(" ")
-        };
-        let point = |xs: &[f64]| {
-            let s: Vec<String> = xs.iter().map(f64::to_string).collect();
-            format!("({})", s.join(", "))
-        };
-        writeln!(out, "input            {source}")?;
-        writeln!(out, "dimension        {}", self.dimension)?;
-        writeln!(out, "points           {}", self.points)?;
-        writeln!(out, "strategy         {}", self.strategy.name())?;
-        let partial = if self.strategy == StrategyArg::Full {
-            ""
-        } else {
-            " (of the partial hull)"
-        };
-        writeln!(
-            out,
-            "vertices         {}{partial}: {}",
-            self.vertices.len(),
-            list(&self.vertices)
-        )?;
-        writeln!(out, "facets           {}{partial}", self.facets.len())?;
-        if let Some(volume) = self.volume {
-            writeln!(out, "volume           {volume}")?;
+    /// Writes `,` if needed and `"key":`; the value follows.
+    fn key(&mut self, out: &mut impl Write, key: &'k str) -> std::io::Result<()> {
+        debug_assert!(
+            self.last.is_none_or(|last| last < key),
+            "JSON keys out of order: {:?} then {key:?}",
+            self.last
+        );
+        debug_assert!(
+            key.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_'),
+            "{key:?} needs escaping"
+        );
+        if self.last.is_some() {
+            out.write_all(b",")?;
         }
-        if let Some(d) = &self.distance {
-            let side = if d.signed_distance > 0.0 {
-                "inside"
-            } else if d.signed_distance < 0.0 {
-                "outside"
-            } else {
-                "on the boundary"
-            };
-            writeln!(out, "query point      {}", point(&d.query))?;
-            writeln!(out, "signed distance  {} ({side})", d.signed_distance)?;
-            writeln!(
-                out,
-                "closest facet    vertices {}",
-                list(&d.closest_facet_vertices)
-            )?;
-            writeln!(out, "nearest point    {}", point(&d.nearest_point))?;
-        }
-        writeln!(
-            out,
-            "work             {} points processed, {} facets created, {} expansions, {:.3} ms",
-            self.stats.points_processed,
-            self.stats.facets_created,
-            self.stats.expansions,
-            self.stats.elapsed.as_secs_f64() * 1e3
-        )
+        self.last = Some(key);
+        write!(out, "\"{key}\":")
     }
+
+    fn end(self, out: &mut impl Write) -> std::io::Result<()> {
+        out.write_all(b"}")
+    }
+}
+
+/// Position of each live facet in the order of [`Hull::facets`], indexed by its arena slot
+/// ([`FacetId::index`]); `u32::MAX` for a slot holding no live facet. Four bytes per slot where
+/// a `HashMap<FacetId, usize>` took several times that.
+fn facet_positions<const D: usize>(hull: &Hull<D>) -> Vec<u32> {
+    let slots = hull.facets().last().map_or(0, |(id, _)| id.index() + 1);
+    let mut positions = vec![u32::MAX; slots];
+    for (position, (id, _)) in hull.facets().enumerate() {
+        positions[id.index()] = u32::try_from(position).expect("facet ids are u32");
+    }
+    positions
+}
+
+/// The position of facet `id` in the output's facet list, if it is live.
+fn position(positions: &[u32], id: FacetId) -> Option<usize> {
+    positions
+        .get(id.index())
+        .filter(|&&p| p != u32::MAX)
+        .map(|&p| p as usize)
+}
+
+/// The JSON document, written facet by facet.
+fn write_json<const D: usize>(
+    out: &mut impl Write,
+    hull: &Hull<D>,
+    outcome: &Outcome<D>,
+) -> std::io::Result<()> {
+    let positions = facet_positions(hull);
+    let mut obj = JsonObject::begin(out)?;
+    if let Some((_, result)) = &outcome.distance {
+        obj.key(out, "closest_facet")?;
+        put!(out, &result.closest_facet_vertices[..])?;
+        obj.key(out, "closest_facet_index")?;
+        put!(out, &position(&positions, result.closest_facet))?;
+    }
+    obj.key(out, "dimension")?;
+    put!(out, &D)?;
+    obj.key(out, "facets")?;
+    out.write_all(b"[")?;
+    for (i, (_, facet)) in hull.facets().enumerate() {
+        if i > 0 {
+            out.write_all(b",")?;
+        }
+        let mut f = JsonObject::begin(out)?;
+        f.key(out, "neighbors")?;
+        put!(out, &facet.neighbors().map(|n| position(&positions, n))[..])?;
+        f.key(out, "normal")?;
+        put!(out, &facet.normal()[..])?;
+        f.key(out, "offset")?;
+        put!(out, &facet.offset())?;
+        f.key(out, "vertices")?;
+        put!(out, &facet.vertices()[..])?;
+        f.end(out)?;
+    }
+    out.write_all(b"]")?;
+    if let Some((query, result)) = &outcome.distance {
+        obj.key(out, "nearest_point")?;
+        put!(out, &result.nearest_point[..])?;
+        obj.key(out, "origin")?;
+        put!(out, &query[..])?;
+        obj.key(out, "origin_distance")?;
+        put!(out, &result.signed_distance)?;
+    }
+    obj.key(out, "points")?;
+    put!(out, &hull.point_count())?;
+    obj.key(out, "stats")?;
+    let stats = &outcome.stats;
+    let mut s = JsonObject::begin(out)?;
+    s.key(out, "elapsed_us")?;
+    put!(
+        out,
+        &u64::try_from(stats.elapsed.as_micros()).unwrap_or(u64::MAX)
+    )?;
+    s.key(out, "expansions")?;
+    put!(out, &stats.expansions)?;
+    s.key(out, "facets_created")?;
+    put!(out, &stats.facets_created)?;
+    s.key(out, "points_processed")?;
+    put!(out, &stats.points_processed)?;
+    s.end(out)?;
+    obj.key(out, "strategy")?;
+    put!(out, outcome.strategy.name())?;
+    obj.key(out, "vertices")?;
+    put!(out, &hull.vertex_indices())?;
+    if let Some(volume) = outcome.volume {
+        obj.key(out, "volume")?;
+        put!(out, &volume)?;
+    }
+    obj.end(out)
+}
+
+/// The human-readable summary (no facet list).
+fn write_human<const D: usize>(
+    out: &mut impl Write,
+    hull: &Hull<D>,
+    outcome: &Outcome<D>,
+    source: &str,
+) -> std::io::Result<()> {
+    const SHOWN: usize = 32;
+    let list = |xs: &[usize]| {
+        let mut s: Vec<String> = xs.iter().take(SHOWN).map(usize::to_string).collect();
+        if xs.len() > SHOWN {
+            s.push(format!("... ({} more)", xs.len() - SHOWN));
+        }
+        s.join(" ")
+    };
+    let point = |xs: &[f64]| {
+        let s: Vec<String> = xs.iter().map(f64::to_string).collect();
+        format!("({})", s.join(", "))
+    };
+    let vertices = hull.vertex_indices();
+    writeln!(out, "input            {source}")?;
+    writeln!(out, "dimension        {D}")?;
+    writeln!(out, "points           {}", hull.point_count())?;
+    writeln!(out, "strategy         {}", outcome.strategy.name())?;
+    let partial = if outcome.strategy == StrategyArg::Full {
+        ""
+    } else {
+        " (of the partial hull)"
+    };
+    writeln!(
+        out,
+        "vertices         {}{partial}: {}",
+        vertices.len(),
+        list(&vertices)
+    )?;
+    writeln!(out, "facets           {}{partial}", hull.facet_count())?;
+    if let Some(volume) = outcome.volume {
+        writeln!(out, "volume           {volume}")?;
+    }
+    if let Some((query, d)) = &outcome.distance {
+        let side = if d.signed_distance > 0.0 {
+            "inside"
+        } else if d.signed_distance < 0.0 {
+            "outside"
+        } else {
+            "on the boundary"
+        };
+        writeln!(out, "query point      {}", point(query))?;
+        writeln!(out, "signed distance  {} ({side})", d.signed_distance)?;
+        writeln!(
+            out,
+            "closest facet    vertices {}",
+            list(&d.closest_facet_vertices)
+        )?;
+        writeln!(out, "nearest point    {}", point(&d.nearest_point))?;
+    }
+    let stats = &outcome.stats;
+    writeln!(
+        out,
+        "work             {} points processed, {} facets created, {} expansions, {:.3} ms",
+        stats.points_processed,
+        stats.facets_created,
+        stats.expansions,
+        stats.elapsed.as_secs_f64() * 1e3
+    )
 }

@@ -1,8 +1,7 @@
 //! Reading points files (or standard input).
 
 use crate::error::CliError;
-use pqhull::points_file::{PointTable, parse_points};
-use std::io::Read;
+use pqhull::points_file::{PointTable, ReadError, read_points};
 use std::path::Path;
 
 /// Where points come from: a file, or standard input for `-` or no path.
@@ -26,17 +25,16 @@ impl<'a> Source<'a> {
         }
     }
 
-    /// Reads and parses the points; errors name the source (and the line).
+    /// Reads and parses the points a line at a time (the text is never held whole); errors name
+    /// the source (and the line).
     pub fn read_points(&self) -> Result<PointTable, CliError> {
-        let text = match self.path {
-            Some(path) => std::fs::read_to_string(path),
-            None => {
-                let mut text = String::new();
-                std::io::stdin().read_to_string(&mut text).map(|_| text)
-            }
+        match self.path {
+            Some(path) => std::fs::File::open(path)
+                .map_err(ReadError::Io)
+                .and_then(|file| read_points(std::io::BufReader::new(file))),
+            None => read_points(std::io::stdin().lock()),
         }
-        .map_err(|e| CliError::Input(format!("{}: cannot read: {e}", self.name())))?;
-        parse_points(&text).map_err(|e| CliError::Input(format!("{}: {e}", self.name())))
+        .map_err(|e| CliError::Input(format!("{}: {e}", self.name())))
     }
 }
 
