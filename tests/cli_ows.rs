@@ -352,3 +352,44 @@ fn options_that_would_be_ignored_are_errors() {
         assert!(stderr.contains(message), "{args:?}: {stderr}");
     }
 }
+
+/// Issue 12, item 6: disturbances that are all the zero wrench leave Q_OWS unbounded. That was
+/// `"force_closure": true, "quality": null`, while null means "not force closure"; it is now a
+/// clear error (exit 2). A zero row among others constrains nothing and changes no value.
+#[test]
+fn all_zero_disturbances_are_an_error() {
+    let zero = file("zero.csv", "0 0 0 0 0 0\n0,0,0,0,0,0\n");
+    let out = pqh(
+        &[
+            "grasp",
+            "--metric",
+            "ows",
+            "--disturbances",
+            zero.to_str().unwrap(),
+        ],
+        FOUR_FACES,
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(out.stdout.is_empty());
+    assert!(
+        stderr.starts_with("pqh: error:") && stderr.contains("zero wrench"),
+        "{stderr}"
+    );
+    let with_zero = file("task_and_zero.csv", &format!("{TASK}0 0 0 0 0 0\n"));
+    let task = file("task_only.csv", TASK);
+    let value = |path: &std::path::Path| {
+        let out = pqh(
+            &[
+                "grasp",
+                "--metric",
+                "ows",
+                "--disturbances",
+                path.to_str().unwrap(),
+            ],
+            FOUR_FACES,
+        );
+        lines(&out)[0]["quality"].as_f64().unwrap()
+    };
+    assert_eq!(value(&with_zero), value(&task));
+}

@@ -346,3 +346,56 @@ fn grasp_quality_scales_with_its_wrenches() {
         }
     }
 }
+
+/// `pqh hull` at the edges of the range: text output with exponents, not 200-digit numbers;
+/// a distance beyond f64::MAX a clear error in JSON (exit 2), never `null`.
+#[test]
+fn cli_far_queries() {
+    let dir = std::env::temp_dir().join(format!("pqh-far-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let square = dir.join("square.txt");
+    std::fs::write(&square, "0 0\n1 0\n1 1\n0 1\n").unwrap();
+    let pqh = |args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_pqh"))
+            .args(args)
+            .arg(&square)
+            .output()
+            .unwrap()
+    };
+    let text = pqh(&[
+        "hull",
+        "--strategy",
+        "closest-to-origin",
+        "--origin=1e200,0.5",
+    ]);
+    let stdout = String::from_utf8(text.stdout).unwrap();
+    assert!(text.status.success(), "{stdout}");
+    assert!(
+        stdout.contains("signed distance  -1e200 (outside)"),
+        "{stdout}"
+    );
+    let json = pqh(&[
+        "hull",
+        "--json",
+        "--strategy",
+        "closest-to-origin",
+        "--origin=1e200,0.5",
+    ]);
+    let value: serde_json::Value = serde_json::from_slice(&json.stdout).unwrap();
+    assert_eq!(value["origin_distance"].as_f64(), Some(-1e200));
+    let beyond = pqh(&[
+        "hull",
+        "--json",
+        "--strategy",
+        "closest-to-origin",
+        "--origin=-1.7e308,-1.7e308",
+    ]);
+    let stderr = String::from_utf8(beyond.stderr).unwrap();
+    assert_eq!(beyond.status.code(), Some(2), "{stderr}");
+    assert!(beyond.stdout.is_empty());
+    assert!(
+        stderr.starts_with("pqh: error:") && stderr.contains("exceeds the largest f64"),
+        "{stderr}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

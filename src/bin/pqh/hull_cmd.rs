@@ -165,6 +165,24 @@ impl Job<'_> {
             }
         };
         drop(points);
+        // JSON has no infinity, and a null would read as "no value": a number beyond the f64
+        // range is an error there (the human output prints it as `inf`).
+        if self.json {
+            let too_large = |what: &str| {
+                CliError::Input(format!(
+                    "{}: the {what} exceeds the largest f64 (1.8e308) and cannot be written as                      JSON; divide the input by a power of two",
+                    self.source
+                ))
+            };
+            if outcome.volume.is_some_and(|v| !v.is_finite()) {
+                return Err(too_large("volume"));
+            }
+            if let Some((_, d)) = &outcome.distance
+                && !d.signed_distance.is_finite()
+            {
+                return Err(too_large("distance to the query point"));
+            }
+        }
 
         let stdout = std::io::stdout();
         let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout.lock());
@@ -329,7 +347,7 @@ fn write_human<const D: usize>(
         s.join(" ")
     };
     let point = |xs: &[f64]| {
-        let s: Vec<String> = xs.iter().map(f64::to_string).collect();
+        let s: Vec<String> = xs.iter().map(|&x| number(x)).collect();
         format!("({})", s.join(", "))
     };
     let vertices = hull.vertex_indices();
@@ -350,7 +368,7 @@ fn write_human<const D: usize>(
     )?;
     writeln!(out, "facets           {}{partial}", hull.facet_count())?;
     if let Some(volume) = outcome.volume {
-        writeln!(out, "volume           {volume}")?;
+        writeln!(out, "volume           {}", number(volume))?;
     }
     if let Some((query, d)) = &outcome.distance {
         let side = if d.signed_distance > 0.0 {
@@ -361,7 +379,11 @@ fn write_human<const D: usize>(
             "on the boundary"
         };
         writeln!(out, "query point      {}", point(query))?;
-        writeln!(out, "signed distance  {} ({side})", d.signed_distance)?;
+        writeln!(
+            out,
+            "signed distance  {} ({side})",
+            number(d.signed_distance)
+        )?;
         writeln!(
             out,
             "closest facet    vertices {}",
@@ -378,4 +400,14 @@ fn write_human<const D: usize>(
         stats.expansions,
         stats.elapsed.as_secs_f64() * 1e3
     )
+}
+
+/// `x` for people: plain decimals between 1e−4 and 1e16, otherwise with an exponent (Rust's
+/// `Display` writes 1e200 as 201 digits); shortest round-trip digits either way.
+fn number(x: f64) -> String {
+    if x == 0.0 || !x.is_finite() || (1e-4..1e16).contains(&x.abs()) {
+        x.to_string()
+    } else {
+        format!("{x:e}")
+    }
 }

@@ -74,9 +74,13 @@ impl Clone for ObjectWrenchSpace {
 
 /// Why an [`ObjectWrenchSpace`] could not be built or read.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum OwsError {
     /// No disturbance at all (an empty set, or a mesh none of whose triangles is usable).
     Empty,
+    /// Every disturbance is the zero wrench: Q_OWS, the largest r with −r·d in the grasp wrench
+    /// space for every disturbance d, would be unbounded for every force-closure grasp.
+    AllZero,
     /// Disturbance `index` has a NaN or infinite coordinate.
     NonFinite {
         /// Its index in the given set.
@@ -94,6 +98,10 @@ impl fmt::Display for OwsError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             OwsError::Empty => write!(f, "the disturbance set is empty"),
+            OwsError::AllZero => write!(
+                f,
+                "every disturbance is the zero wrench, against which Q_OWS is unbounded"
+            ),
             OwsError::NonFinite { index } => {
                 write!(f, "disturbance {index} has a NaN or infinite coordinate")
             }
@@ -256,7 +264,9 @@ impl ObjectWrenchSpace {
     /// A task wrench space: the given disturbance wrenches, in the grasps' torque units.
     ///
     /// # Errors
-    /// [`OwsError::Empty`] for no disturbance; [`OwsError::NonFinite`] naming the first bad one.
+    /// [`OwsError::Empty`] for no disturbance; [`OwsError::NonFinite`] naming the first bad one;
+    /// [`OwsError::AllZero`] when every disturbance is the zero wrench (zero disturbances among
+    /// others are harmless: they constrain nothing).
     pub fn from_disturbances(disturbances: Vec<[f64; 6]>) -> Result<Self, OwsError> {
         if disturbances.is_empty() {
             return Err(OwsError::Empty);
@@ -266,6 +276,9 @@ impl ObjectWrenchSpace {
             .position(|d| d.iter().any(|c| !c.is_finite()))
         {
             return Err(OwsError::NonFinite { index });
+        }
+        if disturbances.iter().flatten().all(|&c| c == 0.0) {
+            return Err(OwsError::AllZero);
         }
         Ok(ObjectWrenchSpace {
             index: SupportIndex::new(&disturbances),
