@@ -61,4 +61,4 @@ mod space;
 pub use evaluate::{
     OwsEvaluator, OwsMethod, OwsQuality, evaluate_batch, ows_of_wrenches, relative_error,
 };
-pub use space::{ELLIPSOID_TOLERANCE, ObjectWrenchSpace, OwsError, SpaceOrigin};
+pub use space::{ELLIPSOID_TOLERANCE, MAX_DISTURBANCES, ObjectWrenchSpace, OwsError, SpaceOrigin};

@@ -72,6 +72,11 @@ impl Clone for ObjectWrenchSpace {
     }
 }
 
+/// The most distinct disturbances an [`ObjectWrenchSpace`] holds: 2^23 (384 MB of wrenches, about
+/// as much again for the set that removes repeats while a mesh's are made). Spot (2,930 triangles)
+/// has 158,112 at k = 8 and would need about 18 million at k = 1024.
+pub const MAX_DISTURBANCES: usize = 1 << 23;
+
 /// Why an [`ObjectWrenchSpace`] could not be built or read.
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
@@ -81,6 +86,11 @@ pub enum OwsError {
     /// Every disturbance is the zero wrench: Q_OWS, the largest r with −r·d in the grasp wrench
     /// space for every disturbance d, would be unbounded for every force-closure grasp.
     AllZero,
+    /// More distinct disturbances than [`MAX_DISTURBANCES`] (a large mesh with many cone edges).
+    TooManyDisturbances {
+        /// The limit, [`MAX_DISTURBANCES`].
+        max: usize,
+    },
     /// Disturbance `index` has a NaN or infinite coordinate.
     NonFinite {
         /// Its index in the given set.
@@ -98,6 +108,11 @@ impl fmt::Display for OwsError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             OwsError::Empty => write!(f, "the disturbance set is empty"),
+            OwsError::TooManyDisturbances { max } => write!(
+                f,
+                "more than {max} distinct disturbances (a mesh's 3·(k + 1) per triangle): use \
+                 fewer cone edges or a coarser mesh"
+            ),
             OwsError::AllZero => write!(
                 f,
                 "every disturbance is the zero wrench, against which Q_OWS is unbounded"
@@ -173,8 +188,19 @@ impl ObjectWrenchSpace {
     /// ```
     ///
     /// # Errors
-    /// [`OwsError::Empty`] when no triangle is usable; [`OwsError::DegenerateMesh`] when ρ = 0.
+    /// [`OwsError::Empty`] when no triangle is usable; [`OwsError::DegenerateMesh`] when ρ = 0;
+    /// [`OwsError::TooManyDisturbances`] beyond [`MAX_DISTURBANCES`], found before the set grows
+    /// past it.
     pub fn from_mesh(mesh: &Mesh, friction: FrictionModel) -> Result<Self, OwsError> {
+        Self::from_mesh_at_most(mesh, friction, MAX_DISTURBANCES)
+    }
+
+    /// [`from_mesh`](Self::from_mesh) with at most `max` distinct disturbances.
+    fn from_mesh_at_most(
+        mesh: &Mesh,
+        friction: FrictionModel,
+        max: usize,
+    ) -> Result<Self, OwsError> {
         let mass = mesh.mass_properties();
         let rho = mass.characteristic_length;
         if !(rho > 0.0 && rho.is_finite()) {
@@ -235,6 +261,9 @@ impl ObjectWrenchSpace {
                         });
                     }
                     if seen.insert(w.map(|x| (x + 0.0).to_bits())) {
+                        if disturbances.len() == max {
+                            return Err(OwsError::TooManyDisturbances { max });
+                        }
                         disturbances.push(w);
                     }
                 }
@@ -266,10 +295,16 @@ impl ObjectWrenchSpace {
     /// # Errors
     /// [`OwsError::Empty`] for no disturbance; [`OwsError::NonFinite`] naming the first bad one;
     /// [`OwsError::AllZero`] when every disturbance is the zero wrench (zero disturbances among
-    /// others are harmless: they constrain nothing).
+    /// others are harmless: they constrain nothing); [`OwsError::TooManyDisturbances`] beyond
+    /// [`MAX_DISTURBANCES`].
     pub fn from_disturbances(disturbances: Vec<[f64; 6]>) -> Result<Self, OwsError> {
         if disturbances.is_empty() {
             return Err(OwsError::Empty);
+        }
+        if disturbances.len() > MAX_DISTURBANCES {
+            return Err(OwsError::TooManyDisturbances {
+                max: MAX_DISTURBANCES,
+            });
         }
         if let Some(index) = disturbances
             .iter()
@@ -512,5 +547,65 @@ impl ObjectWrenchSpace {
             .and_then(Value::as_bool)
             .unwrap_or(false);
         Ok(space)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{ObjectWrenchSpace, OwsError};
+    use crate::grasp::FrictionModel;
+    use crate::mesh::Mesh;
+
+    fn cube() -> Mesh {
+        let vertices = (0..8)
+            .map(|i| [(i & 1) as f64, ((i >> 1) & 1) as f64, ((i >> 2) & 1) as f64])
+            .map(|p| p.map(|x| 2.0 * x - 1.0))
+            .collect();
+        let faces = [
+            [0, 2, 3, 1],
+            [4, 5, 7, 6],
+            [0, 1, 5, 4],
+            [2, 6, 7, 3],
+            [0, 4, 6, 2],
+            [1, 3, 7, 5],
+        ];
+        let triangles = faces
+            .iter()
+            .flat_map(|&[a, b, c, d]| [[a, b, c], [a, c, d]])
+            .collect();
+        Mesh::try_new(vertices, triangles).unwrap()
+    }
+
+    /// The set is refused as soon as it would pass the limit, not after it is built.
+    #[test]
+    fn disturbances_are_bounded() {
+        let friction = FrictionModel::try_new(0.5, 8).unwrap();
+        let all = ObjectWrenchSpace::from_mesh(&cube(), friction)
+            .unwrap()
+            .len();
+        assert!(all > 100);
+        assert_eq!(
+            ObjectWrenchSpace::from_mesh_at_most(&cube(), friction, all).map(|s| s.len()),
+            Ok(all)
+        );
+        assert_eq!(
+            ObjectWrenchSpace::from_mesh_at_most(&cube(), friction, all - 1).map(|s| s.len()),
+            Err(OwsError::TooManyDisturbances { max: all - 1 })
+        );
+    }
+
+    #[test]
+    fn all_zero_disturbances_are_refused() {
+        let zero = vec![[0.0; 6]; 3];
+        assert_eq!(
+            ObjectWrenchSpace::from_disturbances(zero).map(|s| s.len()),
+            Err(OwsError::AllZero)
+        );
+        let mut some = vec![[0.0; 6]; 3];
+        some[1][4] = 1e-300;
+        assert_eq!(
+            ObjectWrenchSpace::from_disturbances(some).map(|s| s.len()),
+            Ok(3)
+        );
     }
 }
