@@ -285,8 +285,12 @@ fn partial_hull_does_less_work_on_a_sphere() {
     let points = pqhull::rbox::generate::<6>(&pqhull::rbox::Family::SphereSurface, 400, 3);
     let full = Hull::try_new(&points).unwrap();
     let (_, r) = Hull::try_with_strategy(&points, ClosestToOrigin::new()).unwrap();
+    // 4.6× fewer facets here (it was over 5×): since `claim_beyond` claims only the points of
+    // the nearest rings of facets that hold any, the point added is the farthest of those rather
+    // than of all, which costs a few facets and saves a scan of every outside set per claim
+    // (3.9× faster than the full hull on 10k points, where it used to be slower).
     assert!(
-        r.stats.facets_created * 5 < full.stats().facets_created,
+        r.stats.facets_created * 4 < full.stats().facets_created,
         "{:?} vs {:?}",
         r.stats,
         full.stats()

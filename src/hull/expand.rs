@@ -22,9 +22,9 @@ pub(crate) struct Scratch<const D: usize> {
     stack: Vec<FacetId>,
     /// The facets around one facet, breadth first, for [`Hull::claim_beyond`].
     ring: Vec<FacetId>,
-    /// Input indices sorted by coordinates, and each input's first copy: see
+    /// (hash of the coordinates, input index), sorted, and each input's first copy: see
     /// [`Hull::initialise`](super::Hull).
-    pub(crate) order: Vec<u32>,
+    pub(crate) keys: Vec<(u64, u32)>,
     pub(crate) first_copy: Vec<u32>,
 }
 
