@@ -97,7 +97,7 @@ fn per_axis_power_of_two_rescaling_keeps_the_hull() {
         }
         checked
     }
-    let mut rng = Rng::new(12_3);
+    let mut rng = Rng::new(123);
     let checked = run::<2>(&mut rng, 30)
         + run::<3>(&mut rng, 30)
         + run::<4>(&mut rng, 20)
@@ -143,7 +143,7 @@ fn uniform_power_of_two_rescaling_scales_distances() {
             }
         }
     }
-    let mut rng = Rng::new(12_31);
+    let mut rng = Rng::new(1231);
     run::<2>(&mut rng, 40);
     run::<3>(&mut rng, 40);
     run::<4>(&mut rng, 20);
@@ -168,11 +168,11 @@ fn determinant(mut m: Vec<Vec<BigRational>>) -> BigRational {
             det = -det;
         }
         det *= m[col][col].clone();
-        for r in col + 1..n {
-            let factor = m[r][col].clone() / m[col][col].clone();
-            for c in col..n {
-                let delta = factor.clone() * m[col][c].clone();
-                m[r][c] -= delta;
+        let pivot_row = m[col].clone();
+        for row in &mut m[col + 1..] {
+            let factor = row[col].clone() / pivot_row[col].clone();
+            for (x, p) in row.iter_mut().zip(&pivot_row).skip(col) {
+                *x -= factor.clone() * p.clone();
             }
         }
     }
@@ -304,13 +304,13 @@ fn far_queries() {
                 );
             }
             // The nearest point is on the square, to the precision the query's size allows.
-            for c in 0..2 {
+            for (x, e) in r.nearest_point.iter().zip(expected) {
                 assert!(
-                    (r.nearest_point[c] - expected[c]).abs() <= 4.0 * f64::EPSILON * q,
+                    (x - e).abs() <= 4.0 * f64::EPSILON * q,
                     "query {query:?}: nearest point {:?}",
                     r.nearest_point
                 );
-                assert!((-1e-12..=1.0 + 1e-12).contains(&r.nearest_point[c]));
+                assert!((-1e-12..=1.0 + 1e-12).contains(x));
             }
         }
     }
@@ -320,7 +320,7 @@ fn far_queries() {
 /// limit (1e100 ≈ 2^332).
 #[test]
 fn grasp_quality_scales_with_its_wrenches() {
-    let mut rng = Rng::new(12_32);
+    let mut rng = Rng::new(1232);
     for case in 0..12 {
         let grasp = Grasp::random_on_box(
             &mut rng,

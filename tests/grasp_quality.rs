@@ -484,7 +484,7 @@ fn minkowski_points(grasp: &Grasp, with_zero_wrench: bool) -> Vec<[f64; 6]> {
 /// Minkowski sum written out in the test, with no merging.
 #[test]
 fn repeated_contacts_cost_nothing_and_scale_q_inf() {
-    let mut rng = Rng::new(12_4);
+    let mut rng = Rng::new(124);
     #[cfg(feature = "qhull")]
     let mut by_qhull = 0;
     for case in 0..6 {

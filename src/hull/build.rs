@@ -281,7 +281,7 @@ impl<const D: usize> Hull<D> {
                 if best.is_none_or(|(_, d, _)| distance > d) {
                     best = Some((id, distance, value));
                 }
-            } else if !(value < -bound) {
+            } else if value >= -bound || value.is_nan() {
                 // Undecided unless certainly behind: also when the value is NaN (coordinates so
                 // large, unscalable, that the floating-point products overflow).
                 undecided = true;
@@ -292,7 +292,7 @@ impl<const D: usize> Hull<D> {
             for &id in candidates {
                 let facet = &self.facets[id.index()];
                 let (value, bound) = facet.plane.evaluate(&point);
-                if !(value.abs() > bound)
+                if (value.abs() <= bound || value.is_nan())
                     && facet.plane.side(&point, || self.coords(&facet.vertices)) == Sign::Positive
                 {
                     best = Some((id, value * facet.inv_norm, value.max(0.0)));
