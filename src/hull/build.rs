@@ -146,7 +146,12 @@ impl<const D: usize> Hull<D> {
         } = &mut self.scratch;
         let points = &self.points;
         keys.clear();
-        keys.extend(points.iter().enumerate().map(|(i, p)| (point_hash(p), i as u32)));
+        keys.extend(
+            points
+                .iter()
+                .enumerate()
+                .map(|(i, p)| (point_hash(p), i as u32)),
+        );
         keys.sort_unstable();
         first_copy.clear();
         first_copy.extend(0..points.len() as u32);
