@@ -149,7 +149,7 @@ impl<const D: usize> Hull<D> {
     pub(crate) fn push_facet(&mut self, vertices: [u32; D], neighbors: [FacetId; D]) -> FacetId {
         let coords = self.coords(&vertices);
         let plane = FacetPlane::new(&coords);
-        let norm = dot(plane.cofactors(), plane.cofactors()).sqrt();
+        let (unit, norm) = unit_and_norm(plane.cofactors());
         let inv_norm = 1.0 / norm;
         let largest = plane.cofactors().iter().fold(0.0f64, |m, c| m.max(c.abs()));
         let error = plane
@@ -159,8 +159,10 @@ impl<const D: usize> Hull<D> {
         // When the floating-point cofactors cancel (a thin facet), the normal is refined from the
         // exact cofactors only when someone needs it precise (`refine_normal`): most such facets
         // are transient, and the queue orders of the strategies only need approximate distances.
-        let precise = error <= 1e-11 * largest;
-        let normal = plane.cofactors().map(|c| c * inv_norm);
+        // Unscaled input (see `exact_power_of_two_scale`) can overflow the floating-point
+        // cofactors or their norm: such a normal is never precise.
+        let precise = norm.is_finite() && norm > 0.0 && error <= 1e-11 * largest;
+        let normal = unit;
         let offset = dot(&normal, &coords[0]) / self.scale;
         let flats = self.flats_within(&vertices);
         let serial = self.next_serial;
@@ -215,7 +217,9 @@ impl<const D: usize> Hull<D> {
                 if best.is_none_or(|(_, d, _)| distance > d) {
                     best = Some((id, distance, value));
                 }
-            } else if value >= -bound {
+            } else if value >= -bound || value.is_nan() {
+                // Not certainly beneath: within the bound, or NaN (the floating-point value
+                // overflowed, possible only for input the engine could not scale).
                 undecided = true;
             }
         }
@@ -224,7 +228,7 @@ impl<const D: usize> Hull<D> {
             for &id in candidates {
                 let facet = &self.facets[id.index()];
                 let (value, bound) = facet.plane.evaluate(&point);
-                if value.abs() <= bound
+                if (value.abs() <= bound || value.is_nan())
                     && facet.plane.side(&point, || self.coords(&facet.vertices)) == Sign::Positive
                 {
                     best = Some((id, value * facet.inv_norm, value.max(0.0)));
@@ -294,6 +298,31 @@ impl<const D: usize> Hull<D> {
         }
         flats
     }
+}
+
+/// `c / |c|` and `|c|`. When the squares could overflow or underflow (cofactors of input the
+/// engine could not scale, see `exact_power_of_two_scale`), they are taken of `c` scaled by a power
+/// of two. The norm may still overflow to infinity, or be 0 or NaN for a zero or non-finite `c`:
+/// the facet is then not precise.
+fn unit_and_norm<const D: usize>(c: &[f64; D]) -> ([f64; D], f64) {
+    let squares = dot(c, c);
+    if (1e-280..=1e280).contains(&squares) {
+        // Every cofactor of scaled input: no square lost to underflow that matters.
+        let norm = squares.sqrt();
+        let inv_norm = 1.0 / norm;
+        return (c.map(|x| x * inv_norm), norm);
+    }
+    let largest = c.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    if !(largest.is_finite() && largest > 0.0) {
+        let norm = squares.sqrt();
+        return (c.map(|x| x / norm), norm);
+    }
+    // Divide by 2^k ≥ `largest`, in two halves so that neither factor overflows.
+    let k = largest.log2().ceil() as i32;
+    let scaled = c.map(|x| x * 2f64.powi(-k / 2) * 2f64.powi(-k - (-k / 2)));
+    let length = dot(&scaled, &scaled).sqrt();
+    let norm = length * 2f64.powi(k / 2) * 2f64.powi(k - k / 2);
+    (scaled.map(|x| x / length), norm)
 }
 
 fn first_non_finite<const D: usize>(points: &[[f64; D]]) -> Option<(usize, usize)> {
