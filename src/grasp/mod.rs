@@ -21,7 +21,8 @@
 //!
 //! Input is validated once, when a [`Contact`], [`FrictionModel`] or [`Grasp`] is built
 //! ([`GraspError`] says what was wrong and, for contacts, which one); a built value always holds
-//! finite coordinates, unit normals and unit tangents orthogonal to them.
+//! finite coordinates, unit normals and unit tangents orthogonal to them. Grasps written as JSON
+//! (the format `pqh grasp` reads) are read by [`json`].
 //!
 //! # Example
 //!
@@ -62,6 +63,7 @@ pub mod ellipsoid;
 mod error;
 mod flatness;
 mod friction;
+pub mod json;
 pub mod ows;
 pub mod quality;
 mod random;

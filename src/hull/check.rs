@@ -12,7 +12,8 @@ impl<const D: usize> Hull<D> {
     /// * each facet's unit normal and offset match its vertices (to a relative 1e−9 of the point
     ///   set's extent — the only floating-point check; the exact plane *is* the vertices'); for a
     ///   facet whose normal is not [precise](super::Facet::normal_is_precise), the exact normal
-    ///   [`Hull::refine_normals`](crate::Hull::refine_normals) would install;
+    ///   [`Hull::refine_normals`](crate::Hull::refine_normals) would install (plus a few units of
+    ///   the smallest subnormal, the rounding of underflowing products);
     /// * every input point lies weakly inside every live facet (exact predicate), except the points
     ///   in outside sets, which must lie strictly beyond their own facet (partial hulls);
     /// * every point of a declared affine flat that a facet is taken to contain (see the
@@ -34,6 +35,10 @@ impl<const D: usize> Hull<D> {
             ));
         }
         let extent = self.extent();
+        // The relative tolerance, plus what underflow adds: each product or sum below the normal
+        // range errs by up to half the smallest subnormal, which for subnormal input is more
+        // than 1e−9 of its extent (that tolerance would round to zero).
+        let tolerance = 1e-9 * extent + (4 * D) as f64 * f64::from_bits(1);
         for &id in &live {
             let f = self.facet(id);
             for i in 0..D {
@@ -72,7 +77,7 @@ impl<const D: usize> Hull<D> {
             }
             for &v in &f.vertices {
                 let gap = dot(&normal, &self.point(v as usize)) - offset;
-                if gap.abs() > 1e-9 * extent {
+                if gap.abs() > tolerance {
                     return fail(format!("vertex {v} is {gap} off facet {}'s plane", id.0));
                 }
             }

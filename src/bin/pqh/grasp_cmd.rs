@@ -2,12 +2,13 @@
 //! order.
 
 use crate::error::CliError;
-use crate::limits::{MAX_CONE_EDGES, MAX_CONTACTS, MAX_THREADS, MIN_CONE_EDGES};
+use crate::limits::MAX_THREADS;
 use clap::{Args, ValueEnum};
 use pqhull::Stats;
+use pqhull::grasp::json::{parse_grasp, split_grasps};
 use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod, OwsQuality, SpaceOrigin};
 use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, QualityError};
-use pqhull::grasp::{Contact, FrictionModel, Grasp, GraspError};
+use pqhull::grasp::{FrictionModel, Grasp};
 use pqhull::mesh::{CentreKind, Mesh};
 use serde_json::{Value, json};
 use std::io::{Read, Write};
@@ -140,220 +141,12 @@ fn read_input(file: &Option<PathBuf>) -> Result<String, CliError> {
     }
 }
 
-/// The grasps as JSON values: one document (object or array) or JSON Lines. An array element or a
-/// line that is not JSON becomes an error entry for its index, so one bad grasp (a number out of
-/// `f64`'s range, say) does not hide the others.
+/// The grasps as JSON values (see [`split_grasps`]), errors as their messages.
 fn split(text: &str) -> Vec<Result<Value, String>> {
-    let trimmed = text.trim();
-    if trimmed.is_empty() {
-        return Vec::new();
-    }
-    if trimmed.starts_with('[')
-        && let Some(elements) = array_elements(trimmed)
-    {
-        return elements
-            .into_iter()
-            .map(|e| serde_json::from_str(e).map_err(|err| not_json(e, &err)))
-            .collect();
-    }
-    match serde_json::from_str::<Value>(text) {
-        Ok(value) => return vec![Ok(value)],
-        // One object over several lines (not JSON Lines): one entry.
-        Err(err) if trimmed.starts_with('{') && value_end(trimmed) == Some(trimmed.len()) => {
-            return vec![Err(not_json(trimmed, &err))];
-        }
-        Err(_) => {}
-    }
-    text.lines()
-        .enumerate()
-        .filter(|(_, l)| !l.trim().is_empty())
-        .map(|(n, l)| {
-            serde_json::from_str(l).map_err(|e| format!("line {}: {}", n + 1, not_json(l, &e)))
-        })
+    split_grasps(text)
+        .into_iter()
+        .map(|v| v.map_err(|e| e.to_string()))
         .collect()
-}
-
-/// The bytes of JSON `text` outside string literals, with their offsets: the brackets and commas
-/// that give its structure (string contents, escapes included, are skipped).
-fn structural(text: &str) -> impl Iterator<Item = (usize, u8)> + '_ {
-    let (mut in_string, mut escaped) = (false, false);
-    text.bytes().enumerate().filter(move |&(_, b)| {
-        if in_string {
-            match b {
-                _ if escaped => escaped = false,
-                b'\\' => escaped = true,
-                b'"' => in_string = false,
-                _ => {}
-            }
-            return false;
-        }
-        in_string = b == b'"';
-        !in_string
-    })
-}
-
-/// The byte offset just after the JSON value (object or array) that `text` starts with, found by
-/// matching brackets outside strings; `None` if they never balance.
-fn value_end(text: &str) -> Option<usize> {
-    let mut depth = 0usize;
-    for (i, b) in structural(text) {
-        match b {
-            b'[' | b'{' => depth += 1,
-            b']' | b'}' => {
-                depth = depth.checked_sub(1)?;
-                if depth == 0 {
-                    return Some(i + 1);
-                }
-            }
-            _ => {}
-        }
-    }
-    None
-}
-
-/// The top-level elements of the JSON array `text` (which starts with `[`), as text, split at
-/// the commas outside strings and nested values; `None` unless the array's brackets balance and
-/// only whitespace follows it.
-fn array_elements(text: &str) -> Option<Vec<&str>> {
-    if value_end(text)? != text.len() || !text.ends_with(']') {
-        return None;
-    }
-    let inner = &text[1..text.len() - 1];
-    let mut elements = Vec::new();
-    let mut depth = 0usize;
-    let mut start = 0;
-    for (i, b) in structural(inner) {
-        match b {
-            b'[' | b'{' => depth += 1,
-            b']' | b'}' => depth = depth.saturating_sub(1),
-            b',' if depth == 0 => {
-                elements.push(inner[start..i].trim());
-                start = i + 1;
-            }
-            _ => {}
-        }
-    }
-    let last = inner[start..].trim();
-    if !last.is_empty() || !elements.is_empty() {
-        elements.push(last);
-    }
-    Some(elements)
-}
-
-/// serde_json's error on `text`, naming the field when a number is out of `f64`'s range
-/// (serde_json cannot represent it, so the grasp never reaches [`parse_grasp`]).
-fn not_json(text: &str, err: &serde_json::Error) -> String {
-    let message = err.to_string();
-    if message.starts_with("number out of range")
-        && let Some(field) = field_before(text, err.line(), err.column())
-    {
-        let expected = if field == "cone_edges" {
-            format!(" (expected a whole number from {MIN_CONE_EDGES} to {MAX_CONE_EDGES})")
-        } else {
-            String::new()
-        };
-        return format!("\"{field}\": {message}{expected}");
-    }
-    format!("not JSON: {message}")
-}
-
-/// The name of the object key whose value contains (1-based) `line`, `column` of `text`.
-fn field_before(text: &str, line: usize, column: usize) -> Option<&str> {
-    let line_start: usize = text
-        .split_inclusive('\n')
-        .take(line.checked_sub(1)?)
-        .map(str::len)
-        .sum();
-    let mut offset = (line_start + column).min(text.len());
-    while !text.is_char_boundary(offset) {
-        offset -= 1;
-    }
-    let before = &text[..offset];
-    let key = before[..before.rfind(':')?].trim_end().strip_suffix('"')?;
-    Some(&key[key.rfind('"')? + 1..])
-}
-
-fn vec3(value: &Value, what: &str) -> Result<[f64; 3], String> {
-    let items = value
-        .as_array()
-        .filter(|a| a.len() == 3)
-        .ok_or_else(|| format!("{what}: expected an array of 3 numbers"))?;
-    let mut out = [0.0; 3];
-    for (o, v) in out.iter_mut().zip(items) {
-        *o = v
-            .as_f64()
-            .ok_or_else(|| format!("{what}: {v} is not a number"))?;
-    }
-    Ok(out)
-}
-
-/// Parses one grasp (errors name the field and contact).
-pub fn parse_grasp(value: &Value) -> Result<Grasp, String> {
-    let object = value.as_object().ok_or("a grasp must be a JSON object")?;
-    let contacts = object
-        .get("contacts")
-        .and_then(Value::as_array)
-        .ok_or("missing \"contacts\" array")?;
-    if contacts.len() > MAX_CONTACTS {
-        let too_many = GraspError::TooManyContacts {
-            contacts: contacts.len(),
-            max: MAX_CONTACTS,
-        };
-        return Err(format!("\"contacts\": {too_many}"));
-    }
-    let mut parsed = Vec::with_capacity(contacts.len());
-    for (i, c) in contacts.iter().enumerate() {
-        let field = |name: &str| {
-            c.get(name)
-                .ok_or(format!("contact {i}: missing \"{name}\""))
-        };
-        let position = vec3(field("position")?, &format!("contact {i} position"))?;
-        let normal = vec3(field("normal")?, &format!("contact {i} normal"))?;
-        let tangent = match c.get("tangent") {
-            Some(t) => Some(vec3(t, &format!("contact {i} tangent"))?),
-            None => None,
-        };
-        parsed.push(
-            Contact::try_new(position, normal, tangent).map_err(|e| e.at_contact(i).to_string())?,
-        );
-    }
-    let friction = object
-        .get("friction")
-        .and_then(Value::as_f64)
-        .ok_or("missing or non-numeric \"friction\"")?;
-    let edges = cone_edges(object.get("cone_edges").ok_or("missing \"cone_edges\"")?)?;
-    let model = FrictionModel::try_new(friction, edges).map_err(|e| match e {
-        GraspError::TooFewConeEdges { .. } | GraspError::TooManyConeEdges { .. } => {
-            format!("\"cone_edges\": {e}")
-        }
-        _ => e.to_string(),
-    })?;
-    let mut builder = Grasp::builder(parsed, model);
-    if let Some(c) = object.get("torque_reference") {
-        builder = builder.torque_reference(vec3(c, "torque_reference")?);
-    }
-    if let Some(rho) = object.get("torque_scale") {
-        let rho = rho.as_f64().ok_or("\"torque_scale\" is not a number")?;
-        builder = builder.torque_scale(rho);
-    }
-    builder.build().map_err(|e| e.to_string())
-}
-
-/// The number of cone edges in `value`: a whole number (`8.0` counts). Too large a number is
-/// an error naming the limit; otherwise the range is checked by [`FrictionModel::try_new`].
-fn cone_edges(value: &Value) -> Result<usize, String> {
-    if let Some(k) = value.as_u64() {
-        return Ok(usize::try_from(k).unwrap_or(usize::MAX));
-    }
-    match value.as_f64() {
-        Some(k) if k > MAX_CONE_EDGES as f64 => Err(format!(
-            "\"cone_edges\": {value} friction-cone edges are too many (at most {MAX_CONE_EDGES})"
-        )),
-        Some(k) if k >= 0.0 && k.fract() == 0.0 => Ok(k as usize),
-        _ => Err(format!(
-            "\"cone_edges\": {value} is not a whole number from {MIN_CONE_EDGES} to {MAX_CONE_EDGES}"
-        )),
-    }
 }
 
 /// The output line of grasp `index`: its verdict, value and work, or the error that stopped it.
@@ -577,7 +370,10 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
     }
     let entries: Vec<Result<Grasp, String>> = values
         .iter()
-        .map(|v| v.clone().and_then(|v| parse_grasp(&v)))
+        .map(|v| {
+            v.clone()
+                .and_then(|v| parse_grasp(&v).map_err(|e| e.to_string()))
+        })
         .collect();
     let readable = entries.iter().filter(|e| e.is_ok()).count();
     let lines = match args.metric {
