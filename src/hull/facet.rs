@@ -130,6 +130,11 @@ pub(crate) fn dot<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
 
 /// The Euclidean norm of `v` without overflow or underflow of the squares.
 pub(crate) fn norm<const D: usize>(v: &[f64; D]) -> f64 {
+    let squares = dot(v, v);
+    if (1e-280..=1e280).contains(&squares) {
+        // The common case, and the hot one (every new facet): no square that matters was lost.
+        return squares.sqrt();
+    }
     let largest = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     if largest == 0.0 || !largest.is_finite() {
         return largest;
