@@ -597,7 +597,36 @@ pub(crate) fn nearest_in_simplex<const D: usize>(
 }
 
 /// [`nearest_in_simplex`], with the face holding the nearest point (a bit mask of `vertices`).
+/// In a power-of-two unit when the coordinates leave [2^−`SQUARE_SAFE`, 2^`SQUARE_SAFE`], as
+/// [`wolfe`].
 pub(crate) fn nearest_face_in_simplex<const D: usize>(
+    vertices: &[[f64; D]],
+    query: &[f64; D],
+) -> ([f64; D], f64, u32) {
+    let magnitude = |p: &[f64; D]| p.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let largest = vertices
+        .iter()
+        .fold(magnitude(query), |m, v| m.max(magnitude(v)));
+    let safe = 2f64.powi(SQUARE_SAFE);
+    if largest <= safe && (largest >= 1.0 / safe || largest == 0.0) || !largest.is_finite() {
+        return nearest_face_in_range(vertices, query);
+    }
+    let e = power_of_two_below(largest).log2() as i32 + 1;
+    let (down, up) = (
+        (2f64.powi(-e / 2), 2f64.powi(-e - (-e / 2))),
+        (2f64.powi(e / 2), 2f64.powi(e - e / 2)),
+    );
+    let scaled = |p: &[f64; D]| p.map(|x| x * down.0 * down.1);
+    let mut simplex = [[0.0; D]; 9];
+    for (s, v) in simplex.iter_mut().zip(vertices) {
+        *s = scaled(v);
+    }
+    let (x, d, face) = nearest_face_in_range(&simplex[..vertices.len()], &scaled(query));
+    (x.map(|c| c * up.0 * up.1), d * up.0 * up.1, face)
+}
+
+/// [`nearest_face_in_simplex`] on coordinates whose squares neither overflow nor underflow.
+fn nearest_face_in_range<const D: usize>(
     vertices: &[[f64; D]],
     query: &[f64; D],
 ) -> ([f64; D], f64, u32) {
