@@ -2,6 +2,7 @@
 //! order.
 
 use crate::error::CliError;
+use crate::format::short;
 use crate::limits::MAX_THREADS;
 use clap::{Args, ValueEnum};
 use pqhull::Stats;
@@ -268,16 +269,17 @@ pub fn describe_space(space: &ObjectWrenchSpace) -> String {
             characteristic_length,
             ..
         } => format!(
-            "object wrench space: {} disturbances; torque reference {} ({:.6}, {:.6}, {:.6}), \
-             torque scale {characteristic_length:.6}{}",
+            "object wrench space: {} disturbances; torque reference {} ({}, {}, {}), torque \
+             scale {}{}",
             space.len(),
             match centre_kind {
                 CentreKind::Volume => "centre of mass",
                 CentreKind::SurfaceCentroid => "surface centroid (open mesh)",
             },
-            c[0],
-            c[1],
-            c[2],
+            short(c[0]),
+            short(c[1]),
+            short(c[2]),
+            short(*characteristic_length),
             match space.vertices_without_normal() {
                 0 => String::new(),
                 n => format!("; {n} vertices without a normal left out"),

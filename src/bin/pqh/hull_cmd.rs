@@ -1,6 +1,7 @@
 //! `pqh hull`: the convex hull of a points file, full or partial.
 
 use crate::error::CliError;
+use crate::format::number;
 use crate::input::{Source, parse_point};
 use clap::{Args, ValueEnum};
 use pqhull::points_file::PointTable;
@@ -400,14 +401,4 @@ fn write_human<const D: usize>(
         stats.expansions,
         stats.elapsed.as_secs_f64() * 1e3
     )
-}
-
-/// `x` for people: plain decimals between 1e−4 and 1e16, otherwise with an exponent (Rust's
-/// `Display` writes 1e200 as 201 digits); shortest round-trip digits either way.
-fn number(x: f64) -> String {
-    if x == 0.0 || !x.is_finite() || (1e-4..1e16).contains(&x.abs()) {
-        x.to_string()
-    } else {
-        format!("{x:e}")
-    }
 }

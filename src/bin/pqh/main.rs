@@ -7,6 +7,7 @@ mod bench_ows;
 mod compare_cmd;
 mod demo_cmd;
 mod error;
+mod format;
 mod grasp_cmd;
 mod hull_cmd;
 mod input;
