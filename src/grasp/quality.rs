@@ -401,10 +401,12 @@ impl Evaluator {
     pub fn evaluate(&mut self, grasp: &Grasp) -> Result<Quality, QualityError> {
         let started = Instant::now();
         self.cones.fill(grasp);
+        // The caller's wrenches first: a finite one that is too large is named as such (its
+        // snapped copy's distance to it may overflow, which would read as "not finite").
+        check_wrenches(&self.cones.raw)?;
         if !self.cones.is_finite() {
             return Err(QualityError::NonFiniteWrench);
         }
-        check_wrenches(&self.cones.raw)?;
         let unit = WrenchUnit::for_largest(largest_coordinate(&self.cones.raw));
         self.cones.rescale(unit);
         let mut quality = match self.metric {

@@ -121,7 +121,7 @@ impl<const D: usize> Hull<D> {
 
     /// Moves into facet `id`'s outside set points of other outside sets that lie strictly beyond
     /// it: those in the nearest rings of facets around it that hold any (up to
-    /// [`RING_FACETS`] facets), else every one. Returns whether its outside set is now non-empty.
+    /// 1024 facets), else every one. Returns whether its outside set is now non-empty.
     ///
     /// Each point sits in one outside set only, so an empty set does not yet prove that nothing
     /// lies beyond a facet; after this call returns `false` it does. Strategies that stop on "no

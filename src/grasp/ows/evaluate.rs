@@ -147,6 +147,7 @@ impl OwsEvaluator {
         let started = Instant::now();
         // As `Grasp::snapped_wrenches_into`, in this evaluator's buffers.
         self.cones.fill(grasp);
+        check_wrenches(&self.cones.raw)?;
         if !self.cones.is_finite() {
             return Err(QualityError::NonFiniteWrench);
         }
