@@ -25,7 +25,7 @@
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};
 use pqhull::grasp::quality::{Evaluator, Method, Metric, evaluate_batch};
 use pqhull::grasp::{FrictionModel, Grasp};
-use pqhull::rbox::Rng;
+use pqhull::geometry::Rng;
 use std::hint::black_box;
 use std::time::Duration;
 

@@ -13,7 +13,7 @@
 
 use pqhull::grasp::quality::{Evaluator, Method, Metric};
 use pqhull::grasp::{FrictionModel, Grasp};
-use pqhull::rbox::Rng;
+use pqhull::geometry::Rng;
 use std::time::Instant;
 
 fn main() {

@@ -27,6 +27,7 @@
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
+pub mod geometry;
 pub mod grasp;
 pub mod hull;
 pub mod mesh;

@@ -12,7 +12,7 @@
 
 use pqhull::grasp::quality::{Evaluator, Method, Metric};
 use pqhull::grasp::{FrictionModel, Grasp};
-use pqhull::rbox::Rng;
+use pqhull::geometry::Rng;
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 

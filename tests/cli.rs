@@ -562,7 +562,7 @@ fn bench_gws_tables_and_switches() {
 fn grasp_floats_are_read_exactly() {
     use pqhull::grasp::quality::{Evaluator, Method, Metric};
     use pqhull::grasp::{Contact, FrictionModel, Grasp};
-    use pqhull::rbox::Rng;
+    use pqhull::geometry::Rng;
     let mut rng = Rng::new(0x5eed);
     let mut lines = String::new();
     let mut expected = Vec::new();

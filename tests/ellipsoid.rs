@@ -1,13 +1,14 @@
-//! Public behaviour of `pqhull::grasp::ellipsoid`: known minimum-volume centred ellipsoids,
+//! Public behaviour of `pqhull::geometry::ellipsoid`: known minimum-volume centred ellipsoids,
 //! affine equivariance, containment, the volume guarantee, and errors.
 
 use std::time::Instant;
 
-use pqhull::grasp::ellipsoid::{
+use pqhull::geometry::ellipsoid::{
     CONTAINMENT_SLACK, CentredEllipsoid, EllipsoidError, MAX_ITERATIONS,
 };
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
-use pqhull::rbox::{Family, Rng, generate};
+use pqhull::geometry::Rng;
+use pqhull::rbox::{Family, generate};
 
 /// Largest entry-wise difference between two matrices, relative to the largest entry of `b`.
 fn relative_difference<const D: usize>(a: &[[f64; D]; D], b: &[[f64; D]; D]) -> f64 {

@@ -8,7 +8,8 @@ use num_rational::BigRational;
 use num_traits::{ToPrimitive, Zero};
 use pqhull::grasp::quality::{Method, q1_of_wrenches};
 use pqhull::grasp::{FrictionModel, Grasp};
-use pqhull::rbox::{Family, Rng, generate};
+use pqhull::geometry::Rng;
+use pqhull::rbox::{Family, generate};
 use pqhull::{ClosestToOrigin, Hull};
 
 /// `x · 2^e` by repeated exact steps (the factor alone may not be representable).

@@ -3,7 +3,7 @@
 
 use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, evaluate_batch, q1_of_wrenches};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
-use pqhull::rbox::Rng;
+use pqhull::geometry::Rng;
 
 fn axis_wrenches() -> Vec<[f64; 6]> {
     let mut w = Vec::new();

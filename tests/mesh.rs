@@ -7,7 +7,7 @@ use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
 use pqhull::mesh::{CentreKind, Mesh, MeshError};
-use pqhull::rbox::Rng;
+use pqhull::geometry::Rng;
 
 fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]

@@ -3,7 +3,8 @@
 
 mod support;
 
-use pqhull::rbox::{Family, Rng, generate};
+use pqhull::geometry::Rng;
+use pqhull::rbox::{Family, generate};
 use support::{min_norm_point, points_as_vecs};
 
 fn dist(a: &[f64], b: &[f64]) -> f64 {

@@ -6,7 +6,8 @@
 mod support;
 
 use pqhull::predicates::Sign;
-use pqhull::rbox::{self, Family, Rng};
+use pqhull::geometry::Rng;
+use pqhull::rbox::{self, Family};
 use pqhull::{ClosestToOrigin, Hull};
 use proptest::prelude::*;
 use support::min_norm::{exact_distance_to_affine_hull, exact_min_norm_distance};

@@ -6,7 +6,7 @@ use pqhull::grasp::ows::{
 use pqhull::grasp::quality::QualityError;
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
 use pqhull::mesh::{Mesh, SurfaceSampler};
-use pqhull::rbox::Rng;
+use pqhull::geometry::Rng;
 use std::path::PathBuf;
 
 fn mesh_path(name: &str) -> PathBuf {

@@ -8,7 +8,7 @@ use pqhull::grasp::quality::{Method, q1_of_wrenches};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
 use pqhull::mesh::Mesh;
 use pqhull::qhull_baseline::{QhullError, qhull_full_hull};
-use pqhull::rbox::Rng;
+use pqhull::geometry::Rng;
 use std::f64::consts::PI;
 
 type V3 = [f64; 3];

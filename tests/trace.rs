@@ -1,7 +1,8 @@
 //! Traces of strategy runs (`pqhull::viz`): replaying the events rebuilds the hull, tracing changes
 //! nothing, the stop reason matches the result; and `pqh trace` (errors, no network in the page).
 
-use pqhull::rbox::{Family, Rng, generate};
+use pqhull::geometry::Rng;
+use pqhull::rbox::{Family, generate};
 use pqhull::strategy::{DistanceResult, OwsResult, PointSource};
 use pqhull::viz::{Event, Trace, VizError, html, svg};
 use pqhull::{ClosestToOrigin, FacetId, FarthestPoint, Hull, OwsInflation, Stats, Strategy};
@@ -184,7 +185,7 @@ fn every_strategy<const D: usize>(points: &[[f64; D]], seed: u64) {
     );
     assert_eq!(trace.context.disturbances, disturbances);
 
-    let index = pqhull::strategy::SupportIndex::new(&disturbances);
+    let index = pqhull::geometry::SupportIndex::new(&disturbances);
     let (_, indexed, trace) = traced_run(points, OwsInflation::with_index(&index));
     assert_eq!(indexed.value, ows.value);
     assert_eq!(
@@ -239,7 +240,10 @@ impl PointSource<2> for Corners {
         let corner = [n[0].signum(), n[1].signum()];
         (hull.facet(id).signed_distance(&corner) > 1e-12).then_some(corner)
     }
-    fn support(&mut self, d: &[f64; 2]) -> Option<[f64; 2]> {
+}
+
+impl pqhull::geometry::Support<2> for Corners {
+    fn support_point(&mut self, d: &[f64; 2]) -> Option<[f64; 2]> {
         Some([d[0].signum(), d[1].signum()])
     }
 }

@@ -37,7 +37,7 @@
 
 use crate::hull::{FacetId, Hull};
 use crate::predicates::exact_cofactor_direction;
-use crate::strategy::nearest::min_norm_point;
+use crate::geometry::min_norm_point;
 
 /// Rounding of a six-term dot product, relative to `Σ|a_c·b_c|`: γ₆ = 6u/(1 − 6u) ≤ 6.7·10⁻¹⁶,
 /// u = 2⁻⁵³ (Higham, *Accuracy and Stability of Numerical Algorithms*, §3.1), rounded up to
@@ -91,7 +91,7 @@ impl Gauge for UnitBall {
 
 /// Q_OWS: `g(u) = max_d −u·d` over the disturbances of a support index.
 pub(crate) struct Disturbances<'a> {
-    pub(crate) index: &'a crate::strategy::SupportIndex<6>,
+    pub(crate) index: &'a crate::geometry::SupportIndex<6>,
 }
 
 impl Disturbances<'_> {

@@ -1,7 +1,7 @@
 //! [`Contact`]: where a finger touches the object and which way it pushes.
 
 use super::GraspError;
-use super::vec3::{cross, dot, is_finite, normalize, scale, sub};
+use crate::geometry::vector::{cross, dot, is_finite, normalize, scale, sub};
 
 /// A given tangent is rejected as parallel to the normal when the sine of the angle between them
 /// is below this value (its component orthogonal to the normal is less than this fraction of its
@@ -63,8 +63,8 @@ impl Contact {
                 let t = normalize(t).ok_or(GraspError::ZeroTangent { contact: None })?;
                 // Gram–Schmidt, twice ("twice is enough") so the result is orthogonal to
                 // rounding even when t is close to n.
-                let r = sub(t, scale(dot(t, normal), normal));
-                let r = sub(r, scale(dot(r, normal), normal));
+                let r = sub(t, scale(normal, dot(t, normal)));
+                let r = sub(r, scale(normal, dot(r, normal)));
                 // |t| = 1, so |r| is the sine of the angle between t and n.
                 if dot(r, r).sqrt() < TANGENT_PARALLEL_TOLERANCE {
                     return Err(GraspError::TangentParallelToNormal { contact: None });
@@ -134,7 +134,7 @@ impl Contact {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::grasp::vec3::norm;
+    use crate::geometry::vector::norm;
 
     /// A deterministic spread of unit-ish directions (a tiny LCG; no test dependency needed).
     fn directions(count: usize) -> Vec<[f64; 3]> {

@@ -2,7 +2,7 @@
 
 use std::f64::consts::PI;
 
-use super::vec3::{add, scale};
+use crate::geometry::vector::{add, scale};
 use super::{Contact, GraspError};
 
 /// The most friction-cone edges a [`FrictionModel`] accepts: 1024.
@@ -92,7 +92,7 @@ impl FrictionModel {
         let k = self.cone_edges;
         (0..k).map(move |j| {
             let (sin, cos) = (2.0 * PI * j as f64 / k as f64).sin_cos();
-            add(n, scale(mu, add(scale(cos, t), scale(sin, b))))
+            add(n, scale(add(scale(t, cos), scale(b, sin)), mu))
         })
     }
 }
@@ -100,7 +100,7 @@ impl FrictionModel {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::grasp::vec3::{dot, norm, sub};
+    use crate::geometry::vector::{dot, norm, sub};
 
     fn contacts() -> Vec<Contact> {
         let dirs = [
@@ -171,7 +171,7 @@ mod tests {
                     assert_eq!(edges.len(), k);
                     assert_eq!(fm.edges(&c).len(), k);
                     // Edge 0 is n + μ t.
-                    let e0 = add(n, scale(mu, c.tangent()));
+                    let e0 = add(n, scale(c.tangent(), mu));
                     assert!(norm(sub(edges[0], e0)) < 1e-15);
                     let mut sum = [0.0; 3];
                     for f in &edges {
@@ -182,7 +182,7 @@ mod tests {
                             "{along}"
                         );
                         // On the cone of half-angle atan μ: tangential part has length μ.
-                        let radial = norm(sub(*f, scale(along, n)));
+                        let radial = norm(sub(*f, scale(n, along)));
                         assert!(
                             (radial - mu).abs() < 4.0 * f64::EPSILON * (1.0 + mu),
                             "{radial} vs {mu}"
@@ -192,7 +192,7 @@ mod tests {
                         sum = add(sum, *f);
                     }
                     // The tangential parts cancel: the edges sum to k·n.
-                    let err = norm(sub(sum, scale(k as f64, n)));
+                    let err = norm(sub(sum, scale(n, k as f64)));
                     // Recursive summation of k terms of length ≤ 1 + μ: error ≤ k · ε · k(1 + μ).
                     let bound = f64::EPSILON * (k * k) as f64 * (1.0 + mu);
                     assert!(

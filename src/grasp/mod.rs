@@ -59,7 +59,6 @@
 
 mod certify;
 mod contact;
-pub mod ellipsoid;
 mod error;
 mod flatness;
 mod friction;
@@ -68,14 +67,13 @@ pub mod ows;
 pub mod quality;
 mod random;
 mod snap;
-mod vec3;
 mod wrench;
 
 pub use contact::{Contact, TANGENT_PARALLEL_TOLERANCE};
 pub use error::GraspError;
 pub use friction::{FrictionModel, MAX_CONE_EDGES, MIN_CONE_EDGES};
 
-use vec3::is_finite;
+use crate::geometry::vector::is_finite;
 
 /// The most contacts a [`Grasp`] accepts: 256.
 ///

@@ -59,17 +59,16 @@ use super::certify::{
 use super::flatness::{FLAT, Flatness};
 use super::snap::{SnappedCones, pyramid_labels, snapped_union};
 use crate::predicates::times_power_of_two;
-use crate::strategy::nearest::{min_norm_point, min_norm_point_accurate, nearest_in_simplex};
+use crate::geometry::{
+    GJK_ITERATIONS, GJK_TOUCHING, Gjk, GjkVerdict, largest_norm, min_norm_point,
+    min_norm_point_accurate, nearest_in_simplex,
+};
 use crate::strategy::{ClosestToOrigin, Stats};
 use crate::{Hull, HullError};
-pub(crate) use separation::Gjk;
-pub(crate) use separation::largest_norm;
-use separation::{GJK_ITERATIONS, TOUCHING, Verdict, support_of};
 use std::fmt;
 use std::time::Instant;
 
 mod minkowski;
-mod separation;
 pub use minkowski::MINKOWSKI_MATERIALISE_LIMIT;
 
 /// Which metric to evaluate.
@@ -342,7 +341,7 @@ pub struct Evaluator {
 pub(crate) struct HullBuffers {
     hull: Option<Hull<6>>,
     nearest: ClosestToOrigin<6>,
-    gjk: Gjk,
+    gjk: Gjk<6>,
     pub(crate) bracket: BracketScratch,
     pub(crate) flatness: Flatness,
 }
@@ -636,10 +635,10 @@ fn flat_q1(w: &[[f64; 6]], started: Instant, flatness: &mut Flatness) -> Option<
 /// When GJK certifies that the origin lies outside the hull of `w` (so the grasp is not force
 /// closure): its distance, and the support points GJK inserted; the face spanning the nearest
 /// point is then in `gjk.face()`. `None` when undecided (force closure, or too close to call).
-pub(crate) fn certified_outside(w: &[[f64; 6]], gjk: &mut Gjk) -> Option<(f64, usize)> {
-    let support = |v: &[f64; 6]| support_of(w, v);
-    match gjk.run(support, largest_norm(w), &w[..1], GJK_ITERATIONS, TOUCHING) {
-        Verdict::Separated { distance, inserted } => Some((distance, inserted)),
+pub(crate) fn certified_outside(w: &[[f64; 6]], gjk: &mut Gjk<6>) -> Option<(f64, usize)> {
+    let mut set = w;
+    match gjk.run(&mut set, largest_norm(w), &w[..1], GJK_ITERATIONS, GJK_TOUCHING) {
+        GjkVerdict::Separated { distance, inserted } => Some((distance, inserted)),
         _ => None,
     }
 }

@@ -3,7 +3,7 @@
 
 use super::{Contact, FrictionModel, Grasp, GraspError};
 use crate::mesh::SurfaceSampler;
-use crate::rbox::Rng;
+use crate::geometry::Rng;
 
 impl Grasp {
     /// A random grasp with `contacts` fingers on the box [−h₀, h₀] × [−h₁, h₁] × [−h₂, h₂]: each
@@ -13,7 +13,7 @@ impl Grasp {
     ///
     /// ```
     /// use pqhull::grasp::{FrictionModel, Grasp};
-    /// use pqhull::rbox::Rng;
+    /// use pqhull::geometry::Rng;
     /// let mut rng = Rng::new(1);
     /// let g = Grasp::random_on_box(&mut rng, [0.5, 0.2, 0.1], 4, FrictionModel::try_new(0.5, 8)?);
     /// assert_eq!(g.contact_count(), 4);
@@ -63,7 +63,7 @@ impl Grasp {
     /// ```
     /// use pqhull::grasp::{FrictionModel, Grasp};
     /// use pqhull::mesh::{Mesh, SurfaceSampler};
-    /// use pqhull::rbox::Rng;
+    /// use pqhull::geometry::Rng;
     /// let cube = Mesh::cuboid([0.5, 0.5, 0.5])?;
     /// let sampler = SurfaceSampler::new(&cube);
     /// let friction = FrictionModel::try_new(0.5, 8)?;

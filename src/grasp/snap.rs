@@ -19,7 +19,7 @@
 //! grow like (ties)^r.
 
 use super::Grasp;
-use super::vec3::sub;
+use crate::geometry::vector::sub;
 use std::f64::consts::PI;
 
 /// Bits kept by the snapping (see the module docs for why 24).
@@ -218,7 +218,7 @@ pub(crate) fn pyramid_labels(contacts: usize, edges: usize, out: &mut Vec<u32>) 
 mod tests {
     use super::pyramid_labels;
     use crate::grasp::{Contact, FrictionModel, Grasp};
-    use crate::rbox::Rng;
+    use crate::geometry::Rng;
     use crate::{ClosestToOrigin, FarthestPoint, Hull, HullError};
 
     fn grasp(k: usize) -> Grasp {

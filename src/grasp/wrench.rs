@@ -1,7 +1,7 @@
 //! Contact wrenches: the point sets behind Q1 (union) and Q∞ (Minkowski sum).
 
 use super::Grasp;
-use super::vec3::{cross, sub};
+use crate::geometry::vector::{cross, sub};
 
 impl Grasp {
     /// The k edge forces f_ij of contact `i`'s friction pyramid, j = 0, 1, …, k − 1:
@@ -88,7 +88,7 @@ impl Grasp {
 
 #[cfg(test)]
 mod tests {
-    use crate::grasp::vec3::{dot, norm};
+    use crate::geometry::vector::{dot, norm};
     use crate::grasp::{Contact, FrictionModel, Grasp, GraspError};
 
     fn contact(p: [f64; 3], n: [f64; 3], t: Option<[f64; 3]>) -> Contact {
@@ -118,7 +118,7 @@ mod tests {
 
     /// Rotation by `angle` about the unit `axis` (Rodrigues).
     fn rotation(axis: [f64; 3], angle: f64) -> [[f64; 3]; 3] {
-        let a = crate::grasp::vec3::normalize(axis).unwrap();
+        let a = crate::geometry::vector::normalize(axis).unwrap();
         let (s, c) = angle.sin_cos();
         let [x, y, z] = a;
         let v = 1.0 - c;
@@ -199,9 +199,9 @@ mod tests {
             .unwrap();
         let w = g.wrenches();
         for (i, c) in cube_contacts().iter().enumerate() {
-            let r = crate::grasp::vec3::sub(c.position(), cref);
+            let r = crate::geometry::vector::sub(c.position(), cref);
             for (j, f) in g.cone_edges(i).enumerate() {
-                let tau = crate::grasp::vec3::cross(r, f);
+                let tau = crate::geometry::vector::cross(r, f);
                 let got = torque(&w[i * 6 + j]);
                 for a in 0..3 {
                     assert_eq!(got[a], tau[a] / rho);
@@ -257,8 +257,8 @@ mod tests {
             let rotated: Vec<Contact> = cube_contacts()
                 .iter()
                 .map(|k| {
-                    let rel = crate::grasp::vec3::sub(k.position(), c);
-                    let p = crate::grasp::vec3::add(c, rotate(&r, rel));
+                    let rel = crate::geometry::vector::sub(k.position(), c);
+                    let p = crate::geometry::vector::add(c, rotate(&r, rel));
                     contact(p, rotate(&r, k.normal()), Some(rotate(&r, k.tangent())))
                 })
                 .collect();

@@ -2,7 +2,8 @@
 
 use super::expand::Scratch;
 use super::facet::MAX_FLATS;
-use super::facet::{Facet, FacetId, dot, norm};
+use super::facet::{Facet, FacetId};
+use crate::geometry::vector::{dot, norm, sub};
 use super::{Hull, HullError, NO_FLAT};
 use crate::predicates::{FacetPlane, Sign, affinely_independent_subset, orientation};
 use crate::strategy::Stats;
@@ -188,7 +189,7 @@ impl<const D: usize> Hull<D> {
             return;
         }
         let normal = self.exact_normal(id);
-        let offset = dot(&normal, &self.points[facet.vertices[0] as usize]) / self.scale;
+        let offset = dot(normal, self.points[facet.vertices[0] as usize]) / self.scale;
         let facet = &mut self.facets[id.index()];
         facet.normal = normal;
         facet.offset = offset;
@@ -200,7 +201,7 @@ impl<const D: usize> Hull<D> {
         let facet = &self.facets[id.index()];
         let coords = self.coords(&facet.vertices);
         let exact = facet.plane.exact_normal_direction(&coords);
-        let length = norm(&exact);
+        let length = norm(exact);
         exact.map(|c| c / length)
     }
 
@@ -211,7 +212,7 @@ impl<const D: usize> Hull<D> {
         // Without overflow or underflow of the squares: the cofactors of a wide-ranging input
         // (one axis 1e40 times the others, in 6-D) are products of D − 1 small coordinates, whose
         // squares underflowed to give NaN normals.
-        let inv_norm = 1.0 / norm(plane.cofactors());
+        let inv_norm = 1.0 / norm(*plane.cofactors());
         let largest = plane.cofactors().iter().fold(0.0f64, |m, c| m.max(c.abs()));
         let error = plane
             .cofactor_errors()
@@ -228,11 +229,11 @@ impl<const D: usize> Hull<D> {
             // Cofactors that overflow (coordinates too large and too spread to be scaled
             // exactly, so left unscaled): the exact direction now, as nothing else can give one.
             let exact = plane.exact_normal_direction(&coords);
-            let length = norm(&exact);
+            let length = norm(exact);
             normal = exact.map(|c| c / length);
             precise = true;
         }
-        let offset = dot(&normal, &coords[0]) / self.scale;
+        let offset = dot(normal, coords[0]) / self.scale;
         let flats = self.flats_within(&vertices);
         let serial = self.next_serial;
         self.next_serial += 1;
@@ -485,13 +486,13 @@ fn greedy_simplex<const D: usize>(points: &[[f64; D]]) -> Option<[usize; 9]> {
     chosen[1] = best.2;
     // Orthonormal basis of the directions spanned so far (modified Gram–Schmidt).
     let mut basis = Basis::<D>::default();
-    basis.push_direction(sub(&points[best.2], &points[best.1]));
+    basis.push_direction(sub(points[best.2], points[best.1]));
     let origin = points[best.1];
     for slot in &mut chosen[2..=D] {
         let mut far = (0.0, usize::MAX);
         for (i, p) in points.iter().enumerate() {
-            let r = basis.residual(sub(p, &origin));
-            let d = dot(&r, &r);
+            let r = basis.residual(sub(*p, origin));
+            let d = dot(r, r);
             if d > far.0 {
                 far = (d, i);
             }
@@ -500,7 +501,7 @@ fn greedy_simplex<const D: usize>(points: &[[f64; D]]) -> Option<[usize; 9]> {
             return None;
         }
         *slot = far.1;
-        basis.push_direction(sub(&points[far.1], &origin));
+        basis.push_direction(sub(points[far.1], origin));
     }
     Some(chosen)
 }
@@ -524,7 +525,7 @@ impl<const D: usize> Basis<D> {
     /// `v` minus its projection on the basis.
     fn residual(&self, mut v: [f64; D]) -> [f64; D] {
         for b in &self.directions[..self.len] {
-            let c = dot(b, &v);
+            let c = dot(*b, v);
             for (x, y) in v.iter_mut().zip(b) {
                 *x -= c * y;
             }
@@ -536,7 +537,7 @@ impl<const D: usize> Basis<D> {
     fn push_direction(&mut self, v: [f64; D]) {
         // Two passes of Gram–Schmidt keep the basis orthogonal to working precision.
         let r = self.residual(self.residual(v));
-        let n = dot(&r, &r).sqrt();
+        let n = dot(r, r).sqrt();
         if n > 0.0 && self.len < self.directions.len() {
             self.directions[self.len] = r.map(|x| x / n);
             self.len += 1;
@@ -544,11 +545,7 @@ impl<const D: usize> Basis<D> {
     }
 }
 
-fn sub<const D: usize>(a: &[f64; D], b: &[f64; D]) -> [f64; D] {
-    std::array::from_fn(|i| a[i] - b[i])
-}
-
 fn distance_squared<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
-    let d = sub(a, b);
-    dot(&d, &d)
+    let d = sub(*a, *b);
+    dot(d, d)
 }

@@ -1,6 +1,7 @@
 //! The public validator: every invariant the engine promises, checked from scratch.
 
-use super::facet::{FacetId, dot};
+use super::facet::FacetId;
+use crate::geometry::vector::dot;
 use super::{Hull, InvariantViolation, NO_FLAT};
 use crate::predicates::Sign;
 
@@ -68,15 +69,15 @@ impl<const D: usize> Hull<D> {
                 (f.normal, f.offset)
             } else {
                 let exact = self.exact_normal(id);
-                let offset = dot(&exact, &self.point(f.vertices[0] as usize));
+                let offset = dot(exact, self.point(f.vertices[0] as usize));
                 (exact, offset)
             };
-            let length = dot(&normal, &normal).sqrt();
+            let length = dot(normal, normal).sqrt();
             if (length - 1.0).abs() > 1e-9 {
                 return fail(format!("facet {} normal has length {length}", id.0));
             }
             for &v in &f.vertices {
-                let gap = dot(&normal, &self.point(v as usize)) - offset;
+                let gap = dot(normal, self.point(v as usize)) - offset;
                 if gap.abs() > tolerance {
                     return fail(format!("vertex {v} is {gap} off facet {}'s plane", id.0));
                 }

@@ -1,5 +1,6 @@
 //! Facets: simplices with neighbour links, stored in the hull's arena.
 
+use crate::geometry::vector::dot;
 use crate::predicates::FacetPlane;
 
 /// A handle to a facet in a [`Hull`](crate::Hull)'s arena.
@@ -94,7 +95,7 @@ impl<const D: usize> Facet<D> {
 
     /// Signed distance of `x` beyond the facet's plane (positive outside), in the caller's units.
     pub fn signed_distance(&self, x: &[f64; D]) -> f64 {
-        dot(&self.normal, x) - self.offset
+        dot(self.normal, *x) - self.offset
     }
 
     /// How many input points are assigned to this facet's outside set.
@@ -124,24 +125,3 @@ impl<const D: usize> Facet<D> {
     }
 }
 
-pub(crate) fn dot<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
-}
-
-/// The Euclidean norm of `v` without overflow or underflow of the squares.
-pub(crate) fn norm<const D: usize>(v: &[f64; D]) -> f64 {
-    let squares = dot(v, v);
-    if (1e-280..=1e280).contains(&squares) {
-        // The common case, and the hot one (every new facet): no square that matters was lost.
-        return squares.sqrt();
-    }
-    let largest = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-    if largest == 0.0 || !largest.is_finite() {
-        return largest;
-    }
-    largest
-        * v.iter()
-            .map(|x| (x / largest) * (x / largest))
-            .sum::<f64>()
-            .sqrt()
-}

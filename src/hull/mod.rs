@@ -27,9 +27,10 @@ mod trace;
 pub use error::{HullError, InvariantViolation};
 pub use facet::{Facet, FacetId};
 
+use crate::geometry::vector::norm;
 use crate::predicates::Sign;
 use crate::strategy::{FarthestPoint, Stats, Step, Strategy};
-pub(crate) use facet::{dot, norm};
+
 
 /// No declared flat (see [`Hull::rebuild_with_flats`]).
 pub(crate) const NO_FLAT: u32 = u32::MAX;
@@ -340,7 +341,7 @@ impl<const D: usize> Hull<D> {
         let (value, bound) = facet.plane.evaluate(&scaled);
         let cofactors = facet.plane.cofactors();
         let errors = facet.plane.cofactor_errors();
-        let (length, error) = (norm(cofactors), norm(errors));
+        let (length, error) = (norm(*cofactors), norm(*errors));
         if length.partial_cmp(&error) != Some(std::cmp::Ordering::Greater) || !bound.is_finite() {
             return f64::INFINITY;
         }

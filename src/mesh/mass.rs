@@ -8,7 +8,9 @@
 //! whatever the mesh's units, so nothing overflows or underflows before the results are converted
 //! back. The sums themselves are compensated (Neumaier).
 
-use super::vec::{Sum, Sum3, V3, add, cross, dot, norm, scale, sub};
+use crate::geometry::vector::{Sum, VectorSum, add, cross, dot, norm, scale, sub};
+
+type V3 = [f64; 3];
 
 /// What [`MassProperties::centre_of_mass`] is the centre of.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -86,7 +88,7 @@ impl Frame {
         let scale = pow2(-k);
         Frame {
             origin,
-            origin_scaled: super::vec::scale(origin, scale),
+            origin_scaled: crate::geometry::vector::scale(origin, scale),
             scale,
             inv_scale: pow2(k),
         }
@@ -129,10 +131,10 @@ pub(crate) fn compute(
     closed: bool,
 ) -> Option<MassResult> {
     let mut area2 = Sum::default(); // Σ 2·A_t
-    let mut area_moment = Sum3::default(); // Σ 2·A_t · (a + b + c)
+    let mut area_moment = VectorSum::<3>::default(); // Σ 2·A_t · (a + b + c)
     let mut volume6 = Sum::default(); // Σ 6·V_t
     let mut volume6_abs = Sum::default(); // Σ 6·|V_t|
-    let mut volume_moment = Sum3::default(); // Σ 6·V_t · (a + b + c)
+    let mut volume_moment = VectorSum::<3>::default(); // Σ 6·V_t · (a + b + c)
     for t in triangles {
         if t[0] == t[1] || t[1] == t[2] || t[0] == t[2] {
             continue;

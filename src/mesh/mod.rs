@@ -30,7 +30,7 @@
 //!
 //! ```
 //! use pqhull::mesh::{CentreKind, Mesh};
-//! use pqhull::rbox::Rng;
+//! use pqhull::geometry::Rng;
 //!
 //! // A 2 × 1 × 1 box around the origin.
 //! let mesh = Mesh::cuboid([1.0, 0.5, 0.5])?;
@@ -56,7 +56,6 @@ mod mass;
 mod sample;
 mod shapes;
 mod topology;
-mod vec;
 
 pub use error::MeshError;
 pub use mass::{CentreKind, MassProperties};
@@ -64,7 +63,10 @@ pub use sample::{SurfacePoint, SurfaceSampler};
 pub use topology::Topology;
 
 use mass::Frame;
-use vec::{V3, cross, norm, normalized, scale, sub};
+use crate::geometry::vector::{cross, norm, normalize, scale, sub};
+
+/// A 3-vector.
+type V3 = [f64; 3];
 
 /// A validated triangle mesh. See the [module documentation](self) for the conventions.
 ///
@@ -217,7 +219,7 @@ impl Mesh {
     /// area).
     pub fn face_normal_inward(&self, t: usize) -> Option<[f64; 3]> {
         let tri = *self.triangles.get(t)?;
-        normalized(scale(self.local_cross(tri), -self.orientation))
+        normalize(scale(self.local_cross(tri), -self.orientation))
     }
 
     /// Per-vertex unit inward normals: the area-weighted sum of the adjacent faces' normals,
@@ -249,7 +251,7 @@ impl Mesh {
             .zip(&magnitudes)
             .map(|(&s, &m)| {
                 if m > 0.0 && norm(s) > NORMAL_CANCELLED * m {
-                    normalized(scale(s, -self.orientation))
+                    normalize(scale(s, -self.orientation))
                 } else {
                     None
                 }

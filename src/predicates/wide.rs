@@ -358,7 +358,7 @@ fn scaled_direction<const D: usize>(parts: [(f64, i32); D], exponents: &[i32; D]
 mod tests {
     use super::*;
     use crate::predicates::exact::{exact_cofactor_direction_big, orientation_big};
-    use crate::rbox::Rng;
+    use crate::geometry::Rng;
 
     /// Random points on a coarse grid (many exact zeros) or with full mantissas, with columns of
     /// very different magnitudes.

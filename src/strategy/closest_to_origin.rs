@@ -1,10 +1,12 @@
 //! `ClosestToOrigin`: the PQHGWS algorithm (Liu & Carpin, Algorithm 1), made exact.
 
-use super::nearest::{
-    min_norm_point, min_norm_point_accurate, nearest_face_in_simplex, norm, rescaled,
+use crate::geometry::{
+    min_norm_point, min_norm_point_accurate, nearest_face_in_simplex, rescaled,
 };
 use super::{Queued, ReusableStrategy, Stats, Step, Strategy};
-use crate::hull::{FacetId, Hull, dot};
+use crate::geometry::Support;
+use crate::geometry::vector::{dot, norm};
+use crate::hull::{FacetId, Hull};
 use crate::predicates::Sign;
 use crate::viz::TraceContext;
 use std::collections::BinaryHeap;
@@ -111,6 +113,7 @@ impl<const D: usize> DistanceResult<D> {
 /// along every coordinate axis (see [`Hull::insert_beyond`]).
 ///
 /// ```
+/// use pqhull::geometry::Support;
 /// use pqhull::strategy::PointSource;
 /// use pqhull::{ClosestToOrigin, FacetId, Hull};
 ///
@@ -122,7 +125,9 @@ impl<const D: usize> DistanceResult<D> {
 ///         let corner = [n[0].signum(), n[1].signum()];
 ///         (hull.facet(id).signed_distance(&corner) > 1e-12).then_some(corner)
 ///     }
-///     fn support(&mut self, d: &[f64; 2]) -> Option<[f64; 2]> {
+/// }
+/// impl Support<2> for Corners {
+///     fn support_point(&mut self, d: &[f64; 2]) -> Option<[f64; 2]> {
 ///         Some([d[0].signum(), d[1].signum()])
 ///     }
 /// }
@@ -133,13 +138,10 @@ impl<const D: usize> DistanceResult<D> {
 /// assert!((result.signed_distance - 0.5).abs() < 1e-12);
 /// # Ok::<(), pqhull::HullError>(())
 /// ```
-pub trait PointSource<const D: usize> {
+pub trait PointSource<const D: usize>: Support<D> {
     /// A point of the implicit set strictly beyond facet `id` of `hull` (by the exact
     /// [`Hull::side_of`]), or `None` only when there is none.
     fn beyond(&mut self, hull: &Hull<D>, id: FacetId) -> Option<[f64; D]>;
-    /// A point of the implicit set maximising `direction · p` (floating point is enough: the
-    /// strategy checks it), or `None` for an empty set.
-    fn support(&mut self, direction: &[f64; D]) -> Option<[f64; D]>;
 }
 
 /// No implicit points: the hull's input is the whole set.
@@ -150,7 +152,10 @@ impl<const D: usize> PointSource<D> for NoSource {
     fn beyond(&mut self, _: &Hull<D>, _: FacetId) -> Option<[f64; D]> {
         None
     }
-    fn support(&mut self, _: &[f64; D]) -> Option<[f64; D]> {
+}
+
+impl<const D: usize> Support<D> for NoSource {
+    fn support_point(&mut self, _: &[f64; D]) -> Option<[f64; D]> {
         None
     }
 }
@@ -422,8 +427,8 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
         // Along q − x divided by a power of two (see `nearest_point`): exact in direction.
         let direction = rescaled(&closest.offset.map(|c| -c));
         let query = self.query;
-        let height = |p: [f64; D]| dot(&direction, &std::array::from_fn(|c| p[c] - query[c]));
-        let level = dot(&direction, &closest.offset);
+        let height = |p: [f64; D]| dot(direction, std::array::from_fn(|c| p[c] - query[c]));
+        let level = dot(direction, closest.offset);
         let mut best: Option<(f64, FacetId, usize)> = None;
         for (g, facet) in hull.facets() {
             for p in facet.outside_set() {
@@ -434,7 +439,7 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
             }
         }
         if best.is_none()
-            && let Some(s) = self.source.support(&direction)
+            && let Some(s) = self.source.support_point(&direction)
             && height(s) > level
         {
             // An implicit point beyond the certificate plane: it is outside the partial hull, so
@@ -532,17 +537,17 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
         // do not overflow for a far query (|q − x|² would from 1e155).
         let direction = nearest.offset.map(|c| -c);
         let unit = rescaled(&direction);
-        let squared = dot(&unit, &direction);
+        let squared = dot(unit, direction);
         let mut reach = 0.0f64;
         let mut worst = f64::NEG_INFINITY;
         for &v in vertices {
             let p = hull.point(v);
             let from_query: [f64; D] = std::array::from_fn(|c| p[c] - self.query[c]);
-            reach = reach.max(norm(&from_query));
+            reach = reach.max(norm(from_query));
             // (q − x)·(v − x) = (q − x)·(v − q) + |q − x|², here divided by 2^e
-            worst = worst.max(dot(&unit, &from_query) + squared);
+            worst = worst.max(dot(unit, from_query) + squared);
         }
-        let slack = 2.0 * (D as f64 + 4.0) * f64::EPSILON * dot(&unit, &unit).sqrt() * reach;
+        let slack = 2.0 * (D as f64 + 4.0) * f64::EPSILON * dot(unit, unit).sqrt() * reach;
         let optimal = worst <= slack;
         if optimal {
             let support = nearest.support().iter().map(|&i| vertices[i]);

@@ -44,15 +44,12 @@ use std::time::Duration;
 
 mod closest_to_origin;
 mod farthest_point;
-pub(crate) mod nearest;
 mod ows_inflation;
-mod support_index;
 
 pub use closest_to_origin::{ClosestToOrigin, DistanceResult, NoSource, PointSource};
 pub use farthest_point::FarthestPoint;
 pub use ows_inflation::{OwsInflation, OwsResult, inflation_factor};
 pub(crate) use ows_inflation::{exact_factor, factor_lower_bound};
-pub use support_index::SupportIndex;
 
 /// Work counters every strategy reports (the seed paper's evaluation measures).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -1,7 +1,9 @@
 //! `OwsInflation`: the PQHOWS algorithm (Liu & Carpin, Algorithm 2), made exact.
 
-use super::{Queued, ReusableStrategy, Stats, Step, Strategy, SupportIndex};
-use crate::hull::{FacetId, Hull, dot};
+use super::{Queued, ReusableStrategy, Stats, Step, Strategy};
+use crate::geometry::SupportIndex;
+use crate::geometry::vector::dot;
+use crate::hull::{FacetId, Hull};
 use crate::predicates::Sign;
 use crate::viz::TraceContext;
 use std::collections::BinaryHeap;
@@ -210,7 +212,7 @@ pub fn inflation_factor<const D: usize>(
     offset: f64,
     u: &[f64; D],
 ) -> Option<f64> {
-    let rate = dot(normal, u);
+    let rate = dot(*normal, *u);
     (rate > 0.0).then(|| offset.max(0.0) / rate)
 }
 
@@ -327,7 +329,7 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
             Disturbances::Rays(d) => exact_factor(hull, id, |v| {
                 d.iter()
                     .enumerate()
-                    .map(|(i, d)| (dot(v, d), i))
+                    .map(|(i, d)| (dot(*v, *d), i))
                     .max_by(|a, b| a.0.total_cmp(&b.0))
             }),
         };
@@ -441,8 +443,8 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
             .iter()
             .filter_map(|&i| {
                 let u = self.ray(i);
-                let rate = dot(&facet.normal(), &u);
-                factor_lower_bound(hull, facet.offset(), rate, dot(&u, &u).sqrt()).map(|r| (r, i))
+                let rate = dot(facet.normal(), u);
+                factor_lower_bound(hull, facet.offset(), rate, dot(u, u).sqrt()).map(|r| (r, i))
             })
             .min_by(|a, b| a.0.total_cmp(&b.0));
         if let Some((factor, disturbance)) = best {

@@ -251,7 +251,7 @@ fn use_mesh(mesh: &Mesh) {
         let length = n.iter().map(|x| x * x).sum::<f64>().sqrt();
         assert!((length - 1.0).abs() < 1e-9, "vertex normal {n:?}");
     }
-    let mut rng = pqhull::rbox::Rng::new(1);
+    let mut rng = pqhull::geometry::Rng::new(1);
     for p in mesh.sample_surface(&mut rng, 8) {
         assert!(
             p.position

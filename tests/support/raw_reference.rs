@@ -39,7 +39,7 @@ use num_traits::{Signed, ToPrimitive, Zero};
 use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, QualityError};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
 use pqhull::qhull_baseline::{QhullError, QhullHull, qhull_full_hull};
-use pqhull::rbox::Rng;
+use pqhull::geometry::Rng;
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
 use std::panic::{AssertUnwindSafe, catch_unwind};

@@ -9,7 +9,7 @@ use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod, OwsQuality,
 use pqhull::grasp::quality::{Evaluator, Method, Metric};
 use pqhull::grasp::{FrictionModel, Grasp};
 use pqhull::mesh::SurfaceSampler;
-use pqhull::rbox::Rng;
+use pqhull::geometry::Rng;
 use serde_json::{Value, json};
 use std::io::Write;
 use std::path::PathBuf;

@@ -3,7 +3,8 @@
 use crate::error::CliError;
 use crate::input::{Source, parse_point};
 use clap::{Args, ValueEnum};
-use pqhull::rbox::{Family, Rng, generate_flat};
+use pqhull::geometry::Rng;
+use pqhull::rbox::{Family, generate_flat};
 use pqhull::viz::{Event, Trace, html, svg};
 use pqhull::{ClosestToOrigin, FarthestPoint, Hull, OwsInflation};
 use std::io::Write;

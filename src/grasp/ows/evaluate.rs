@@ -5,11 +5,13 @@ use crate::grasp::Grasp;
 use crate::grasp::certify::{BracketScratch, Disturbances, RawSide, bracket, support_with_error};
 use crate::grasp::flatness::{FLAT, Flatness};
 use crate::grasp::quality::{
-    FORCE_CLOSURE_EPSILON, Gjk, HullBuffers, Method, QualityError, certified_outside,
-    check_wrenches, find_or_make, largest_norm, q1_certified, q1_of_wrenches,
+    FORCE_CLOSURE_EPSILON, HullBuffers, Method, QualityError, certified_outside,
+    check_wrenches, find_or_make, q1_certified, q1_of_wrenches,
 };
 use crate::grasp::snap::{SnappedCones, pyramid_labels, snapped_union};
-use crate::hull::{FacetId, Hull, HullError, dot};
+use crate::geometry::vector::dot;
+use crate::geometry::{Gjk, largest_norm};
+use crate::hull::{FacetId, Hull, HullError};
 use crate::predicates::Sign;
 use crate::strategy::{OwsInflation, Stats, exact_factor, factor_lower_bound};
 use std::time::Instant;
@@ -59,7 +61,7 @@ pub fn relative_error(approximate: f64, exact: f64) -> f64 {
 /// use pqhull::grasp::{FrictionModel, Grasp};
 /// use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod};
 /// use pqhull::mesh::Mesh;
-/// use pqhull::rbox::Rng;
+/// use pqhull::geometry::Rng;
 ///
 /// let friction = FrictionModel::try_new(0.5, 8)?;
 /// let bar = Mesh::cuboid([0.5, 0.2, 0.1])?;
@@ -95,7 +97,7 @@ struct OwsBuffers {
     /// The grasp hull's arena.
     hull: Option<Hull<6>>,
     /// GJK's corral, for grasps it settles without a hull.
-    gjk: Gjk,
+    gjk: Gjk<6>,
     /// The partial method's strategy, parked between grasps (its queue and scratch).
     inflation: OwsInflation<'static, 6>,
     /// The certificate's scratch.
@@ -361,13 +363,13 @@ fn brute_force(
     let disturbances = space.disturbances();
     let reach = disturbances
         .iter()
-        .map(|d| dot(d, d).sqrt())
+        .map(|d| dot(*d, *d).sqrt())
         .fold(0.0, f64::max);
     let largest_rate = |n: &[f64; 6]| {
         disturbances
             .iter()
             .enumerate()
-            .map(|(i, d)| (-dot(n, d), i))
+            .map(|(i, d)| (-dot(*n, *d), i))
             .max_by(|a, b| a.0.total_cmp(&b.0))
     };
     let mut bounds: Vec<(f64, FacetId)> = hull
@@ -388,7 +390,7 @@ fn brute_force(
             disturbances
                 .iter()
                 .enumerate()
-                .map(|(i, d)| (dot(toward, d), i))
+                .map(|(i, d)| (dot(*toward, *d), i))
                 .max_by(|a, b| a.0.total_cmp(&b.0))
         });
         if let Some((r, i)) = exact

@@ -1,11 +1,11 @@
 //! The disturbance set: an object's wrench space from a mesh, or a given task wrench space.
 
-use crate::grasp::ellipsoid::{CentredEllipsoid, EllipsoidError};
-use crate::grasp::vec3::{cross, normalize, sub};
+use crate::geometry::ellipsoid::{CentredEllipsoid, EllipsoidError};
+use crate::geometry::vector::{cross, normalize, sub};
 use crate::grasp::{Contact, FrictionModel, Grasp, GraspError};
 use crate::hull::{Hull, HullError};
 use crate::mesh::{CentreKind, Mesh};
-use crate::strategy::SupportIndex;
+use crate::geometry::SupportIndex;
 use serde_json::{Value, json};
 use std::collections::HashSet;
 use std::fmt;
@@ -14,7 +14,7 @@ use std::sync::OnceLock;
 /// The stopping tolerance of the approximate method's ellipsoid: its volume is within a factor
 /// (1 + ε)^3 of the minimum ([`CentredEllipsoid::try_enclosing`]), and it contains every
 /// disturbance exactly whatever ε.
-pub const ELLIPSOID_TOLERANCE: f64 = crate::grasp::ellipsoid::DEFAULT_TOLERANCE;
+pub const ELLIPSOID_TOLERANCE: f64 = crate::geometry::ellipsoid::DEFAULT_TOLERANCE;
 
 /// The most disturbances [`ObjectWrenchSpace::from_mesh`] reserves room for up front (2^20
 /// wrenches, 48 MiB); a larger set grows as it is built.

@@ -1,11 +1,11 @@
 //! Q∞ over the Minkowski sum ⊕_i W_i, implicitly (support function) or materialised.
 
-use super::separation::{GJK_ITERATIONS, Gjk, TOUCHING, Verdict};
+use crate::geometry::{GJK_ITERATIONS, GJK_TOUCHING, Gjk, GjkVerdict, Support, SupportFn};
 use super::{BOUNDARY, HullBuffers, Quality, QualityError, degenerate, full_q1, no_hull_stats};
 use crate::grasp::certify::{self, RawSide, UnitBall, support_with_error};
 use crate::grasp::flatness::{FLAT, Flatness};
 use crate::grasp::snap::SnappedCones;
-use crate::hull::dot;
+use crate::geometry::vector::dot;
 use crate::predicates::Sign;
 use crate::strategy::{ClosestToOrigin, PointSource};
 use crate::{FacetId, Hull, HullError};
@@ -87,7 +87,7 @@ fn sum_support_with_error(sets: &[Vec<[f64; 6]>], u: &[f64; 6]) -> (f64, f64) {
 fn sum_support(sets: &[Vec<[f64; 6]>], direction: &[f64; 6]) -> [f64; 6] {
     let mut total = [0.0; 6];
     for set in sets {
-        let w = super::separation::support_of(set, direction);
+        let w = Support::support_point(&mut &set[..], direction).expect("a non-empty set");
         for (t, x) in total.iter_mut().zip(&w) {
             *t += x;
         }
@@ -180,7 +180,7 @@ impl MinkowskiSource {
         self.sizes.extend(
             self.sets
                 .iter()
-                .map(|set| set.iter().map(|w| dot(w, w).sqrt()).fold(0.0, f64::max)),
+                .map(|set| set.iter().map(|w| dot(*w, *w).sqrt()).fold(0.0, f64::max)),
         );
         self.candidates.resize_with(self.sets.len(), Vec::new);
     }
@@ -206,7 +206,7 @@ impl MinkowskiSource {
     fn raw_union_support(&self, direction: &[f64; 6]) -> [f64; 6] {
         let mut best = (f64::NEG_INFINITY, [0.0; 6]);
         for w in &self.union {
-            let height = dot(direction, w);
+            let height = dot(*direction, *w);
             if height > best.0 {
                 best = (height, *w);
             }
@@ -224,7 +224,7 @@ impl MinkowskiSource {
         self.choice.clear();
         self.choice.extend(self.sets.iter().map(|set| {
             (0..set.len())
-                .max_by(|&a, &b| dot(direction, &set[a]).total_cmp(&dot(direction, &set[b])))
+                .max_by(|&a, &b| dot(*direction, set[a]).total_cmp(&dot(*direction, set[b])))
                 .expect("a contact has cone edges")
         }));
     }
@@ -245,7 +245,7 @@ impl PointSource<6> for MinkowskiSource {
             self.sets.iter().zip(&mut self.candidates).zip(&self.sizes)
         {
             candidates.clear();
-            candidates.extend(set.iter().enumerate().map(|(j, w)| (dot(&normal, w), j)));
+            candidates.extend(set.iter().enumerate().map(|(j, w)| (dot(normal, *w), j)));
             let best = candidates
                 .iter()
                 .map(|c| c.0)
@@ -310,8 +310,10 @@ impl PointSource<6> for MinkowskiSource {
         self.position = position;
         found
     }
+}
 
-    fn support(&mut self, direction: &[f64; 6]) -> Option<[f64; 6]> {
+impl Support<6> for MinkowskiSource {
+    fn support_point(&mut self, direction: &[f64; 6]) -> Option<[f64; 6]> {
         self.support_choice(direction);
         let point = sum(&self.sets, self.choice.iter().copied());
         let choice = std::mem::take(&mut self.choice);
@@ -351,7 +353,7 @@ const SEED_DIRECTIONS: [[f64; 6]; 42] = {
 pub(super) struct MinkowskiBuffers {
     nearest: ClosestToOrigin<6, MinkowskiSource>,
     seeds: Vec<[f64; 6]>,
-    gjk: Gjk,
+    gjk: Gjk<6>,
     hull: Option<Hull<6>>,
     bracket: certify::BracketScratch,
     flatness: Flatness,
@@ -373,7 +375,7 @@ impl Default for MinkowskiBuffers {
 /// The sum over contacts of the largest wrench norm of `sets`.
 fn raw_scale(sets: &[Vec<[f64; 6]>]) -> f64 {
     sets.iter()
-        .map(|set| set.iter().map(|w| dot(w, w).sqrt()).fold(0.0, f64::max))
+        .map(|set| set.iter().map(|w| dot(*w, *w).sqrt()).fold(0.0, f64::max))
         .sum()
 }
 
@@ -451,16 +453,16 @@ pub(super) fn partial(
         let largest = source
             .union
             .iter()
-            .fold(0.0, |m: f64, w| m.max(dot(w, w).sqrt()));
+            .fold(0.0, |m: f64, w| m.max(dot(*w, *w).sqrt()));
         let start = [source.raw_union_support(&[1.0, 0.0, 0.0, 0.0, 0.0, 0.0])];
         let verdict = gjk.run(
-            |v| source.raw_union_support(v),
+            &mut SupportFn(|v: &[f64; 6]| source.raw_union_support(v)),
             largest,
             &start,
             GJK_ITERATIONS,
-            TOUCHING,
+            GJK_TOUCHING,
         );
-        if let Verdict::Separated { inserted, .. } = verdict {
+        if let GjkVerdict::Separated { inserted, .. } = verdict {
             let origin = std::iter::once([0.0; 6]);
             let stats = no_hull_stats(1 + inserted, started);
             return Ok(Quality::new(0.0, origin, stats).banded(scale));
@@ -468,8 +470,8 @@ pub(super) fn partial(
     }
     seed_points(seeds, |d| sum_support(&source.raw_sets, d));
     let support = |v: &[f64; 6]| sum_support(&source.raw_sets, v);
-    if let Verdict::Separated { distance, inserted } =
-        gjk.run(support, scale, seeds, GJK_ITERATIONS, TOUCHING)
+    if let GjkVerdict::Separated { distance, inserted } =
+        gjk.run(&mut SupportFn(support), scale, seeds, GJK_ITERATIONS, GJK_TOUCHING)
     {
         let stats = no_hull_stats(seeds.len() + inserted, started);
         let face = gjk.face().iter().copied();
@@ -480,7 +482,7 @@ pub(super) fn partial(
         return Ok(q.banded(scale));
     }
     seed_points(seeds, |d| {
-        source.support(d).expect("a contact has cone edges")
+        source.support_point(d).expect("a contact has cone edges")
     });
     let h = hull.get_or_insert_with(Hull::empty);
     let snapped = h.rebuild_with_strategy(seeds, &mut *nearest);
@@ -520,7 +522,7 @@ pub(super) fn partial(
     let source = nearest.source_mut();
     source.fill(cones, with_zero_wrench, true);
     seed_points(seeds, |d| {
-        source.support(d).expect("a contact has cone edges")
+        source.support_point(d).expect("a contact has cone edges")
     });
     match h.rebuild_with_strategy(seeds, &mut *nearest) {
         Ok(result) => Ok(Quality::new(
@@ -599,10 +601,10 @@ pub(super) fn full(
     let mut seeds = Vec::new();
     seed_points(&mut seeds, |d| sum_support(&raw_sets, d));
     let support = |v: &[f64; 6]| sum_support(&raw_sets, v);
-    if let Verdict::Separated { distance, inserted } =
+    if let GjkVerdict::Separated { distance, inserted } =
         buffers
             .gjk
-            .run(support, scale, &seeds, GJK_ITERATIONS, TOUCHING)
+            .run(&mut SupportFn(support), scale, &seeds, GJK_ITERATIONS, GJK_TOUCHING)
     {
         let stats = no_hull_stats(seeds.len() + inserted, started);
         let face = buffers.gjk.face().iter().copied();
@@ -631,7 +633,7 @@ fn flat_sum(
     support: impl FnMut(&[f64; 6]) -> [f64; 6],
     scale: f64,
     seeds: &[[f64; 6]],
-    gjk: &mut Gjk,
+    gjk: &mut Gjk<6>,
     started: Instant,
 ) -> Result<Quality, QualityError> {
     if with_zero_wrench {
@@ -640,15 +642,15 @@ fn flat_sum(
         let origin = std::iter::once([0.0; 6]);
         return Ok(Quality::new(0.0, origin, no_hull_stats(0, started)));
     }
-    match gjk.run(support, scale, seeds, 16 * GJK_ITERATIONS, 0.0) {
-        Verdict::Separated { distance, inserted }
-        | Verdict::Touching { distance, inserted }
-        | Verdict::Stalled { distance, inserted } => Ok(Quality::new(
+    match gjk.run(&mut SupportFn(support), scale, seeds, 16 * GJK_ITERATIONS, 0.0) {
+        GjkVerdict::Separated { distance, inserted }
+        | GjkVerdict::Touching { distance, inserted }
+        | GjkVerdict::Stalled { distance, inserted } => Ok(Quality::new(
             0.0 - distance,
             gjk.face().iter().copied(),
             no_hull_stats(seeds.len() + inserted, started),
         )),
-        Verdict::Undecided => {
+        GjkVerdict::Undecided => {
             let mut all = Vec::new();
             materialise(cones, with_zero_wrench, true, &mut all)?;
             let mut quality = degenerate(&all, started);

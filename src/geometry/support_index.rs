@@ -1,6 +1,6 @@
 //! A ball tree answering support queries `max_p v·p` over a fixed point set.
 
-use crate::hull::dot;
+use super::vector::{dot, sub};
 
 /// Leaves hold at most this many points: small enough that a leaf's ball is tight, large enough
 /// that the tree is shallow (measured on object wrench spaces of 50,000 six-dimensional points:
@@ -18,7 +18,7 @@ const LEAF: usize = 24;
 /// ball may be missed (pruning bounds carry that slack against rounding the other way).
 ///
 /// ```
-/// use pqhull::strategy::SupportIndex;
+/// use pqhull::geometry::SupportIndex;
 /// let points: Vec<[f64; 2]> = (0..100)
 ///     .map(|i| {
 ///         let t = i as f64 * 0.0628;
@@ -87,8 +87,16 @@ impl<const D: usize> SupportIndex<D> {
         self.points.is_empty()
     }
 
-    /// The points in the order they were given (for traces, which show them).
-    pub(crate) fn points_in_input_order(&self) -> Vec<[f64; D]> {
+    /// Point `index` (in the order given to [`new`](Self::new)).
+    ///
+    /// # Panics
+    /// If `index >= self.len()`.
+    pub fn point(&self, index: usize) -> [f64; D] {
+        self.points[self.position[index] as usize]
+    }
+
+    /// The points in the order they were given.
+    pub fn points_in_input_order(&self) -> Vec<[f64; D]> {
         let mut points = vec![[0.0; D]; self.points.len()];
         for (p, &i) in self.points.iter().zip(&self.original) {
             points[i as usize] = *p;
@@ -110,14 +118,14 @@ impl<const D: usize> SupportIndex<D> {
         let centre: [f64; D] = std::array::from_fn(|c| 0.5 * (lo[c] + hi[c]));
         let radius = slice
             .iter()
-            .map(|p| dot(&sub(p, &centre), &sub(p, &centre)).sqrt())
+            .map(|p| dot(sub(*p, centre), sub(*p, centre)).sqrt())
             .fold(0.0, f64::max)
             * (1.0 + 1e-12);
         let id = self.nodes.len() as u32;
         self.nodes.push(Node {
             centre,
             radius,
-            centre_norm: dot(&centre, &centre).sqrt(),
+            centre_norm: dot(centre, centre).sqrt(),
             lo,
             hi,
             start: start as u32,
@@ -150,7 +158,7 @@ impl<const D: usize> SupportIndex<D> {
         let node = &self.nodes[n as usize];
         let reach = v_norm * node.radius;
         let slack = 1e-12 * (v_norm * node.centre_norm + reach);
-        let ball = dot(v, &node.centre) + reach;
+        let ball = dot(*v, node.centre) + reach;
         let corner: f64 = (0..D)
             .map(|c| {
                 if v[c] >= 0.0 {
@@ -176,7 +184,7 @@ impl<const D: usize> SupportIndex<D> {
     /// `f64::NEG_INFINITY` for an empty set.
     ///
     /// ```
-    /// use pqhull::strategy::SupportIndex;
+    /// use pqhull::geometry::SupportIndex;
     /// let points: Vec<[f64; 2]> = (0..500).map(|i| [(i as f64).cos(), (i as f64).sin()]).collect();
     /// let index = SupportIndex::new(&points);
     /// let v = [0.3, -0.8];
@@ -187,7 +195,7 @@ impl<const D: usize> SupportIndex<D> {
         if self.points.is_empty() {
             return f64::NEG_INFINITY;
         }
-        let v_norm = dot(v, v).sqrt();
+        let v_norm = dot(*v, *v).sqrt();
         let mut best = f64::NEG_INFINITY;
         // (node, level, the smallest bound on the path from the root: a parent's bound holds for
         // its children's points too, and a child's ball can reach beyond its parent's).
@@ -221,7 +229,7 @@ impl<const D: usize> SupportIndex<D> {
     /// one after another. A hint out of range is ignored.
     ///
     /// ```
-    /// use pqhull::strategy::SupportIndex;
+    /// use pqhull::geometry::SupportIndex;
     /// let points = [[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.7, 0.7]];
     /// let index = SupportIndex::new(&points);
     /// assert_eq!(index.support_near(&[1.0, 1.0], Some(0)), index.support(&[1.0, 1.0]));
@@ -231,11 +239,11 @@ impl<const D: usize> SupportIndex<D> {
         if self.points.is_empty() {
             return None;
         }
-        let v_norm = dot(v, v).sqrt();
+        let v_norm = dot(*v, *v).sqrt();
         let mut best = (f64::NEG_INFINITY, 0usize);
         if let Some(&at) = hint.and_then(|h| self.position.get(h)) {
             best = (
-                dot(v, &self.points[at as usize]),
+                dot(*v, self.points[at as usize]),
                 self.original[at as usize] as usize,
             );
         }
@@ -255,7 +263,7 @@ impl<const D: usize> SupportIndex<D> {
             match node.children {
                 None => {
                     for i in node.start as usize..node.end as usize {
-                        let value = dot(v, &self.points[i]);
+                        let value = dot(*v, self.points[i]);
                         if value > best.0 {
                             best = (value, self.original[i] as usize);
                         }
@@ -280,10 +288,6 @@ impl<const D: usize> SupportIndex<D> {
         }
         Some(best)
     }
-}
-
-fn sub<const D: usize>(a: &[f64; D], b: &[f64; D]) -> [f64; D] {
-    std::array::from_fn(|c| a[c] - b[c])
 }
 
 #[cfg(test)]

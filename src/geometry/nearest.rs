@@ -20,8 +20,7 @@
 //! are noise). A corral made numerically dependent by the entering point (a cluster) has the
 //! entering point swapped in for one of the others when that gets strictly nearer.
 
-use crate::hull::dot;
-pub(crate) use crate::hull::norm;
+use super::vector::dot;
 
 /// Optimality tolerance: stop when `|x|² − min_j x·p_j ≤ TOL·M·|x|` (`M` = largest `|p_j − q|`).
 const TOL: f64 = 1e-14;
@@ -42,18 +41,20 @@ const SINGULAR_QR: f64 = 1e-14;
 
 /// The nearest point and the (at most D + 1) input points whose convex hull holds it.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct Nearest<const D: usize> {
-    pub(crate) point: [f64; D],
+pub struct Nearest<const D: usize> {
+    /// The nearest point.
+    pub point: [f64; D],
     /// `point − query`, computed before adding the query back (so accurate even when it is tiny).
-    pub(crate) offset: [f64; D],
-    pub(crate) distance: f64,
+    pub offset: [f64; D],
+    /// Its distance from the query.
+    pub distance: f64,
     support: [usize; 9],
     support_len: usize,
 }
 
 impl<const D: usize> Nearest<D> {
     /// Indices (into the caller's point numbering) of the points spanning the nearest face.
-    pub(crate) fn support(&self) -> &[usize] {
+    pub fn support(&self) -> &[usize] {
         &self.support[..self.support_len]
     }
 }
@@ -62,7 +63,7 @@ impl<const D: usize> Nearest<D> {
 ///
 /// # Panics
 /// If `count == 0`.
-pub(crate) fn min_norm_point<const D: usize>(
+pub fn min_norm_point<const D: usize>(
     count: usize,
     point: impl Fn(usize) -> [f64; D],
     query: &[f64; D],
@@ -80,7 +81,7 @@ pub(crate) fn min_norm_point<const D: usize>(
 ///
 /// # Panics
 /// If `count == 0` or an index of `start` is `count` or more.
-pub(crate) fn min_norm_point_accurate<const D: usize>(
+pub fn min_norm_point_accurate<const D: usize>(
     count: usize,
     point: impl Fn(usize) -> [f64; D],
     query: &[f64; D],
@@ -141,7 +142,7 @@ fn wolfe_in_range<const D: usize, const ACCURATE: bool>(
     for i in 0..count {
         let p = point(i);
         let r: [f64; D] = std::array::from_fn(|c| p[c] - query[c]);
-        let n2 = dot(&r, &r);
+        let n2 = dot(r, r);
         largest = largest.max(n2);
         if n2 < first.0 {
             first = (n2, i);
@@ -202,7 +203,7 @@ fn wolfe_in_range<const D: usize, const ACCURATE: bool>(
     let tolerance = if ACCURATE { TOL_ACCURATE } else { TOL };
 
     for _ in 0..100 * (count + D + 1) {
-        let xx = dot(&x, &x);
+        let xx = dot(x, x);
         if xx == 0.0 {
             break;
         }
@@ -212,9 +213,9 @@ fn wolfe_in_range<const D: usize, const ACCURATE: bool>(
                 (
                     j,
                     if ACCURATE {
-                        dot(&x, &hi) + dot(&x, &lo)
+                        dot(x, hi) + dot(x, lo)
                     } else {
-                        dot(&x, &hi)
+                        dot(x, hi)
                     },
                 )
             })
@@ -327,7 +328,7 @@ fn finish<const D: usize>(
     Nearest {
         point: std::array::from_fn(|c| offset[c] + query[c]),
         offset,
-        distance: dot(&x, &x).sqrt() * unit,
+        distance: dot(x, x).sqrt() * unit,
         support,
         support_len: len,
     }
@@ -338,7 +339,7 @@ fn finish<const D: usize>(
 /// `v` divided by a power of two that brings its largest coordinate into [0.5, 1) (zero stays
 /// zero): an exact change of length, after which dot products with it neither overflow nor
 /// underflow where `v`'s own square would.
-pub(crate) fn rescaled<const D: usize>(v: &[f64; D]) -> [f64; D] {
+pub fn rescaled<const D: usize>(v: &[f64; D]) -> [f64; D] {
     let largest = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     if largest == 0.0 || !largest.is_finite() {
         return *v;
@@ -418,21 +419,21 @@ fn affine_minimiser_accurate<const D: usize>(
     let mut lengths = [0.0; 8];
     for i in 0..k {
         let edge: [f64; D] = std::array::from_fn(|c| hi[i + 1][c] - hi[0][c]);
-        lengths[i] = dot(&edge, &edge).sqrt();
+        lengths[i] = dot(edge, edge).sqrt();
     }
     let longest = lengths[..k].iter().fold(0.0f64, |m, &l| m.max(l));
     for i in 0..k {
         let mut v: [f64; D] = std::array::from_fn(|c| hi[i + 1][c] - hi[0][c]);
         for _ in 0..2 {
             for j in 0..i {
-                let c = dot(&q[j], &v);
+                let c = dot(q[j], v);
                 r[j][i] += c;
                 for (vc, qc) in v.iter_mut().zip(&q[j]) {
                     *vc -= c * qc;
                 }
             }
         }
-        let norm = dot(&v, &v).sqrt();
+        let norm = dot(v, v).sqrt();
         if norm.is_nan() || norm <= SINGULAR_QR * longest {
             return None;
         }
@@ -447,7 +448,7 @@ fn affine_minimiser_accurate<const D: usize>(
         let mut delta = [0.0; 8];
         for i in (0..k).rev() {
             let tail: f64 = (i + 1..k).map(|j| r[i][j] * delta[j]).sum();
-            delta[i] = (-dot(&q[i], &x) - tail) / r[i][i];
+            delta[i] = (-dot(q[i], x) - tail) / r[i][i];
         }
         let moved: f64 = (0..k).map(|i| delta[i].abs() * lengths[i]).sum();
         if moved.is_nan() || moved >= previous {
@@ -497,7 +498,7 @@ fn swap<const D: usize>(
         if let Some((alpha, at)) = affine_minimiser_accurate(&h[..last], &l[..last])
             && alpha[..last].iter().all(|&a| a > 0.0)
         {
-            let squared = dot(&at, &at);
+            let squared = dot(at, at);
             if squared < bound && best.is_none_or(|(_, _, _, b)| squared < b) {
                 best = Some((slot, alpha, at, squared));
             }
@@ -530,9 +531,9 @@ fn affine_minimiser<const D: usize>(points: &[[f64; D]]) -> Option<[f64; 9]> {
     let mut rhs = [0.0; 8];
     for r in 0..k {
         for c in 0..k {
-            gram[r][c] = dot(&edges[r], &edges[c]);
+            gram[r][c] = dot(edges[r], edges[c]);
         }
-        rhs[r] = -dot(&edges[r], &base);
+        rhs[r] = -dot(edges[r], base);
     }
     let mut beta = solve(&gram, &rhs, k)?;
     let mut residual = [0.0; 8];
@@ -588,7 +589,7 @@ pub(crate) fn solve(a: &[[f64; 8]; 8], b: &[f64; 8], k: usize) -> Option<[f64; 8
 /// ill-conditioned input (clusters of nearly coincident points): try every face of a simplex (at
 /// most 255 for D = 8) and keep the nearest projection that falls inside its face.
 /// Nearest point of the simplex spanned by `vertices[..count]` to `query`, and its distance.
-pub(crate) fn nearest_in_simplex<const D: usize>(
+pub fn nearest_in_simplex<const D: usize>(
     vertices: &[[f64; D]],
     query: &[f64; D],
 ) -> ([f64; D], f64) {
@@ -599,7 +600,7 @@ pub(crate) fn nearest_in_simplex<const D: usize>(
 /// [`nearest_in_simplex`], with the face holding the nearest point (a bit mask of `vertices`).
 /// In a power-of-two unit when the coordinates leave [2^−`SQUARE_SAFE`, 2^`SQUARE_SAFE`], as
 /// [`wolfe`].
-pub(crate) fn nearest_face_in_simplex<const D: usize>(
+pub fn nearest_face_in_simplex<const D: usize>(
     vertices: &[[f64; D]],
     query: &[f64; D],
 ) -> ([f64; D], f64, u32) {
@@ -674,9 +675,9 @@ fn project_onto_face<const D: usize>(
     let mut a = [[0.0; 9]; 8];
     for r in 0..k {
         for c in 0..k {
-            a[r][c] = dot(&edges[r], &edges[c]);
+            a[r][c] = dot(edges[r], edges[c]);
         }
-        a[r][k] = dot(&edges[r], &rhs_vec);
+        a[r][k] = dot(edges[r], rhs_vec);
     }
     let scale = (0..k).map(|r| a[r][r]).fold(0.0f64, f64::max);
     for col in 0..k {
@@ -709,8 +710,8 @@ fn project_onto_face<const D: usize>(
         }
     }
     let d = dot(
-        &std::array::from_fn::<f64, D, _>(|c| query[c] - x[c]),
-        &std::array::from_fn::<f64, D, _>(|c| query[c] - x[c]),
+        std::array::from_fn::<f64, D, _>(|c| query[c] - x[c]),
+        std::array::from_fn::<f64, D, _>(|c| query[c] - x[c]),
     )
     .sqrt();
     Some((x, d))

@@ -22,6 +22,8 @@ use faer::linalg::solvers::Solve;
 use faer::linalg::triangular_inverse::invert_lower_triangular;
 use faer::{Mat, Par, Side};
 
+use super::vector::dot;
+
 /// A reasonable default for the `tolerance` of [`CentredEllipsoid::try_enclosing`]: the volume is
 /// then within a factor `(1 + 1e−7)^(D/2)` (about `1 + 3e−7` in 6-D) of the minimum.
 pub const DEFAULT_TOLERANCE: f64 = 1e-7;
@@ -104,7 +106,7 @@ const DENOMINATOR_FLOOR: f64 = 1e-12;
 /// # Example
 ///
 /// ```
-/// use pqhull::grasp::ellipsoid::CentredEllipsoid;
+/// use pqhull::geometry::ellipsoid::CentredEllipsoid;
 ///
 /// // Two corners of the square [−1, 1]² (with their mirror images, all four) and two points
 /// // inside: the centred minimum-volume ellipsoid is the disc of radius √2, A = I / 2.
@@ -118,7 +120,7 @@ const DENOMINATOR_FLOOR: f64 = 1e-12;
 /// let y = e.map(&[1.0, 1.0]); // R x: the ellipsoid onto the unit disc
 /// assert!((y[0].hypot(y[1]) - 1.0).abs() < 1e-12);
 /// assert!(e.log_volume_gap_bound() <= 1e-10);
-/// # Ok::<(), pqhull::grasp::ellipsoid::EllipsoidError>(())
+/// # Ok::<(), pqhull::geometry::ellipsoid::EllipsoidError>(())
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct CentredEllipsoid<const D: usize> {
@@ -378,10 +380,6 @@ fn gauge_squared<const D: usize>(l: &[[f64; D]; D], y: &[f64; D]) -> f64 {
     lower_times(l, y).iter().map(|v| v * v).sum()
 }
 
-fn dot<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
-    a.iter().zip(b).map(|(a, b)| a * b).sum()
-}
-
 /// The index and value of the largest item (the first of equals; `(0, −∞)` if none).
 fn argmax(values: impl Iterator<Item = f64>) -> (usize, f64) {
     let first_largest = |best: (usize, f64), (i, v)| if v > best.1 { (i, v) } else { best };
@@ -519,14 +517,14 @@ impl<'a, const D: usize> Solver<'a, D> {
             .iter()
             .map(|x| lower_times(&self.l_inv, x))
             .collect();
-        let g0: Vec<f64> = residuals.iter().map(|y| dot(y, y)).collect();
+        let g0: Vec<f64> = residuals.iter().map(|y| dot(*y, *y)).collect();
         if g0.iter().all(|&g| g <= D as f64 * (1.0 + tolerance)) {
             (0..n).for_each(|i| self.enlist(i, weight));
             return Ok(());
         }
         let mut chosen = [0; D];
         for slot in &mut chosen {
-            let (pivot, norm2) = argmax(residuals.iter().map(|r| dot(r, r)));
+            let (pivot, norm2) = argmax(residuals.iter().map(|r| dot(*r, *r)));
             if norm2 <= 0.0 || self.member[pivot] {
                 return Err(EllipsoidError::NumericalFailure { iteration: 0 });
             }
@@ -534,7 +532,7 @@ impl<'a, const D: usize> Solver<'a, D> {
             *slot = pivot;
             let q = residuals[pivot].map(|c| c / norm2.sqrt());
             for r in &mut residuals {
-                let t = dot(&q, r);
+                let t = dot(q, *r);
                 r.iter_mut().zip(&q).for_each(|(c, qc)| *c -= t * qc);
             }
         }
@@ -620,8 +618,8 @@ impl<'a, const D: usize> Solver<'a, D> {
                 }
             };
             let x = &self.active[index];
-            let v: [f64; D] = std::array::from_fn(|a| dot(&self.m_inv[a], x));
-            let denominator = 1.0 - tau + tau * dot(x, &v);
+            let v: [f64; D] = std::array::from_fn(|a| dot(self.m_inv[a], *x));
+            let denominator = 1.0 - tau + tau * dot(*x, v);
             let usable = tau.is_finite() && denominator > DENOMINATOR_FLOOR;
             if excess <= tolerance || !usable {
                 // About to stop, or to step, on drifted values: decide again on fresh ones.
@@ -648,7 +646,7 @@ impl<'a, const D: usize> Solver<'a, D> {
                 .zip(self.g.iter_mut())
                 .zip(self.u.iter_mut());
             for (i, ((x, g), w)) in working.enumerate() {
-                let h = dot(x, &v);
+                let h = dot(*x, v);
                 *g = (*g - coefficient * h * h) * grow;
                 *w *= keep;
                 if i == index {
@@ -689,7 +687,7 @@ impl<'a, const D: usize> Solver<'a, D> {
             .iter()
             .map(|&i| lower_times(&self.l_inv, &self.active[i]))
             .collect();
-        let mut q = Mat::from_fn(s, s, |a, b| dot(&y[a], &y[b]).powi(2));
+        let mut q = Mat::from_fn(s, s, |a, b| dot(y[a], y[b]).powi(2));
         let delta = 1e-12 * (0..s).fold(0.0_f64, |m, a| m.max(q[(a, a)]));
         (0..s).for_each(|a| q[(a, a)] += delta);
         let Ok(llt) = q.llt(Side::Lower) else {
