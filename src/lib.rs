@@ -38,10 +38,11 @@ pub mod rbox;
 pub mod strategy;
 pub mod viz;
 
-pub use hull::{Facet, FacetId, Hull, HullError, InvariantViolation};
-pub use strategy::{
-    ClosestToOrigin, FarthestPoint, OwsInflation, ReusableStrategy, Stats, Step, Strategy,
+pub use hull::{
+    Facet, FacetId, FarthestPoint, Hull, HullError, InvariantViolation, ReusableStrategy, Stats,
+    Step, Strategy,
 };
+pub use strategy::{ClosestToOrigin, OwsInflation};
 
 /// The README's examples, compiled and run as doctests so they cannot rot.
 #[cfg(doctest)]

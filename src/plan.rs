@@ -29,11 +29,11 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+use crate::geometry::Rng;
 use crate::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod};
 use crate::grasp::quality::{Evaluator, Method, Metric, QualityError};
 use crate::grasp::{Contact, FrictionModel, Grasp, GraspError, MAX_CONTACTS};
 use crate::mesh::{Mesh, SurfaceSampler};
-use crate::geometry::Rng;
 use std::fmt;
 use std::time::{Duration, Instant};
 

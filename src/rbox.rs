@@ -37,7 +37,6 @@ use std::str::FromStr;
 
 use crate::geometry::Rng;
 
-
 /// A family of point sets. [`Family::ALL`] lists every family with its default parameters.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Family {

@@ -10,9 +10,9 @@
 //! sum's exact degeneracies are not declared to the engine). The bounds below are tripwires: an
 //! allocation per facet or per point would exceed them several times over.
 
+use pqhull::geometry::Rng;
 use pqhull::grasp::quality::{Evaluator, Method, Metric};
 use pqhull::grasp::{FrictionModel, Grasp};
-use pqhull::geometry::Rng;
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 

@@ -6,9 +6,10 @@
 //! that they skipped). `PQHULL_CHROMIUM` names another binary. `PQHULL_UPDATE_SCREENSHOTS=1`
 //! rewrites `docs/images/trace-3d.png` from the 3-D comparison test.
 
+use pqhull::hull::Event;
 use pqhull::rbox::{Family, generate};
+use pqhull::viz::html;
 use pqhull::viz::scene::{Color, Panel, Scene, scene_page};
-use pqhull::viz::{Event, html};
 use pqhull::{ClosestToOrigin, Hull};
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};

@@ -560,9 +560,9 @@ fn bench_gws_tables_and_switches() {
 /// library's on the very numbers written, bit for bit.
 #[test]
 fn grasp_floats_are_read_exactly() {
+    use pqhull::geometry::Rng;
     use pqhull::grasp::quality::{Evaluator, Method, Metric};
     use pqhull::grasp::{Contact, FrictionModel, Grasp};
-    use pqhull::geometry::Rng;
     let mut rng = Rng::new(0x5eed);
     let mut lines = String::new();
     let mut expected = Vec::new();

@@ -24,8 +24,8 @@ mod min_norm;
 mod reference;
 
 use cli_support::file;
-use pqhull::grasp::{FrictionModel, Grasp};
 use pqhull::geometry::Rng;
+use pqhull::grasp::{FrictionModel, Grasp};
 use reference::{
     CYLINDER_CASE, FULL_QINF_LIMIT, HullReference, Report, Shape, check_formula, degenerate_grasps,
     grasp_from_json, grasp_to_json, hull_reference, judge, judge_ows, near_boundary_family,

@@ -3,11 +3,11 @@
 
 use std::time::Instant;
 
+use pqhull::geometry::Rng;
 use pqhull::geometry::ellipsoid::{
     CONTAINMENT_SLACK, CentredEllipsoid, EllipsoidError, MAX_ITERATIONS,
 };
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
-use pqhull::geometry::Rng;
 use pqhull::rbox::{Family, generate};
 
 /// Largest entry-wise difference between two matrices, relative to the largest entry of `b`.

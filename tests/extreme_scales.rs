@@ -6,9 +6,9 @@
 
 use num_rational::BigRational;
 use num_traits::{ToPrimitive, Zero};
+use pqhull::geometry::Rng;
 use pqhull::grasp::quality::{Method, q1_of_wrenches};
 use pqhull::grasp::{FrictionModel, Grasp};
-use pqhull::geometry::Rng;
 use pqhull::rbox::{Family, generate};
 use pqhull::{ClosestToOrigin, Hull};
 

@@ -1,9 +1,9 @@
 //! Grasp quality metrics: known answers, invariances, partial = full on many random grasps, Q∞
 //! implicit = materialised, batch order.
 
+use pqhull::geometry::Rng;
 use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, evaluate_batch, q1_of_wrenches};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
-use pqhull::geometry::Rng;
 
 fn axis_wrenches() -> Vec<[f64; 6]> {
     let mut w = Vec::new();

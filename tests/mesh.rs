@@ -6,8 +6,8 @@ use std::f64::consts::PI;
 use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
-use pqhull::mesh::{CentreKind, Mesh, MeshError};
 use pqhull::geometry::Rng;
+use pqhull::mesh::{CentreKind, Mesh, MeshError};
 
 fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]

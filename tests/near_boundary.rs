@@ -5,8 +5,8 @@
 
 mod support;
 
-use pqhull::predicates::Sign;
 use pqhull::geometry::Rng;
+use pqhull::predicates::Sign;
 use pqhull::rbox::{self, Family};
 use pqhull::{ClosestToOrigin, Hull};
 use proptest::prelude::*;

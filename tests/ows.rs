@@ -1,12 +1,12 @@
 //! The object wrench space metric: known answers, partial = brute force, the ellipsoid bound.
 
+use pqhull::geometry::Rng;
 use pqhull::grasp::ows::{
     ObjectWrenchSpace, OwsEvaluator, OwsMethod, evaluate_batch, ows_of_wrenches,
 };
 use pqhull::grasp::quality::QualityError;
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
 use pqhull::mesh::{Mesh, SurfaceSampler};
-use pqhull::geometry::Rng;
 use std::path::PathBuf;
 
 fn mesh_path(name: &str) -> PathBuf {

@@ -3,12 +3,12 @@
 //! straight from the formulas, with Qhull (feature `qhull`) as the independent hull.
 #![cfg(feature = "qhull")]
 
+use pqhull::geometry::Rng;
 use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod, ows_of_wrenches};
 use pqhull::grasp::quality::{Method, q1_of_wrenches};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
 use pqhull::mesh::Mesh;
 use pqhull::qhull_baseline::{QhullError, qhull_full_hull};
-use pqhull::geometry::Rng;
 use std::f64::consts::PI;
 
 type V3 = [f64; 3];

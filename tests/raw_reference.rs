@@ -35,9 +35,9 @@ mod min_norm;
 #[path = "support/raw_reference.rs"]
 mod reference;
 
+use pqhull::geometry::Rng;
 use pqhull::grasp::FrictionModel;
 use pqhull::grasp::quality::{Method, Metric};
-use pqhull::geometry::Rng;
 use reference::{
     FORCE_CLOSURE_EPSILON, Report, Shape, check_formula, check_ows, check_q1, check_qinf,
     cylinder_case, degenerate_grasps, evaluate, expected_verdict, hull_reference, minkowski_scale,

@@ -2,9 +2,10 @@
 //! nothing, the stop reason matches the result; and `pqh trace` (errors, no network in the page).
 
 use pqhull::geometry::Rng;
+use pqhull::hull::{Event, Trace};
 use pqhull::rbox::{Family, generate};
 use pqhull::strategy::{DistanceResult, OwsResult, PointSource};
-use pqhull::viz::{Event, Trace, VizError, html, svg};
+use pqhull::viz::{VizError, html, svg, trace_json};
 use pqhull::{ClosestToOrigin, FacetId, FarthestPoint, Hull, OwsInflation, Stats, Strategy};
 use std::collections::BTreeSet;
 use std::path::PathBuf;
@@ -109,7 +110,7 @@ fn traced_run<const D: usize, S: Strategy<D> + Clone>(
         (created, expansions),
         (hull.stats().facets_created, hull.stats().expansions)
     );
-    let json = trace.to_json();
+    let json = trace_json(&trace);
     assert_eq!(json["dimension"], D);
     assert_eq!(
         json["events"].as_array().map(Vec::len),

@@ -552,7 +552,7 @@ fn affine_minimiser<const D: usize>(points: &[[f64; D]]) -> Option<[f64; 9]> {
 }
 
 /// Solves `a·x = b` (k × k); `None` if a pivot is below `SINGULAR` times the largest entry.
-pub(crate) fn solve(a: &[[f64; 8]; 8], b: &[f64; 8], k: usize) -> Option<[f64; 8]> {
+pub(in crate::geometry) fn solve(a: &[[f64; 8]; 8], b: &[f64; 8], k: usize) -> Option<[f64; 8]> {
     let scale = (0..k)
         .flat_map(|r| a[r][..k].iter())
         .fold(0.0f64, |m, x| m.max(x.abs()));

@@ -8,8 +8,7 @@ use super::vector::dot;
 ///
 /// Implemented by point slices (a scan), by [`SupportIndex`] (a ball tree over a fixed set) and by
 /// the implicit sets a partial hull grows over
-/// ([`PointSource`](crate::strategy::PointSource), e.g. a grasp's Minkowski sum of friction
-/// cones); consumed by [`Gjk`](super::Gjk) and by the strategies.
+/// (the strategies' `PointSource`, e.g. a grasp's Minkowski sum of friction cones); consumed by [`Gjk`](super::Gjk) and by the strategies.
 ///
 /// ```
 /// use pqhull::geometry::Support;

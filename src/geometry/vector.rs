@@ -67,7 +67,11 @@ pub fn norm<const D: usize>(v: [f64; D]) -> f64 {
     if largest == 0.0 || !largest.is_finite() {
         return largest;
     }
-    largest * v.iter().map(|x| (x / largest) * (x / largest)).sum::<f64>().sqrt()
+    largest
+        * v.iter()
+            .map(|x| (x / largest) * (x / largest))
+            .sum::<f64>()
+            .sqrt()
 }
 
 /// `a / |a|` for a finite `a`, or `None` when `a` is zero or not finite. Tiny (subnormal) and huge

@@ -35,9 +35,9 @@
 //! own normal, which brings the bracket to the rounding of a few dot products. Every dot product
 //! carries its rounding bound (γ₆ ≤ 6.7·10⁻¹⁶ of `Σ|a_c b_c|`), so `low` and `high` are rigorous.
 
+use crate::geometry::min_norm_point;
 use crate::hull::{FacetId, Hull};
 use crate::predicates::exact_cofactor_direction;
-use crate::geometry::min_norm_point;
 
 /// Rounding of a six-term dot product, relative to `Σ|a_c·b_c|`: γ₆ = 6u/(1 − 6u) ≤ 6.7·10⁻¹⁶,
 /// u = 2⁻⁵³ (Higham, *Accuracy and Stability of Numerical Algorithms*, §3.1), rounded up to

@@ -2,8 +2,8 @@
 
 use std::f64::consts::PI;
 
-use crate::geometry::vector::{add, scale};
 use super::{Contact, GraspError};
+use crate::geometry::vector::{add, scale};
 
 /// The most friction-cone edges a [`FrictionModel`] accepts: 1024.
 ///

@@ -58,11 +58,11 @@ use super::certify::{
 };
 use super::flatness::{FLAT, Flatness};
 use super::snap::{SnappedCones, pyramid_labels, snapped_union};
-use crate::predicates::times_power_of_two;
 use crate::geometry::{
     GJK_ITERATIONS, GJK_TOUCHING, Gjk, GjkVerdict, largest_norm, min_norm_point,
     min_norm_point_accurate, nearest_in_simplex,
 };
+use crate::predicates::times_power_of_two;
 use crate::strategy::{ClosestToOrigin, Stats};
 use crate::{Hull, HullError};
 use std::fmt;
@@ -637,7 +637,13 @@ fn flat_q1(w: &[[f64; 6]], started: Instant, flatness: &mut Flatness) -> Option<
 /// point is then in `gjk.face()`. `None` when undecided (force closure, or too close to call).
 pub(crate) fn certified_outside(w: &[[f64; 6]], gjk: &mut Gjk<6>) -> Option<(f64, usize)> {
     let mut set = w;
-    match gjk.run(&mut set, largest_norm(w), &w[..1], GJK_ITERATIONS, GJK_TOUCHING) {
+    match gjk.run(
+        &mut set,
+        largest_norm(w),
+        &w[..1],
+        GJK_ITERATIONS,
+        GJK_TOUCHING,
+    ) {
         GjkVerdict::Separated { distance, inserted } => Some((distance, inserted)),
         _ => None,
     }

@@ -2,8 +2,8 @@
 //! mesh's surface.
 
 use super::{Contact, FrictionModel, Grasp, GraspError};
-use crate::mesh::SurfaceSampler;
 use crate::geometry::Rng;
+use crate::mesh::SurfaceSampler;
 
 impl Grasp {
     /// A random grasp with `contacts` fingers on the box [−h₀, h₀] × [−h₁, h₁] × [−h₂, h₂]: each

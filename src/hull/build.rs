@@ -1,24 +1,26 @@
 //! Input validation, scaling and the initial simplex.
 
+use super::Stats;
 use super::expand::Scratch;
 use super::facet::MAX_FLATS;
 use super::facet::{Facet, FacetId};
-use crate::geometry::vector::{dot, norm, sub};
 use super::{Hull, HullError, NO_FLAT};
+use crate::geometry::vector::{dot, norm, sub};
 use crate::predicates::{FacetPlane, Sign, affinely_independent_subset, orientation};
-use crate::strategy::Stats;
 use std::time::Instant;
 
 impl<const D: usize> Hull<D> {
     /// Validates the input, scales it, builds the initial simplex and the first outside sets.
-    pub(crate) fn try_initial(input: &[[f64; D]]) -> Result<Self, HullError> {
+    pub(in crate::hull) fn try_initial(input: &[[f64; D]]) -> Result<Self, HullError> {
         let mut hull = Self::empty();
         hull.initialise(input)?;
         Ok(hull)
     }
 
-    /// A hull with no point and no facet, to be filled by [`initialise`](Self::initialise).
-    pub(crate) fn empty() -> Self {
+    /// A hull with no point and no facet: storage for
+    /// [`rebuild_with_strategy`](Self::rebuild_with_strategy) to fill, so that a loop over many
+    /// point sets allocates its buffers once.
+    pub fn empty() -> Self {
         Hull {
             points: Vec::new(),
             scale: 1.0,
@@ -40,7 +42,7 @@ impl<const D: usize> Hull<D> {
     /// [`try_initial`](Self::try_initial) into this hull's storage: every facet slot is freed (its
     /// outside-set buffer kept for reuse) and the point buffer refilled, so rebuilding a hull of a
     /// similar size allocates nothing. On error the hull is left empty (no live facet).
-    pub(crate) fn initialise(&mut self, input: &[[f64; D]]) -> Result<(), HullError> {
+    pub(in crate::hull) fn initialise(&mut self, input: &[[f64; D]]) -> Result<(), HullError> {
         self.started = Instant::now();
         self.free.clear();
         // Free the slots in descending order, so that they are reused from slot 0 up, as in a
@@ -125,7 +127,7 @@ impl<const D: usize> Hull<D> {
     }
 
     /// Whether input `p` equals an input with a smaller index (so never enters an outside set).
-    pub(crate) fn is_repeat(&self, p: usize) -> bool {
+    pub(in crate::hull) fn is_repeat(&self, p: usize) -> bool {
         self.scratch
             .first_copy
             .get(p)
@@ -178,12 +180,12 @@ impl<const D: usize> Hull<D> {
         }
     }
 
-    pub(crate) fn coords(&self, vertices: &[u32; D]) -> [[f64; D]; D] {
+    pub(in crate::hull) fn coords(&self, vertices: &[u32; D]) -> [[f64; D]; D] {
         vertices.map(|v| self.points[v as usize])
     }
 
     /// Makes facet `id`'s normal and offset precise (exact cofactor direction) if they are not.
-    pub(crate) fn refine_normal(&mut self, id: FacetId) {
+    pub fn refine_normal(&mut self, id: FacetId) {
         let facet = &self.facets[id.index()];
         if facet.precise {
             return;
@@ -197,7 +199,7 @@ impl<const D: usize> Hull<D> {
     }
 
     /// The unit normal of facet `id` from its exact cofactors.
-    pub(crate) fn exact_normal(&self, id: FacetId) -> [f64; D] {
+    pub fn exact_normal(&self, id: FacetId) -> [f64; D] {
         let facet = &self.facets[id.index()];
         let coords = self.coords(&facet.vertices);
         let exact = facet.plane.exact_normal_direction(&coords);
@@ -206,7 +208,11 @@ impl<const D: usize> Hull<D> {
     }
 
     /// Creates a facet (plane and normal computed here), reusing a tombstoned slot when possible.
-    pub(crate) fn push_facet(&mut self, vertices: [u32; D], neighbors: [FacetId; D]) -> FacetId {
+    pub(in crate::hull) fn push_facet(
+        &mut self,
+        vertices: [u32; D],
+        neighbors: [FacetId; D],
+    ) -> FacetId {
         let coords = self.coords(&vertices);
         let plane = FacetPlane::new(&coords);
         // Without overflow or underflow of the squares: the cofactors of a wide-ranging input
@@ -272,7 +278,7 @@ impl<const D: usize> Hull<D> {
 
     /// Puts point `p` in the outside set of the candidate it lies farthest beyond (exactly decided),
     /// or nowhere if it lies weakly inside every candidate. Returns whether it was assigned.
-    pub(crate) fn assign(&mut self, p: u32, candidates: &[FacetId]) -> bool {
+    pub(in crate::hull) fn assign(&mut self, p: u32, candidates: &[FacetId]) -> bool {
         let point = self.points[p as usize];
         let mut best: Option<(FacetId, f64, f64)> = None;
         let mut undecided = false;
@@ -319,14 +325,14 @@ impl<const D: usize> Hull<D> {
     }
 
     /// Exact side of internal point `x` relative to facet `id`.
-    pub(crate) fn side(&self, id: FacetId, x: &[f64; D]) -> Sign {
+    pub(in crate::hull) fn side(&self, id: FacetId, x: &[f64; D]) -> Sign {
         let facet = &self.facets[id.index()];
         facet.plane.side(x, || self.coords(&facet.vertices))
     }
 
     /// Exact side of input point `p` relative to facet `id`: [`side`](Self::side), or `Zero` at
     /// once when the facet contains the declared flat holding `p`.
-    pub(crate) fn side_of_index(&self, id: FacetId, p: u32) -> Sign {
+    pub(in crate::hull) fn side_of_index(&self, id: FacetId, p: u32) -> Sign {
         let facet = &self.facets[id.index()];
         if self.on_its_flat(facet, p) {
             return Sign::Zero;

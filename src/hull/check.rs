@@ -1,8 +1,8 @@
 //! The public validator: every invariant the engine promises, checked from scratch.
 
 use super::facet::FacetId;
-use crate::geometry::vector::dot;
 use super::{Hull, InvariantViolation, NO_FLAT};
+use crate::geometry::vector::dot;
 use crate::predicates::Sign;
 
 impl<const D: usize> Hull<D> {

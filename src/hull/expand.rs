@@ -6,11 +6,11 @@ use crate::predicates::Sign;
 
 /// Buffers reused across expansions so that steady-state expansion does not allocate.
 #[derive(Clone, Debug, Default)]
-pub(crate) struct Scratch<const D: usize> {
+pub(in crate::hull) struct Scratch<const D: usize> {
     /// Facets visible from the new point (removed by the expansion).
-    pub(crate) removed: Vec<FacetId>,
+    pub(in crate::hull) removed: Vec<FacetId>,
     /// Facets created by the expansion.
-    pub(crate) created: Vec<FacetId>,
+    pub(in crate::hull) created: Vec<FacetId>,
     /// (visible facet, index of the horizon ridge in it).
     horizon: Vec<(FacetId, usize)>,
     /// Ridges of the cone to pair up: (sorted vertex key, new facet, its neighbour slot).
@@ -24,13 +24,13 @@ pub(crate) struct Scratch<const D: usize> {
     ring: Vec<FacetId>,
     /// (hash of the coordinates, input index), sorted, and each input's first copy: see
     /// [`Hull::initialise`](super::Hull).
-    pub(crate) keys: Vec<(u64, u32)>,
-    pub(crate) first_copy: Vec<u32>,
+    pub(in crate::hull) keys: Vec<(u64, u32)>,
+    pub(in crate::hull) first_copy: Vec<u32>,
 }
 
 /// The most facets [`Hull::claim_beyond`] searches around a facet before it scans them all: a
 /// few rings in 6-D, a hundredth of a large hull's arena.
-pub(crate) const RING_FACETS: usize = 1024;
+pub(in crate::hull) const RING_FACETS: usize = 1024;
 
 /// A multiplicative hash of a sorted ridge key (FxHash's constant), good enough for the small
 /// per-expansion table and much cheaper than SipHash.
@@ -200,7 +200,7 @@ impl<const D: usize> Hull<D> {
     }
 
     /// Recomputes which point of a facet's outside set lies farthest beyond it.
-    pub(crate) fn refresh_farthest(&mut self, id: FacetId) {
+    pub(in crate::hull) fn refresh_farthest(&mut self, id: FacetId) {
         let facet = &self.facets[id.index()];
         let mut best: Option<(u32, f64)> = None;
         for (slot, &p) in facet.outside.iter().enumerate() {

@@ -10,7 +10,7 @@ use crate::predicates::FacetPlane;
 /// also keep the facet's [`serial`](Facet::serial) and compare it (see
 /// [`Hull::is_current`](crate::Hull::is_current)).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct FacetId(pub(crate) u32);
+pub struct FacetId(pub(in crate::hull) u32);
 
 impl FacetId {
     /// The slot index in the arena.
@@ -19,12 +19,12 @@ impl FacetId {
     }
 
     /// Placeholder for a neighbour link not yet made.
-    pub(crate) const NONE: FacetId = FacetId(u32::MAX);
+    pub(in crate::hull) const NONE: FacetId = FacetId(u32::MAX);
 }
 
 /// At most this many declared flats, each of dimension ≥ 1 (so with ≥ 2 vertices), fit in the
 /// D ≤ 8 vertices of one facet.
-pub(crate) const MAX_FLATS: usize = 4;
+pub(in crate::hull) const MAX_FLATS: usize = 4;
 
 /// A simplicial facet of a hull: D vertices, D neighbours, an outward plane.
 ///
@@ -33,31 +33,31 @@ pub(crate) const MAX_FLATS: usize = 4;
 /// beyond the facet.
 #[derive(Clone, Debug)]
 pub struct Facet<const D: usize> {
-    pub(crate) vertices: [u32; D],
-    pub(crate) neighbors: [FacetId; D],
+    pub(in crate::hull) vertices: [u32; D],
+    pub(in crate::hull) neighbors: [FacetId; D],
     /// Exact-predicate cache, in the hull's internal (power-of-two scaled) coordinates.
-    pub(crate) plane: FacetPlane<D>,
+    pub(in crate::hull) plane: FacetPlane<D>,
     /// 1 / |cofactors|: turns an orientation value into a distance in internal coordinates.
-    pub(crate) inv_norm: f64,
+    pub(in crate::hull) inv_norm: f64,
     /// Unit outward normal.
-    pub(crate) normal: [f64; D],
+    pub(in crate::hull) normal: [f64; D],
     /// Whether `normal` is certified to a relative 1e−11 (else it is the floating-point normal of
     /// a facet whose cofactors cancelled, refined on demand by `Hull::refine_normal`).
-    pub(crate) precise: bool,
+    pub(in crate::hull) precise: bool,
     /// Offset in the caller's coordinates.
-    pub(crate) offset: f64,
+    pub(in crate::hull) offset: f64,
     /// Declared flats (see `Hull::rebuild_with_flats`) that this facet's hyperplane contains,
     /// padded with `NO_FLAT`.
-    pub(crate) flats: [u32; MAX_FLATS],
+    pub(in crate::hull) flats: [u32; MAX_FLATS],
     /// Input indices of the points assigned to this facet (each strictly beyond it).
-    pub(crate) outside: Vec<u32>,
+    pub(in crate::hull) outside: Vec<u32>,
     /// Position in `outside` of the point farthest beyond, with its orientation value.
-    pub(crate) farthest: Option<(u32, f64)>,
-    pub(crate) alive: bool,
-    pub(crate) serial: u64,
+    pub(in crate::hull) farthest: Option<(u32, f64)>,
+    pub(in crate::hull) alive: bool,
+    pub(in crate::hull) serial: u64,
     /// Visit epoch and verdict of the last horizon search that looked at this facet.
-    pub(crate) mark: u32,
-    pub(crate) visible: bool,
+    pub(in crate::hull) mark: u32,
+    pub(in crate::hull) visible: bool,
 }
 
 impl<const D: usize> Facet<D> {
@@ -119,9 +119,14 @@ impl<const D: usize> Facet<D> {
         self.serial
     }
 
+    /// The declared flats (see [`Hull::rebuild_with_flats`](crate::Hull::rebuild_with_flats))
+    /// this facet contains.
+    pub fn contained_flats(&self) -> impl Iterator<Item = u32> + '_ {
+        self.flats.iter().copied().filter(|&g| g != super::NO_FLAT)
+    }
+
     /// Whether the facet is part of the current hull.
     pub fn is_alive(&self) -> bool {
         self.alive
     }
 }
-

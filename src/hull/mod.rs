@@ -22,18 +22,22 @@ mod check;
 mod error;
 mod expand;
 mod facet;
+mod farthest_point;
+mod record;
+mod strategy;
 mod trace;
 
 pub use error::{HullError, InvariantViolation};
 pub use facet::{Facet, FacetId};
+pub use farthest_point::FarthestPoint;
+pub use record::{Event, FacetSnapshot, Key, Replay, Trace, TraceContext, TraceText};
+pub use strategy::{ReusableStrategy, Stats, Step, Strategy};
 
 use crate::geometry::vector::norm;
 use crate::predicates::Sign;
-use crate::strategy::{FarthestPoint, Stats, Step, Strategy};
-
 
 /// No declared flat (see [`Hull::rebuild_with_flats`]).
-pub(crate) const NO_FLAT: u32 = u32::MAX;
+pub const NO_FLAT: u32 = u32::MAX;
 use std::time::Instant;
 
 /// A convex hull in dimension `D` (2 ≤ D ≤ 8), full or partial depending on the strategy that grew
@@ -75,7 +79,7 @@ pub struct Hull<const D: usize> {
     flat_dim: usize,
     /// The run being recorded, if any ([`Hull::try_with_strategy_traced`]); `None` costs each
     /// trace hook one branch.
-    trace: Option<Box<crate::viz::Trace<D>>>,
+    trace: Option<Box<Trace<D>>>,
 }
 
 impl<const D: usize> Hull<D> {
@@ -160,9 +164,12 @@ impl<const D: usize> Hull<D> {
     /// point of a pyramid tested against a facet through three of its edges is the common case in
     /// which the floating-point filter fails and exact arithmetic is needed.
     ///
-    /// Crate-private because the claim is trusted, not checked: a point declared in a flat it is
-    /// not in makes wrong hulls. Callers prove it by construction (see `grasp::snap`).
-    pub(crate) fn rebuild_with_flats<S: Strategy<D>>(
+    /// # Correctness
+    /// The claim is trusted, not checked (checking it would cost the exact arithmetic it saves):
+    /// a point declared in a flat it is not in exactly makes a wrong hull (never undefined
+    /// behaviour). Callers prove it by construction, as the grasp layer does for its snapped
+    /// friction pyramids.
+    pub fn rebuild_with_flats<S: Strategy<D>>(
         &mut self,
         points: &[[f64; D]],
         flat_of: &[u32],
@@ -312,7 +319,7 @@ impl<const D: usize> Hull<D> {
     /// A bound on the input's coordinates (caller's units): every coordinate is at most this in
     /// magnitude, and the largest is more than half of it (unless the input's magnitudes were too
     /// extreme to be scaled exactly).
-    pub(crate) fn coordinate_bound(&self) -> f64 {
+    pub fn coordinate_bound(&self) -> f64 {
         1.0 / self.scale
     }
 
@@ -320,7 +327,7 @@ impl<const D: usize> Hull<D> {
     /// determinant and the exact cofactors: a few ulps however close `x` is to the plane (see
     /// `FacetPlane::exact_distance`), or `None` when `x` cannot be scaled exactly (as in
     /// [`side_of`](Self::side_of)).
-    pub(crate) fn exact_signed_distance(&self, id: FacetId, x: &[f64; D]) -> Option<f64> {
+    pub fn exact_signed_distance(&self, id: FacetId, x: &[f64; D]) -> Option<f64> {
         let scaled = self.scaled_exactly(x)?;
         let facet = self.facet(id);
         let distance = facet
@@ -332,7 +339,7 @@ impl<const D: usize> Hull<D> {
     /// An upper bound on the exact signed distance of `x` beyond facet `id`'s plane: the
     /// floating-point distance when the facet's normal is precise, else a certified bound from the
     /// plane's error analysis (`+∞` when the floating-point cofactors say nothing).
-    pub(crate) fn distance_upper_bound(&self, id: FacetId, x: &[f64; D]) -> f64 {
+    pub fn distance_upper_bound(&self, id: FacetId, x: &[f64; D]) -> f64 {
         let facet = self.facet(id);
         if facet.precise {
             return facet.signed_distance(x);

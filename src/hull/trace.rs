@@ -1,4 +1,4 @@
-//! Recording a run ([`crate::viz::Trace`]): the engine's hooks and the ones strategies call.
+//! Recording a run ([`Trace`]): the engine's hooks and the ones strategies call.
 //!
 //! The hull holds `Option<Box<Trace>>`, `None` unless the run was started with
 //! [`Hull::try_with_strategy_traced`]. Every hook starts with `if let Some(..)`/`is_some()` on
@@ -7,9 +7,7 @@
 //! an untraced run pays one predictable branch per hook and builds no string. The box keeps
 //! the field one pointer wide, so `Hull` barely grows.
 
-use super::{FacetId, Hull, HullError};
-use crate::strategy::Strategy;
-use crate::viz::{Event, FacetSnapshot, Key, Trace, TraceText};
+use super::{Event, FacetId, FacetSnapshot, Hull, HullError, Key, Strategy, Trace, TraceText};
 
 impl<const D: usize> Hull<D> {
     /// As [`Hull::try_with_strategy`], and also returns the [`Trace`] of the run: the initial
@@ -21,7 +19,7 @@ impl<const D: usize> Hull<D> {
     ///
     /// ```
     /// use pqhull::{Hull, OwsInflation};
-    /// use pqhull::viz::Event;
+    /// use pqhull::hull::Event;
     /// let square = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0], [0.3, 0.2]];
     /// let disturbances = [[1.0, 0.0], [1.0, 1.0]];
     /// let (_, result, trace) =
@@ -84,7 +82,7 @@ impl<const D: usize> Hull<D> {
     /// is not live.
     ///
     /// ```
-    /// use pqhull::strategy::Step;
+    /// use pqhull::Step;
     /// use pqhull::{Hull, Strategy};
     ///
     /// /// Expands the facet with the most outside points, and says so.

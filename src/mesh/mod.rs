@@ -62,8 +62,8 @@ pub use mass::{CentreKind, MassProperties};
 pub use sample::{SurfacePoint, SurfaceSampler};
 pub use topology::Topology;
 
-use mass::Frame;
 use crate::geometry::vector::{cross, norm, normalize, scale, sub};
+use mass::Frame;
 
 /// A 3-vector.
 type V3 = [f64; 3];

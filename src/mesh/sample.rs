@@ -1,8 +1,8 @@
 //! Area-weighted random points on a mesh's surface, for grasp planners.
 
 use super::Mesh;
-use crate::geometry::vector::norm;
 use crate::geometry::Rng;
+use crate::geometry::vector::norm;
 
 /// A point on the surface of a [`Mesh`], with the direction a finger placed there would push.
 #[derive(Clone, Copy, Debug, PartialEq)]

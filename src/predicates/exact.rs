@@ -33,7 +33,7 @@ fn robust_safe(points: &[&[f64]]) -> bool {
 }
 
 /// The exponent of the lowest set bit of a finite non-zero `x` (`x` is an odd multiple of 2^e).
-pub(crate) fn lowest_bit_exponent(x: f64) -> i32 {
+pub(in crate::predicates) fn lowest_bit_exponent(x: f64) -> i32 {
     decompose(x).1
 }
 
@@ -41,7 +41,7 @@ pub(crate) fn lowest_bit_exponent(x: f64) -> i32 {
 ///
 /// # Panics
 /// If `x` is not finite.
-pub(crate) fn decompose(x: f64) -> (i64, i32) {
+pub(in crate::predicates) fn decompose(x: f64) -> (i64, i32) {
     assert!(
         x.is_finite(),
         "pqhull::predicates: non-finite coordinate {x} given to an exact predicate"
@@ -87,7 +87,10 @@ fn scale(points: &[&[f64]]) -> Scaled {
 
 /// Exact sign of `det[v1 − v0; …; v(D−1) − v0; p − v0]`, using `robust` for D = 2, 3 when the
 /// coordinates are in its safe range, integer Bareiss elimination otherwise.
-pub(crate) fn orientation<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> Sign {
+pub(in crate::predicates) fn orientation<const D: usize>(
+    vertices: &[[f64; D]; D],
+    p: &[f64; D],
+) -> Sign {
     // Repeated points make the determinant vanish; this is the most common reason the filter
     // fails (a hull vertex tested against its own facets, duplicates), and costs D² comparisons.
     if vertices.iter().any(|v| v == p)
@@ -142,7 +145,7 @@ fn orientation_robust3(pts: &[&[f64]]) -> Sign {
     sign_of(-s)
 }
 
-pub(crate) fn sign_of(x: f64) -> Sign {
+pub(in crate::predicates) fn sign_of(x: f64) -> Sign {
     if x > 0.0 {
         Sign::Positive
     } else if x < 0.0 {
@@ -163,14 +166,20 @@ fn sign_of_int<T: Signed>(x: &T) -> Sign {
 }
 
 /// The exact integer path, valid for every D (also used to cross-check `robust` in tests).
-pub(crate) fn orientation_bareiss<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> Sign {
+pub(in crate::predicates) fn orientation_bareiss<const D: usize>(
+    vertices: &[[f64; D]; D],
+    p: &[f64; D],
+) -> Sign {
     // Fixed-width integers when the column-scaled entries fit in i64 (allocation-free; covers
     // lattices and snapped wrenches), BigInt otherwise.
     super::wide::orientation(vertices, p).unwrap_or_else(|| orientation_big(vertices, p))
 }
 
 /// The `BigInt` path of [`orientation_bareiss`], valid for every input.
-pub(crate) fn orientation_big<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> Sign {
+pub(in crate::predicates) fn orientation_big<const D: usize>(
+    vertices: &[[f64; D]; D],
+    p: &[f64; D],
+) -> Sign {
     let mut all: Vec<&[f64]> = vertices.iter().map(|v| &v[..]).collect();
     all.push(&p[..]);
     let s = scale(&all);
@@ -194,7 +203,7 @@ fn bareiss_big(a: Vec<Vec<BigInt>>) -> Sign {
     sign_of_int(&bareiss_value(a))
 }
 
-pub(crate) fn flip(s: Sign) -> Sign {
+pub(in crate::predicates) fn flip(s: Sign) -> Sign {
     match s {
         Sign::Negative => Sign::Positive,
         Sign::Zero => Sign::Zero,
@@ -206,14 +215,16 @@ pub(crate) fn flip(s: Sign) -> Sign {
 ///
 /// # Panics
 /// If `x` is not finite.
-pub(crate) fn rational(x: f64) -> BigRational {
+pub(in crate::predicates) fn rational(x: f64) -> BigRational {
     BigRational::from_float(x).unwrap_or_else(|| {
         panic!("pqhull::predicates: non-finite coordinate {x} given to an exact predicate")
     })
 }
 
 /// Greedy exact affine basis: see [`super::affinely_independent_subset`].
-pub(crate) fn affinely_independent_subset<const D: usize>(points: &[[f64; D]]) -> Vec<usize> {
+pub(in crate::predicates) fn affinely_independent_subset<const D: usize>(
+    points: &[[f64; D]],
+) -> Vec<usize> {
     let Some(first) = points.first() else {
         return Vec::new();
     };
@@ -252,13 +263,15 @@ pub(crate) fn affinely_independent_subset<const D: usize>(points: &[[f64; D]]) -
 ///
 /// Used when the floating-point cofactors of a facet cancel too much to give an accurate normal
 /// (slivers, tiny clusters): each component is then within a few ulps of the exact direction's.
-pub(crate) fn exact_cofactor_direction<const D: usize>(vertices: &[[f64; D]; D]) -> [f64; D] {
+pub fn exact_cofactor_direction<const D: usize>(vertices: &[[f64; D]; D]) -> [f64; D] {
     super::wide::cofactor_direction(vertices)
         .unwrap_or_else(|| exact_cofactor_direction_big(vertices))
 }
 
 /// The `BigInt` path of [`exact_cofactor_direction`], valid for every input.
-pub(crate) fn exact_cofactor_direction_big<const D: usize>(vertices: &[[f64; D]; D]) -> [f64; D] {
+pub(in crate::predicates) fn exact_cofactor_direction_big<const D: usize>(
+    vertices: &[[f64; D]; D],
+) -> [f64; D] {
     let all: Vec<&[f64]> = vertices.iter().map(|v| &v[..]).collect();
     let s = scale(&all);
     let cofactors = cofactors_big::<D>(&integer_differences(&s, D));
@@ -280,7 +293,10 @@ pub(crate) fn exact_cofactor_direction_big<const D: usize>(vertices: &[[f64; D];
 ///
 /// # Panics
 /// If a coordinate is not finite.
-pub(crate) fn distance_big<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> f64 {
+pub(in crate::predicates) fn distance_big<const D: usize>(
+    vertices: &[[f64; D]; D],
+    p: &[f64; D],
+) -> f64 {
     let mut all: Vec<&[f64]> = vertices.iter().map(|v| &v[..]).collect();
     all.push(&p[..]);
     let s = scale(&all);

@@ -312,7 +312,7 @@ impl<const D: usize> FacetPlane<D> {
     ///
     /// # Panics
     /// If a coordinate is not finite.
-    pub(crate) fn exact_distance(&self, vertices: &[[f64; D]; D], p: &[f64; D]) -> f64 {
+    pub fn exact_distance(&self, vertices: &[[f64; D]; D], p: &[f64; D]) -> f64 {
         match self
             .exact_plane(vertices)
             .and_then(|plane| plane.distance(p))

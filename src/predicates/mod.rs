@@ -68,9 +68,9 @@ mod filter;
 mod tests;
 mod wide;
 
-pub(crate) use exact::exact_cofactor_direction;
+pub use exact::exact_cofactor_direction;
 pub use filter::FacetPlane;
-pub(crate) use wide::times_power_of_two;
+pub use wide::times_power_of_two;
 
 /// The sign of an orientation determinant.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -1,7 +1,7 @@
 //! Allocation-free exact determinants of matrices whose column-scaled entries fit in `i64`.
 //!
 //! The exact path's usual inputs — degenerate configurations built on a grid, such as the friction
-//! pyramids of [`crate::grasp`], whose edges lie exactly in one plane per contact — have entries
+//! pyramids of the grasp layer, whose edges lie exactly in one plane per contact — have entries
 //! that are small integers once each *column* is scaled by its own power of two (which multiplies
 //! the determinant by a positive power of two, so its sign and the direction of the cofactor
 //! vector, after undoing the scaling, are unchanged). Their determinants then fit in a few hundred
@@ -186,7 +186,7 @@ fn subset_minors<const D: usize, T>(
 /// its neighbours, and the determinant is exactly zero each time): one test then costs D products
 /// instead of a full determinant.
 #[derive(Clone, Debug)]
-pub(crate) struct ExactPlane<const D: usize> {
+pub(in crate::predicates) struct ExactPlane<const D: usize> {
     /// Signed cofactors `C_j` of the column-scaled difference matrix.
     cofactors: [Wide; D],
     /// Limbs in use: enough for every cofactor times a coordinate difference of up to 63 bits.
@@ -199,7 +199,7 @@ pub(crate) struct ExactPlane<const D: usize> {
 
 impl<const D: usize> ExactPlane<D> {
     /// `None` when the column-scaled vertex coordinates do not fit in `i64`.
-    pub(crate) fn new(vertices: &[[f64; D]; D]) -> Option<Self> {
+    pub(in crate::predicates) fn new(vertices: &[[f64; D]; D]) -> Option<Self> {
         let points: [&[f64; D]; D] = std::array::from_fn(|i| &vertices[i]);
         let (matrix, exponents, bits) = integer_rows(&points)?;
         // A side test sums D ≤ 8 products of a cofactor (< 2^(bits + 16)) by a difference of two
@@ -226,7 +226,7 @@ impl<const D: usize> ExactPlane<D> {
     }
 
     /// The direction of the exact cofactor vector (the facet's outward normal), rounded to `f64`.
-    pub(crate) fn normal_direction(&self) -> [f64; D] {
+    pub(in crate::predicates) fn normal_direction(&self) -> [f64; D] {
         scaled_direction(
             self.cofactors.map(|c| c.to_f64_parts(self.len)),
             &self.exponents,
@@ -238,7 +238,7 @@ impl<const D: usize> ExactPlane<D> {
     ///
     /// # Panics
     /// If a coordinate of `p` is not finite.
-    pub(crate) fn side(&self, p: &[f64; D]) -> Option<Sign> {
+    pub(in crate::predicates) fn side(&self, p: &[f64; D]) -> Option<Sign> {
         let mut sum = Wide::ZERO;
         for (j, &coordinate) in p.iter().enumerate() {
             let x = column_integer(coordinate, self.exponents[j])?;
@@ -253,7 +253,7 @@ impl<const D: usize> ExactPlane<D> {
     ///
     /// # Panics
     /// If a coordinate of `p` is not finite.
-    pub(crate) fn distance(&self, p: &[f64; D]) -> Option<f64> {
+    pub(in crate::predicates) fn distance(&self, p: &[f64; D]) -> Option<f64> {
         let mut sum = Wide::ZERO;
         for (j, &coordinate) in p.iter().enumerate() {
             let x = column_integer(coordinate, self.exponents[j])?;
@@ -287,7 +287,7 @@ impl<const D: usize> ExactPlane<D> {
 }
 
 /// `x · 2^e`, in steps that cannot overflow or underflow before the end.
-pub(crate) fn times_power_of_two(mut x: f64, mut e: i32) -> f64 {
+pub fn times_power_of_two(mut x: f64, mut e: i32) -> f64 {
     while e > 1000 {
         x *= 2f64.powi(1000);
         e -= 1000;
@@ -316,7 +316,10 @@ fn column_integer(x: f64, exponent: i32) -> Option<i64> {
 
 /// Exact sign of `det[v1 − v0; …; v(D−1) − v0; p − v0]`, or `None` when the column-scaled entries
 /// do not fit in `i64`.
-pub(crate) fn orientation<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> Option<Sign> {
+pub(in crate::predicates) fn orientation<const D: usize>(
+    vertices: &[[f64; D]; D],
+    p: &[f64; D],
+) -> Option<Sign> {
     let mut points: [&[f64; D]; 9] = [p; 9];
     for (slot, v) in points.iter_mut().zip(vertices) {
         *slot = v;
@@ -331,7 +334,9 @@ pub(crate) fn orientation<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]
 /// The exact cofactor vector of `[v1 − v0; …; v(D−1) − v0; ·]`, rounded to `f64` after a common
 /// power-of-two scaling (only its direction is meaningful), or `None` when the column-scaled
 /// entries do not fit in `i64`.
-pub(crate) fn cofactor_direction<const D: usize>(vertices: &[[f64; D]; D]) -> Option<[f64; D]> {
+pub(in crate::predicates) fn cofactor_direction<const D: usize>(
+    vertices: &[[f64; D]; D],
+) -> Option<[f64; D]> {
     ExactPlane::new(vertices).map(|plane| plane.normal_direction())
 }
 
@@ -357,8 +362,8 @@ fn scaled_direction<const D: usize>(parts: [(f64, i32); D], exponents: &[i32; D]
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::predicates::exact::{exact_cofactor_direction_big, orientation_big};
     use crate::geometry::Rng;
+    use crate::predicates::exact::{exact_cofactor_direction_big, orientation_big};
 
     /// Random points on a coarse grid (many exact zeros) or with full mantissas, with columns of
     /// very different magnitudes.

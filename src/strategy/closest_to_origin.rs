@@ -1,14 +1,12 @@
 //! `ClosestToOrigin`: the PQHGWS algorithm (Liu & Carpin, Algorithm 1), made exact.
 
-use crate::geometry::{
-    min_norm_point, min_norm_point_accurate, nearest_face_in_simplex, rescaled,
-};
 use super::{Queued, ReusableStrategy, Stats, Step, Strategy};
 use crate::geometry::Support;
 use crate::geometry::vector::{dot, norm};
+use crate::geometry::{min_norm_point, min_norm_point_accurate, nearest_face_in_simplex, rescaled};
+use crate::hull::TraceContext;
 use crate::hull::{FacetId, Hull};
 use crate::predicates::Sign;
-use crate::viz::TraceContext;
 use std::collections::BinaryHeap;
 
 /// Grows the hull toward a query point (default: the origin) and stops as soon as the facet nearest

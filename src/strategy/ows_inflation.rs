@@ -3,16 +3,15 @@
 use super::{Queued, ReusableStrategy, Stats, Step, Strategy};
 use crate::geometry::SupportIndex;
 use crate::geometry::vector::dot;
+use crate::hull::TraceContext;
 use crate::hull::{FacetId, Hull};
 use crate::predicates::Sign;
-use crate::viz::TraceContext;
 use std::collections::BinaryHeap;
 
 /// Grows the hull until it can tell how far a set of *disturbances* can be inflated before the
 /// hull stops resisting them: the largest `r` such that `−r·d` lies in the full hull for every
 /// disturbance `d` — the object-wrench-space grasp metric when the hull's points are a grasp's
-/// wrenches and the disturbances are the object's wrench space (see
-/// [`grasp::ows`](crate::grasp::ows)).
+/// wrenches and the disturbances are the object's wrench space (the grasp layer's `grasp::ows`).
 ///
 /// # Sign
 ///
@@ -125,7 +124,7 @@ const PLANE_TOLERANCE: f64 = 2e-11;
 /// The exact offset is within `PLANE_TOLERANCE·|v0|` of the floating-point one (`v0` the base
 /// vertex, `|v0| ≤ √D·` the coordinate bound) and the exact rate within
 /// `PLANE_TOLERANCE·ray_norm` of the computed one.
-pub(crate) fn factor_lower_bound<const D: usize>(
+pub fn factor_lower_bound<const D: usize>(
     hull: &Hull<D>,
     offset: f64,
     rate: f64,
@@ -141,7 +140,7 @@ pub(crate) fn factor_lower_bound<const D: usize>(
 /// [`Hull::exact_signed_distance`]) over `support(−n)`, the largest rate of any disturbance
 /// against the exact plane's unit normal `n`, with that disturbance; `None` when no disturbance
 /// reaches the plane.
-pub(crate) fn exact_factor<const D: usize>(
+pub fn exact_factor<const D: usize>(
     hull: &Hull<D>,
     id: FacetId,
     support: impl FnOnce(&[f64; D]) -> Option<(f64, usize)>,
@@ -231,13 +230,13 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
 
     /// This strategy's buffers (queue, assignments, scratch) under a new index, for the next
     /// run: evaluating many grasps against one object wrench space then allocates no new queue.
-    pub(crate) fn rebind_index<'b>(self, index: &'b SupportIndex<D>) -> OwsInflation<'b, D> {
+    pub fn rebind_index<'b>(self, index: &'b SupportIndex<D>) -> OwsInflation<'b, D> {
         self.rebind(Disturbances::Support(index))
     }
 
     /// This strategy's buffers with no disturbances (the [`Default`]), to keep between runs
     /// without borrowing anything.
-    pub(crate) fn park(self) -> OwsInflation<'static, D> {
+    pub fn park(self) -> OwsInflation<'static, D> {
         self.rebind(Disturbances::Rays(&[]))
     }
 

@@ -11,8 +11,9 @@
 //! factor `r` in teal. The caption says what happened and why (the strategy's reason and key).
 //! The page's test hooks are those of [`scene`](super::scene).
 
+use super::VizError;
 use super::scene::{escape, page};
-use super::{Trace, VizError};
+use crate::hull::{Event, Trace};
 use serde_json::json;
 
 /// Legend entries: (colour as CSS, meaning). Keep in step with `COLORS` in viewer.js.
@@ -58,7 +59,7 @@ pub fn trace_page<const D: usize>(title: &str, traces: &[&Trace<D>]) -> Result<S
     }
     let panels: Vec<_> = traces
         .iter()
-        .map(|t| json!({"title": panel_title(t), "trace": t.to_json()}))
+        .map(|t| json!({"title": panel_title(t), "trace": super::trace_json(t)}))
         .collect();
     let mut legend = String::new();
     for (color, meaning) in LEGEND {
@@ -75,14 +76,14 @@ pub(crate) fn panel_title<const D: usize>(trace: &Trace<D>) -> String {
     let expansions = trace
         .events
         .iter()
-        .filter(|e| matches!(e, super::Event::Expanded { .. }))
+        .filter(|e| matches!(e, Event::Expanded { .. }))
         .count();
     let created: usize = trace
         .events
         .iter()
         .map(|e| match e {
-            super::Event::Initial { facets } => facets.len(),
-            super::Event::Expanded { created, .. } => created.len(),
+            Event::Initial { facets } => facets.len(),
+            Event::Expanded { created, .. } => created.len(),
             _ => 0,
         })
         .sum();

@@ -1,11 +1,11 @@
 //! Visual debugging: recorded traces of a strategy's run and their SVG / HTML renderings.
 //!
-//! * [`Trace`] — what [`Hull::try_with_strategy_traced`](crate::Hull::try_with_strategy_traced)
+//! * [`Trace`](crate::hull::Trace) — what [`Hull::try_with_strategy_traced`](crate::Hull::try_with_strategy_traced)
 //!   records: the initial simplex, each facet a strategy chose and why, each point added with the
 //!   facets removed and created, and the stop with the certificate that allowed it. Recording is
 //!   off unless asked for, and then costs nothing but one branch per hook (see
-//!   [`Hull::trace_choice`](crate::Hull::trace_choice)). [`Trace::replay`] rebuilds the hull
-//!   after any event; [`Trace::to_json`] serialises it.
+//!   [`Hull::trace_choice`](crate::Hull::trace_choice)). [`Trace::replay`](crate::hull::Trace::replay) rebuilds the hull
+//!   after any event; [`trace_json`] serialises it.
 //! * [`html::trace_page`] — a self-contained HTML page (inline script, no network) drawing one
 //!   or two traces step by step on a canvas, with a step slider and, in 3-D, mouse rotation.
 //! * [`svg::trace_svgs`] — one static SVG picture per step of a 2-D trace.
@@ -27,34 +27,13 @@
 //! ```
 
 pub mod html;
+mod json;
 pub mod scene;
 pub mod svg;
-mod trace;
 
-pub use trace::{Event, FacetSnapshot, Key, Replay, Trace, TraceContext};
+pub use json::trace_json;
 
 use std::fmt;
-
-/// Text for a trace, built only when a run is traced: a `&'static str` (free to pass), or a
-/// closure returning a `String`, called only when tracing (so `format!` costs nothing on an
-/// untraced run). Taken by [`Hull::trace_choice`](crate::Hull::trace_choice),
-/// [`Hull::trace_note`](crate::Hull::trace_note) and [`Hull::trace_stop`](crate::Hull::trace_stop).
-pub trait TraceText {
-    /// The text.
-    fn into_text(self) -> String;
-}
-
-impl TraceText for &'static str {
-    fn into_text(self) -> String {
-        self.to_string()
-    }
-}
-
-impl<F: FnOnce() -> String> TraceText for F {
-    fn into_text(self) -> String {
-        self()
-    }
-}
 
 /// Why a trace cannot be drawn.
 #[derive(Clone, Debug, PartialEq, Eq)]

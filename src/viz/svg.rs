@@ -4,8 +4,9 @@
 //! event, coloured as in the HTML viewer ([`html`](super::html)), with the event's description
 //! as a caption. Made for documents and for looking at a run without a browser.
 
+use super::VizError;
 use super::scene::escape;
-use super::{Event, Replay, Trace, VizError};
+use crate::hull::{Event, Replay, Trace};
 use std::collections::{HashMap, HashSet};
 use std::fmt::Write as _;
 

@@ -4,9 +4,9 @@
 use crate::error::CliError;
 use crate::grasp_cmd::{MethodArg, method};
 use clap::{Args, Subcommand, ValueEnum};
+use pqhull::geometry::Rng;
 use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, evaluate_batch};
 use pqhull::grasp::{FrictionModel, Grasp};
-use pqhull::geometry::Rng;
 use serde_json::{Value, json};
 use std::io::Write;
 use std::time::Instant;

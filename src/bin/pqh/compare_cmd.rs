@@ -2,8 +2,8 @@
 
 use crate::error::CliError;
 use clap::Args;
-use pqhull::predicates::Sign;
 use pqhull::geometry::Rng;
+use pqhull::predicates::Sign;
 use pqhull::rbox::{Family, generate};
 use pqhull::{ClosestToOrigin, FarthestPoint, Hull, HullError, Stats};
 use serde_json::{Value, json};

@@ -1,16 +1,16 @@
 //! Evaluating Q_OWS: the partial hull (PQHOWS), brute force, and Borst et al.'s ellipsoid.
 
 use super::ObjectWrenchSpace;
+use crate::geometry::vector::dot;
+use crate::geometry::{Gjk, largest_norm};
 use crate::grasp::Grasp;
 use crate::grasp::certify::{BracketScratch, Disturbances, RawSide, bracket, support_with_error};
 use crate::grasp::flatness::{FLAT, Flatness};
 use crate::grasp::quality::{
-    FORCE_CLOSURE_EPSILON, HullBuffers, Method, QualityError, certified_outside,
-    check_wrenches, find_or_make, q1_certified, q1_of_wrenches,
+    FORCE_CLOSURE_EPSILON, HullBuffers, Method, QualityError, certified_outside, check_wrenches,
+    find_or_make, q1_certified, q1_of_wrenches,
 };
 use crate::grasp::snap::{SnappedCones, pyramid_labels, snapped_union};
-use crate::geometry::vector::dot;
-use crate::geometry::{Gjk, largest_norm};
 use crate::hull::{FacetId, Hull, HullError};
 use crate::predicates::Sign;
 use crate::strategy::{OwsInflation, Stats, exact_factor, factor_lower_bound};

@@ -1,11 +1,11 @@
 //! The disturbance set: an object's wrench space from a mesh, or a given task wrench space.
 
+use crate::geometry::SupportIndex;
 use crate::geometry::ellipsoid::{CentredEllipsoid, EllipsoidError};
 use crate::geometry::vector::{cross, normalize, sub};
 use crate::grasp::{Contact, FrictionModel, Grasp, GraspError};
 use crate::hull::{Hull, HullError};
 use crate::mesh::{CentreKind, Mesh};
-use crate::geometry::SupportIndex;
 use serde_json::{Value, json};
 use std::collections::HashSet;
 use std::fmt;

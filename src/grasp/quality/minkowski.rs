@@ -1,11 +1,11 @@
 //! Q∞ over the Minkowski sum ⊕_i W_i, implicitly (support function) or materialised.
 
-use crate::geometry::{GJK_ITERATIONS, GJK_TOUCHING, Gjk, GjkVerdict, Support, SupportFn};
 use super::{BOUNDARY, HullBuffers, Quality, QualityError, degenerate, full_q1, no_hull_stats};
+use crate::geometry::vector::dot;
+use crate::geometry::{GJK_ITERATIONS, GJK_TOUCHING, Gjk, GjkVerdict, Support, SupportFn};
 use crate::grasp::certify::{self, RawSide, UnitBall, support_with_error};
 use crate::grasp::flatness::{FLAT, Flatness};
 use crate::grasp::snap::SnappedCones;
-use crate::geometry::vector::dot;
 use crate::predicates::Sign;
 use crate::strategy::{ClosestToOrigin, PointSource};
 use crate::{FacetId, Hull, HullError};
@@ -470,9 +470,13 @@ pub(super) fn partial(
     }
     seed_points(seeds, |d| sum_support(&source.raw_sets, d));
     let support = |v: &[f64; 6]| sum_support(&source.raw_sets, v);
-    if let GjkVerdict::Separated { distance, inserted } =
-        gjk.run(&mut SupportFn(support), scale, seeds, GJK_ITERATIONS, GJK_TOUCHING)
-    {
+    if let GjkVerdict::Separated { distance, inserted } = gjk.run(
+        &mut SupportFn(support),
+        scale,
+        seeds,
+        GJK_ITERATIONS,
+        GJK_TOUCHING,
+    ) {
         let stats = no_hull_stats(seeds.len() + inserted, started);
         let face = gjk.face().iter().copied();
         return Ok(Quality::new(-distance, face, stats).banded(scale));
@@ -601,11 +605,13 @@ pub(super) fn full(
     let mut seeds = Vec::new();
     seed_points(&mut seeds, |d| sum_support(&raw_sets, d));
     let support = |v: &[f64; 6]| sum_support(&raw_sets, v);
-    if let GjkVerdict::Separated { distance, inserted } =
-        buffers
-            .gjk
-            .run(&mut SupportFn(support), scale, &seeds, GJK_ITERATIONS, GJK_TOUCHING)
-    {
+    if let GjkVerdict::Separated { distance, inserted } = buffers.gjk.run(
+        &mut SupportFn(support),
+        scale,
+        &seeds,
+        GJK_ITERATIONS,
+        GJK_TOUCHING,
+    ) {
         let stats = no_hull_stats(seeds.len() + inserted, started);
         let face = buffers.gjk.face().iter().copied();
         return Ok(Quality::new(-distance, face, stats).banded(scale));
@@ -642,7 +648,13 @@ fn flat_sum(
         let origin = std::iter::once([0.0; 6]);
         return Ok(Quality::new(0.0, origin, no_hull_stats(0, started)));
     }
-    match gjk.run(&mut SupportFn(support), scale, seeds, 16 * GJK_ITERATIONS, 0.0) {
+    match gjk.run(
+        &mut SupportFn(support),
+        scale,
+        seeds,
+        16 * GJK_ITERATIONS,
+        0.0,
+    ) {
         GjkVerdict::Separated { distance, inserted }
         | GjkVerdict::Touching { distance, inserted }
         | GjkVerdict::Stalled { distance, inserted } => Ok(Quality::new(

@@ -1,6 +1,6 @@
-//! A recorded run: the events a strategy and the engine emit, their replay, and JSON.
+//! A recorded run (the model `viz` renders): the events a strategy and the engine emit, and
+//! their replay.
 
-use serde_json::{Value, json};
 use std::collections::BTreeMap;
 
 /// A facet as it was when recorded: its serial (unique over the run), its oriented vertices
@@ -108,12 +108,11 @@ pub struct TraceContext<const D: usize> {
 /// the initial simplex to the stop.
 ///
 /// Recorded by [`Hull::try_with_strategy_traced`](crate::Hull::try_with_strategy_traced);
-/// [`Trace::replay`] rebuilds the hull after any event, [`Trace::to_json`] serialises it, and
-/// [`html`](super::html) / [`svg`](super::svg) draw it.
+/// [`Trace::replay`] rebuilds the hull after any event; the `viz` module serialises and draws it.
 ///
 /// ```
 /// use pqhull::{ClosestToOrigin, Hull};
-/// use pqhull::viz::Event;
+/// use pqhull::hull::Event;
 ///
 /// let points = pqhull::rbox::generate::<2>(&pqhull::rbox::Family::UniformCube, 40, 7);
 /// let (hull, result, trace) = Hull::try_with_strategy_traced(&points, ClosestToOrigin::new())?;
@@ -127,8 +126,6 @@ pub struct TraceContext<const D: usize> {
 /// let mut replayed = replayed;
 /// replayed.sort();
 /// assert_eq!(built, replayed);
-/// let json = trace.to_json(); // what the HTML page embeds
-/// assert_eq!(json["events"].as_array().unwrap().len(), trace.events.len());
 /// # Ok::<(), pqhull::HullError>(())
 /// ```
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -164,78 +161,6 @@ impl<const D: usize> Trace<D> {
             Event::Stop { reason, .. } => Some(reason.as_str()),
             _ => None,
         })
-    }
-
-    /// The trace as one JSON object: `dimension`, `strategy`, `points`, `query` (or null),
-    /// `disturbances`, `events`. Each event is an object whose `kind` is `initial`, `chose`,
-    /// `claimed`, `inserted`, `expanded`, `note` or `stop`, with the variant's fields under the
-    /// same names (facet snapshots as `{serial, vertices, outside}`, keys as `{name, value}`;
-    /// non-finite numbers become null).
-    pub fn to_json(&self) -> Value {
-        json!({
-            "dimension": D,
-            "strategy": self.context.strategy,
-            "points": self.points.iter().map(|p| p.to_vec()).collect::<Vec<_>>(),
-            "query": self.context.query.map(|q| q.to_vec()),
-            "disturbances": self.context.disturbances.iter().map(|d| d.to_vec()).collect::<Vec<_>>(),
-            "events": self.events.iter().map(event_json).collect::<Vec<_>>(),
-        })
-    }
-}
-
-fn snapshot_json<const D: usize>(f: &FacetSnapshot<D>) -> Value {
-    json!({"serial": f.serial, "vertices": f.vertices.to_vec(), "outside": f.outside})
-}
-
-fn event_json<const D: usize>(event: &Event<D>) -> Value {
-    match event {
-        Event::Initial { facets } => json!({
-            "kind": "initial",
-            "facets": facets.iter().map(snapshot_json).collect::<Vec<_>>(),
-        }),
-        Event::Chose {
-            facet,
-            vertices,
-            reason,
-            key,
-        } => json!({
-            "kind": "chose",
-            "facet": facet,
-            "vertices": vertices.to_vec(),
-            "reason": reason,
-            "key": key.as_ref().map(|k| json!({"name": k.name, "value": k.value})),
-        }),
-        Event::Claimed { facet, points } => {
-            json!({"kind": "claimed", "facet": facet, "points": points})
-        }
-        Event::Inserted {
-            facet,
-            point,
-            coordinates,
-        } => json!({
-            "kind": "inserted",
-            "facet": facet,
-            "point": point,
-            "coordinates": coordinates.to_vec(),
-        }),
-        Event::Expanded {
-            facet,
-            point,
-            removed,
-            created,
-        } => json!({
-            "kind": "expanded",
-            "facet": facet,
-            "point": point,
-            "removed": removed,
-            "created": created.iter().map(snapshot_json).collect::<Vec<_>>(),
-        }),
-        Event::Note { text, point } => json!({
-            "kind": "note",
-            "text": text,
-            "point": point.map(|p| p.to_vec()),
-        }),
-        Event::Stop { reason, facet } => json!({"kind": "stop", "reason": reason, "facet": facet}),
     }
 }
 
@@ -335,5 +260,26 @@ impl<'a, const D: usize> Replay<'a, D> {
             .collect();
         v.sort_unstable();
         v
+    }
+}
+
+/// Text for a trace, built only when a run is traced: a `&'static str` (free to pass), or a
+/// closure returning a `String`, called only when tracing (so `format!` costs nothing on an
+/// untraced run). Taken by [`Hull::trace_choice`](crate::Hull::trace_choice),
+/// [`Hull::trace_note`](crate::Hull::trace_note) and [`Hull::trace_stop`](crate::Hull::trace_stop).
+pub trait TraceText {
+    /// The text.
+    fn into_text(self) -> String;
+}
+
+impl TraceText for &'static str {
+    fn into_text(self) -> String {
+        self.to_string()
+    }
+}
+
+impl<F: FnOnce() -> String> TraceText for F {
+    fn into_text(self) -> String {
+        self()
     }
 }

@@ -1,8 +1,6 @@
 //! `FarthestPoint`: plain QuickHull, run to completion.
 
-use super::{Step, Strategy};
-use crate::hull::{FacetId, Hull};
-use crate::viz::TraceContext;
+use super::{FacetId, Hull, Step, Strategy, TraceContext};
 
 /// Plain QuickHull to completion: every facet with a non-empty outside set is expanded with its
 /// farthest point until no outside set remains. The result is the full hull, and the baseline every

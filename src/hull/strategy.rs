@@ -1,0 +1,100 @@
+//! The seam between the engine and the strategies that drive it: [`Strategy`], [`Step`],
+//! [`Stats`] and [`ReusableStrategy`]. The engine owns the trait; strategies live above it.
+
+use super::Hull;
+use super::record::TraceContext;
+use std::time::Duration;
+
+/// Work counters every strategy reports (the seed paper's evaluation measures).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Stats {
+    /// Points added to the hull (initial simplex included).
+    pub points_processed: usize,
+    /// Facets (hyperplanes) created, initial simplex included.
+    pub facets_created: usize,
+    /// Expansions (one point added each).
+    pub expansions: usize,
+    /// Wall time from the start of the build to the end of the strategy.
+    pub elapsed: Duration,
+}
+
+/// Whether the engine should keep expanding.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Step {
+    /// Call [`Strategy::step`] again.
+    Continue,
+    /// Stop; the engine then calls [`Strategy::finish`].
+    Stop,
+}
+
+/// A stateful expansion strategy.
+pub trait Strategy<const D: usize> {
+    /// What the strategy produces.
+    type Output;
+    /// Called once the initial simplex exists.
+    fn start(&mut self, hull: &Hull<D>);
+    /// Expand (through [`Hull::expand`]) or stop.
+    fn step(&mut self, hull: &mut Hull<D>) -> Step;
+    /// Produce the result.
+    fn finish(self, hull: &Hull<D>) -> Self::Output;
+    /// Whether the engine should make every live facet's normal precise before
+    /// [`finish`](Self::finish) ([`Hull::refine_normals`](crate::Hull::refine_normals)). Default `true`; a partial strategy
+    /// that refines the facets it reports (through its `&mut Hull`) can skip the rest.
+    fn refines_all_normals(&self) -> bool {
+        true
+    }
+    /// What a trace of this strategy's run should show beside the hull (its name, query point,
+    /// disturbances); asked once by [`Hull::try_with_strategy_traced`], never on an untraced
+    /// run. Default: nothing (the engine names the strategy after its type).
+    ///
+    /// A strategy explains itself in a trace through [`Hull::trace_choice`],
+    /// [`Hull::trace_note`] and [`Hull::trace_stop`]; the engine records the rest.
+    fn trace_context(&self) -> TraceContext<D> {
+        TraceContext::default()
+    }
+}
+
+/// A strategy whose result can be read from a borrow: then `&mut` of it is a strategy too, which
+/// runs the same way and keeps the strategy's buffers (queues, scratch) for the next run — with
+/// [`Hull::rebuild_with_strategy`](crate::Hull::rebuild_with_strategy), evaluating many point sets
+/// allocates nothing in steady state. `start` must reset everything a run depends on.
+///
+/// ```
+/// use pqhull::{ClosestToOrigin, Hull};
+/// let mut strategy = ClosestToOrigin::new();
+/// let square = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]];
+/// let (mut hull, first) = Hull::try_with_strategy(&square, &mut strategy)?;
+/// let shifted = square.map(|p| [p[0] + 0.5, p[1]]);
+/// let second = hull.rebuild_with_strategy(&shifted, &mut strategy)?;
+/// assert!((first.signed_distance - 1.0).abs() < 1e-15);
+/// assert!((second.signed_distance - 0.5).abs() < 1e-15);
+/// # Ok::<(), pqhull::HullError>(())
+/// ```
+pub trait ReusableStrategy<const D: usize>: Strategy<D> {
+    /// The result of the run that just stopped (what [`Strategy::finish`] returns).
+    fn output(&self, hull: &Hull<D>) -> Self::Output;
+}
+
+impl<const D: usize, T: ReusableStrategy<D>> Strategy<D> for &mut T {
+    type Output = T::Output;
+
+    fn start(&mut self, hull: &Hull<D>) {
+        (**self).start(hull);
+    }
+
+    fn step(&mut self, hull: &mut Hull<D>) -> Step {
+        (**self).step(hull)
+    }
+
+    fn finish(self, hull: &Hull<D>) -> Self::Output {
+        self.output(hull)
+    }
+
+    fn refines_all_normals(&self) -> bool {
+        (**self).refines_all_normals()
+    }
+
+    fn trace_context(&self) -> TraceContext<D> {
+        (**self).trace_context()
+    }
+}
