@@ -25,7 +25,6 @@
 //! # Ok::<(), pqhull::HullError>(())
 //! ```
 #![forbid(unsafe_code)]
-#![deny(missing_docs)]
 
 pub mod geometry;
 pub mod grasp;

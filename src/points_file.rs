@@ -101,6 +101,7 @@ impl PointTable {
 /// Why a points file could not be read. Every variant but [`ParseError::Empty`] carries the
 /// 1-based line number.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum ParseError {
     /// The input has no data rows (only blank lines and comments, or nothing).
     Empty,
@@ -208,6 +209,7 @@ pub fn parse_points(text: &str) -> Result<PointTable, ParseError> {
 
 /// Why a points stream could not be read by [`read_points`].
 #[derive(Debug)]
+#[non_exhaustive]
 pub enum ReadError {
     /// Reading failed, or the input is not UTF-8 (as [`std::io::Read::read_to_string`] reports
     /// it).

@@ -71,6 +71,7 @@ pub struct QhullHull {
 
 /// Why Qhull could not build a hull.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum QhullError {
     /// Qhull needs a dimension of at least 2.
     DimensionTooLow {

@@ -10,6 +10,10 @@
 //! sum's exact degeneracies are not declared to the engine). The bounds below are tripwires: an
 //! allocation per facet or per point would exceed them several times over.
 
+// Counting allocations needs a `GlobalAlloc` impl, which is `unsafe` by definition; the library
+// itself forbids unsafe code.
+#![allow(unsafe_code)]
+
 use pqhull::geometry::Rng;
 use pqhull::grasp::quality::{Evaluator, Method, Metric};
 use pqhull::grasp::{FrictionModel, Grasp};

@@ -260,6 +260,7 @@ impl<const D: usize> CentredEllipsoid<D> {
 
 /// Why [`CentredEllipsoid::try_enclosing`] failed.
 #[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
 pub enum EllipsoidError {
     /// Fewer than `D` points cannot span `D` dimensions.
     TooFewPoints {

@@ -202,3 +202,20 @@ impl GraspBuilder {
         })
     }
 }
+
+/// `f` over `items`, results in input order: on all cores (rayon's current pool) with the
+/// `parallel` feature, else on this thread. The batch evaluators' one switch between the two.
+pub(in crate::grasp) fn map_in_order<T: Sync, R: Send>(
+    items: &[T],
+    f: impl Fn(&T) -> R + Sync + Send,
+) -> Vec<R> {
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        items.par_iter().map(f).collect()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        items.iter().map(f).collect()
+    }
+}

@@ -92,8 +92,8 @@ pub enum Method {
     Partial,
     /// The full hull with this crate's engine, then the answer from all its facets.
     Full,
-    /// The full hull by Qhull (feature `qhull`), for comparison.
-    #[cfg(feature = "qhull")]
+    /// The full hull by Qhull, for comparison: needs the crate's `qhull` feature, else
+    /// [`QualityError::QhullUnavailable`].
     Qhull,
 }
 
@@ -269,6 +269,8 @@ pub enum QualityError {
     },
     /// Qhull failed (feature `qhull`).
     Qhull(String),
+    /// [`Method::Qhull`] in a build without the `qhull` feature.
+    QhullUnavailable,
     /// Q_OWS: the grasp's torque frame is not the object wrench space's (build the grasp with
     /// [`ObjectWrenchSpace::frame`](crate::grasp::ows::ObjectWrenchSpace::frame)).
     TorqueFrameMismatch {
@@ -305,6 +307,9 @@ impl fmt::Display for QualityError {
                 )
             }
             QualityError::Qhull(message) => write!(f, "qhull failed: {message}"),
+            QualityError::QhullUnavailable => f.write_str(
+                "the Qhull method needs pqhull built with the `qhull` feature (which needs libclang)",
+            ),
             QualityError::TorqueFrameMismatch { grasp, space } => write!(
                 f,
                 "the grasp's torque frame (reference {:?}, scale {}) is not the object wrench \
@@ -423,7 +428,6 @@ impl Evaluator {
                 match self.method {
                     Method::Partial => raw.partial(started, &mut self.buffers),
                     Method::Full => raw.full(started, &mut self.buffers),
-                    #[cfg(feature = "qhull")]
                     Method::Qhull => qhull_q1(&self.cones.raw, started)?,
                 }
                 .banded(scale)
@@ -510,7 +514,6 @@ pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Quality, 
     let mut quality = match method {
         Method::Partial => partial_q1(wrenches, None, started, &mut HullBuffers::default()),
         Method::Full => full_q1(wrenches, None, started, &mut HullBuffers::default()),
-        #[cfg(feature = "qhull")]
         Method::Qhull => qhull_q1(wrenches, started)?,
     }
     .banded(largest_norm(wrenches));
@@ -540,7 +543,8 @@ pub(crate) fn q1_certified(
     quality
 }
 
-/// Evaluates every grasp on all cores (rayon's current pool), results in input order.
+/// Evaluates every grasp, results in input order: on all cores (rayon's current pool) with the
+/// `parallel` feature (a default), else one after another.
 ///
 /// Each worker thread keeps one [`Evaluator`] per (metric, method) for the life of the thread,
 /// so its buffers and hull arena are reused across rayon's jobs and across batches: a planner
@@ -552,11 +556,9 @@ pub fn evaluate_batch(
     metric: Metric,
     method: Method,
 ) -> Vec<Result<Quality, QualityError>> {
-    use rayon::prelude::*;
-    grasps
-        .par_iter()
-        .map(|grasp| with_thread_evaluator(metric, method, |e| e.evaluate(grasp)))
-        .collect()
+    super::map_in_order(grasps, |grasp| {
+        with_thread_evaluator(metric, method, |e| e.evaluate(grasp))
+    })
 }
 
 thread_local! {
@@ -847,6 +849,11 @@ fn full_q1(
     }
     let (distance, vertices) = best.expect("the origin sees a facet");
     Quality::new(-distance, vertices.iter().map(|&v| w[v]), stats)
+}
+
+#[cfg(not(feature = "qhull"))]
+fn qhull_q1(_: &[[f64; 6]], _: Instant) -> Result<Quality, QualityError> {
+    Err(QualityError::QhullUnavailable)
 }
 
 #[cfg(feature = "qhull")]

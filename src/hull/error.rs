@@ -4,6 +4,7 @@ use std::fmt;
 
 /// Why a hull could not be built. Every variant says what was wrong and where.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum HullError {
     /// The dimension is outside the supported range 2..=8.
     DimensionOutOfRange {

@@ -11,6 +11,7 @@ use std::path::PathBuf;
 /// name given to a `from_*_reader` function) when the mesh came from one, `None` otherwise. Vertex,
 /// triangle and face indices are 0-based, counted in the order the input gives them.
 #[derive(Debug)]
+#[non_exhaustive]
 pub enum MeshError {
     /// The file could not be opened or read.
     Io {

@@ -51,6 +51,7 @@
 //! ```
 
 mod error;
+#[cfg(feature = "mesh")]
 mod io;
 mod mass;
 mod sample;

@@ -37,6 +37,7 @@ use std::fmt;
 
 /// Why a trace cannot be drawn.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum VizError {
     /// The renderer draws only these dimensions.
     Dimension {

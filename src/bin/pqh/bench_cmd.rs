@@ -203,7 +203,6 @@ fn name(method: Method) -> &'static str {
     match method {
         Method::Partial => "partial",
         Method::Full => "full",
-        #[cfg(feature = "qhull")]
         Method::Qhull => "qhull",
     }
 }

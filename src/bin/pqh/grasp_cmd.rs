@@ -102,9 +102,7 @@ pub fn method(arg: MethodArg) -> Result<Method, CliError> {
     match arg {
         MethodArg::Partial => Ok(Method::Partial),
         MethodArg::Full => Ok(Method::Full),
-        #[cfg(feature = "qhull")]
-        MethodArg::Qhull => Ok(Method::Qhull),
-        #[cfg(not(feature = "qhull"))]
+        MethodArg::Qhull if cfg!(feature = "qhull") => Ok(Method::Qhull),
         MethodArg::Qhull => Err(CliError::Usage(
             "--method qhull needs pqh built with the `qhull` feature".into(),
         )),

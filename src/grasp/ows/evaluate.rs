@@ -453,8 +453,8 @@ fn ellipsoid(wrenches: &[[f64; 6]], space: &ObjectWrenchSpace) -> Result<OwsQual
     })
 }
 
-/// Q_OWS of every grasp against `space` on all cores (rayon's current pool), results in input
-/// order; the space is shared, not copied. Each worker thread keeps one [`OwsEvaluator`] per
+/// Q_OWS of every grasp against `space`, results in input order (on all cores with the
+/// `parallel` feature, a default); the space is shared, not copied. Each worker thread keeps one [`OwsEvaluator`] per
 /// method for the life of the thread, as
 /// [`quality::evaluate_batch`](crate::grasp::quality::evaluate_batch) does.
 pub fn evaluate_batch(
@@ -462,16 +462,12 @@ pub fn evaluate_batch(
     space: &ObjectWrenchSpace,
     method: OwsMethod,
 ) -> Vec<Result<OwsQuality, QualityError>> {
-    use rayon::prelude::*;
-    grasps
-        .par_iter()
-        .map(|grasp| {
-            OWS_EVALUATORS.with_borrow_mut(|kept| {
-                find_or_make(kept, |e| e.method == method, || OwsEvaluator::new(method))
-                    .evaluate(grasp, space)
-            })
+    crate::grasp::map_in_order(grasps, |grasp| {
+        OWS_EVALUATORS.with_borrow_mut(|kept| {
+            find_or_make(kept, |e| e.method == method, || OwsEvaluator::new(method))
+                .evaluate(grasp, space)
         })
-        .collect()
+    })
 }
 
 thread_local! {

@@ -559,8 +559,10 @@ pub(super) fn full(
     let mut raw_sets = Vec::new();
     fill_sets(&mut raw_sets, cones, with_zero_wrench, true);
     let scale = raw_scale(&raw_sets);
-    #[cfg(feature = "qhull")]
     if method == super::Method::Qhull {
+        if !cfg!(feature = "qhull") {
+            return Err(QualityError::QhullUnavailable);
+        }
         materialise(cones, with_zero_wrench, true, out)?;
         return Ok(super::qhull_q1(out, started)?.banded(scale));
     }
