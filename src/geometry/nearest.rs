@@ -599,7 +599,7 @@ pub fn nearest_in_simplex<const D: usize>(
 
 /// [`nearest_in_simplex`], with the face holding the nearest point (a bit mask of `vertices`).
 /// In a power-of-two unit when the coordinates leave [2^−`SQUARE_SAFE`, 2^`SQUARE_SAFE`], as
-/// [`wolfe`].
+/// [`min_norm_point`] does.
 pub fn nearest_face_in_simplex<const D: usize>(
     vertices: &[[f64; D]],
     query: &[f64; D],

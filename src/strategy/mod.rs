@@ -2,8 +2,8 @@
 //!
 //! A [`Strategy`] is a stateful value the engine consults: [`start`](Strategy::start) once the
 //! initial simplex exists, then [`step`](Strategy::step) until it returns [`Step::Stop`] — each
-//! step typically names a facet to [`Hull::expand`] and reads [`Hull::last_removed`] /
-//! [`Hull::last_created`] to update its own queue — and finally [`finish`](Strategy::finish) to
+//! step typically names a facet to [`Hull::expand`](crate::Hull::expand) and reads [`Hull::last_removed`](crate::Hull::last_removed) /
+//! [`Hull::last_created`](crate::Hull::last_created) to update its own queue — and finally [`finish`](Strategy::finish) to
 //! produce its result. The engine never knows a strategy's goal.
 //!
 //! ```
@@ -49,14 +49,34 @@ pub use ows_inflation::{exact_factor, factor_lower_bound};
 
 /// A facet waiting in a strategy's priority queue (`BinaryHeap`, a max-heap): the largest `key`
 /// first, ties to the older facet (smaller serial) so the order is deterministic. `serial` tells
-/// an entry whose facet was since removed (its slot possibly reused) from a live one; `data` is
-/// whatever the strategy keeps with it.
+/// an entry whose facet was since removed (its slot possibly reused) from a live one
+/// ([`Hull::is_current`](crate::Hull::is_current)); `data` is whatever the strategy keeps with it. The built-in strategies
+/// queue their facets with it; `examples/custom_strategy.rs` shows one written outside the crate.
+///
+/// ```
+/// use pqhull::strategy::Queued;
+/// use pqhull::Hull;
+/// use std::collections::BinaryHeap;
+/// let hull = Hull::try_new(&[[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]])?;
+/// let mut queue: BinaryHeap<_> = hull
+///     .facets()
+///     .map(|(id, f)| Queued { key: f.offset(), id, serial: f.serial(), data: () })
+///     .collect();
+/// let top = queue.pop().unwrap();
+/// assert!(hull.is_current(top.id, top.serial));
+/// assert_eq!(top.key, hull.facets().map(|(_, f)| f.offset()).fold(f64::MIN, f64::max));
+/// # Ok::<(), pqhull::HullError>(())
+/// ```
 #[derive(Clone, Copy, Debug)]
-pub(in crate::strategy) struct Queued<T> {
-    pub(in crate::strategy) key: f64,
-    pub(in crate::strategy) id: crate::hull::FacetId,
-    pub(in crate::strategy) serial: u64,
-    pub(in crate::strategy) data: T,
+pub struct Queued<T> {
+    /// The priority: the largest first (compared with `total_cmp`).
+    pub key: f64,
+    /// The facet.
+    pub id: crate::hull::FacetId,
+    /// The facet's [`serial`](crate::Facet::serial) when queued.
+    pub serial: u64,
+    /// What the strategy keeps with the entry.
+    pub data: T,
 }
 
 impl<T> PartialEq for Queued<T> {

@@ -1,7 +1,7 @@
 //! Traces as self-contained HTML pages: a step slider per run, mouse rotation in 3-D, runs side
 //! by side.
 //!
-//! The page embeds each [`Trace`]'s JSON ([`Trace::to_json`]) and the viewer of
+//! The page embeds each [`Trace`]'s JSON ([`trace_json`](super::trace_json)) and the viewer of
 //! [`scene`](super::scene), which replays the events in the browser: at step `k` it shows the
 //! hull after event `k` — the chosen facet in orange, the facets an expansion created in green
 //! (the removed ones dashed red), the deciding facet of the stop in red, points in some outside
