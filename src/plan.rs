@@ -9,18 +9,19 @@
 //! ```
 //! use pqhull::grasp::FrictionModel;
 //! use pqhull::mesh::Mesh;
-//! use pqhull::plan::{plan, BestComparison, PlanConfig, PlanMethod, PlanMetric};
+//! use pqhull::grasp::quality::{Method, Metric};
+//! use pqhull::plan::{plan, BestComparison, PlanConfig};
 //!
 //! let object = Mesh::uv_sphere(0.3, 8, 16)?;
 //! let config = PlanConfig {
 //!     contacts: 4,
 //!     samples: 50,
 //!     friction: FrictionModel::try_new(0.5, 8)?,
-//!     metric: PlanMetric::Q1,
+//!     metric: Metric::Q1,
 //!     seed: 7,
 //! };
-//! let partial = plan(&object, None, &config, PlanMethod::Partial)?;
-//! let full = plan(&object, None, &config, PlanMethod::Full)?;
+//! let partial = plan(&object, None, &config, Method::Partial)?;
+//! let full = plan(&object, None, &config, Method::Full)?;
 //! // Same samples, same metric values: the same best grasp.
 //! assert_eq!(partial.compare_best(&full), BestComparison::Same);
 //! let (a, b) = (partial.best.unwrap(), full.best.unwrap());
@@ -30,7 +31,7 @@
 //! ```
 
 use crate::geometry::Rng;
-use crate::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod};
+use crate::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
 use crate::grasp::quality::{Evaluator, Method, Metric, QualityError};
 use crate::grasp::{Contact, FrictionModel, Grasp, GraspError, MAX_CONTACTS};
 use crate::mesh::{Mesh, SurfaceSampler};
@@ -45,26 +46,6 @@ use std::time::{Duration, Instant};
 /// certainly a typing error, and is refused before any work starts.
 pub const MAX_SAMPLES: usize = 1_000_000;
 
-/// The metric a plan optimises.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PlanMetric {
-    /// Ferrari–Canny Q1.
-    Q1,
-    /// Q∞ (Minkowski sum, without the zero wrench).
-    QInf,
-    /// The object wrench space metric (needs the object's [`ObjectWrenchSpace`]).
-    Ows,
-}
-
-/// How each sample's quality is computed.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum PlanMethod {
-    /// Partial hulls (`ClosestToOrigin`, `OwsInflation`).
-    Partial,
-    /// Full hulls (`FarthestPoint`; for Q_OWS, the brute-force baseline).
-    Full,
-}
-
 /// What to plan.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PlanConfig {
@@ -75,7 +56,7 @@ pub struct PlanConfig {
     /// Friction model of every contact.
     pub friction: FrictionModel,
     /// The metric to maximise.
-    pub metric: PlanMetric,
+    pub metric: Metric,
     /// Seed of the contact sampling: the same seed gives the same grasps for every method.
     pub seed: u64,
 }
@@ -182,7 +163,7 @@ pub enum PlanError {
         /// The limit, [`MAX_SAMPLES`].
         max: usize,
     },
-    /// `PlanMetric::Ows` without an object wrench space.
+    /// `Metric::Ows` without an object wrench space.
     NoWrenchSpace,
     /// A sampled contact or grasp was invalid (cannot happen for a valid mesh; reported, not
     /// hidden).
@@ -258,7 +239,7 @@ fn torque_frame(mesh: &Mesh, space: Option<&ObjectWrenchSpace>) -> ([f64; 3], f6
 }
 
 /// Samples `config.samples` grasps on `mesh` and keeps the best by `config.metric`, computed by
-/// `method`. `space` is the object's wrench space, required for [`PlanMetric::Ows`] (and, when
+/// `method`. `space` is the object's wrench space, required for [`Metric::Ows`] (and, when
 /// given, it fixes the torque frame).
 ///
 /// # Errors
@@ -270,7 +251,7 @@ pub fn plan(
     mesh: &Mesh,
     space: Option<&ObjectWrenchSpace>,
     config: &PlanConfig,
-    method: PlanMethod,
+    method: Method,
 ) -> Result<PlanReport, PlanError> {
     plan_with_progress(mesh, space, config, method, |_| {})
 }
@@ -283,7 +264,7 @@ pub fn plan_with_progress(
     mesh: &Mesh,
     space: Option<&ObjectWrenchSpace>,
     config: &PlanConfig,
-    method: PlanMethod,
+    method: Method,
     mut progress: impl FnMut(usize),
 ) -> Result<PlanReport, PlanError> {
     if config.contacts == 0 || config.samples == 0 {
@@ -302,26 +283,18 @@ pub fn plan_with_progress(
         }));
     }
     let started = Instant::now();
-    let mut scorer = match (config.metric, method) {
-        (PlanMetric::Ows, m) => Scorer::Ows(
-            Box::new(OwsEvaluator::new(match m {
-                PlanMethod::Partial => OwsMethod::Partial,
-                PlanMethod::Full => OwsMethod::BruteForce,
-            })),
+    if !method.supports(config.metric) {
+        return Err(PlanError::Quality(QualityError::UnsupportedMethod {
+            method,
+            metric: config.metric,
+        }));
+    }
+    let mut scorer = match config.metric {
+        Metric::Ows => Scorer::Ows(
+            Box::new(OwsEvaluator::new(method)),
             space.ok_or(PlanError::NoWrenchSpace)?,
         ),
-        (metric, m) => Scorer::Gws(Box::new(Evaluator::new(
-            match metric {
-                PlanMetric::QInf => Metric::QInf {
-                    with_zero_wrench: false,
-                },
-                _ => Metric::Q1,
-            },
-            match m {
-                PlanMethod::Partial => Method::Partial,
-                PlanMethod::Full => Method::Full,
-            },
-        ))),
+        metric => Scorer::Gws(Box::new(Evaluator::new(metric, method))),
     };
     let (reference, scale) = torque_frame(mesh, space);
     let sampler = SurfaceSampler::new(mesh);
@@ -395,11 +368,11 @@ mod tests {
             contacts: 4,
             samples: MAX_SAMPLES + 1,
             friction: FrictionModel::try_new(0.5, 4).unwrap(),
-            metric: PlanMetric::Q1,
+            metric: Metric::Q1,
             seed: 1,
         };
         let mut calls = 0;
-        let got = plan_with_progress(&object, None, &config, PlanMethod::Partial, |_| calls += 1);
+        let got = plan_with_progress(&object, None, &config, Method::Partial, |_| calls += 1);
         assert_eq!(
             got,
             Err(PlanError::TooManySamples {
@@ -413,7 +386,7 @@ mod tests {
             samples: 1,
             ..config
         };
-        let err = plan(&object, None, &many, PlanMethod::Partial).unwrap_err();
+        let err = plan(&object, None, &many, Method::Partial).unwrap_err();
         assert!(
             matches!(
                 err,

@@ -181,7 +181,7 @@ fn hull_rebuilds_allocate_nothing_in_steady_state() {
 /// `OwsInflation` between grasps, so the force-closure ones allocate only exact caches).
 #[test]
 fn ows_partial_allocates_nothing_in_steady_state_but_exact_caches() {
-    use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod};
+    use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
     use pqhull::mesh::{Mesh, SurfaceSampler};
     let mesh = Mesh::uv_sphere(0.3, 8, 12).unwrap();
     let friction = FrictionModel::try_new(0.5, 8).unwrap();
@@ -194,7 +194,7 @@ fn ows_partial_allocates_nothing_in_steady_state_but_exact_caches() {
             space.frame(&fingers).unwrap()
         })
         .collect();
-    let mut evaluator = OwsEvaluator::new(OwsMethod::Partial);
+    let mut evaluator = OwsEvaluator::new(Method::Partial);
     check_second_pass("OWS on a sphere", &set, 100, |g| {
         let q = evaluator.evaluate(g, &space).unwrap();
         kind(q.force_closure, q.stats.facets_created)

@@ -1,10 +1,8 @@
 //! The object wrench space metric: known answers, partial = brute force, the ellipsoid bound.
 
 use pqhull::geometry::Rng;
-use pqhull::grasp::ows::{
-    ObjectWrenchSpace, OwsEvaluator, OwsMethod, evaluate_batch, ows_of_wrenches,
-};
-use pqhull::grasp::quality::QualityError;
+use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, evaluate_ows_batch, ows_of_wrenches};
+use pqhull::grasp::quality::{Method, QualityError};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
 use pqhull::mesh::{Mesh, SurfaceSampler};
 use std::path::PathBuf;
@@ -59,11 +57,7 @@ fn cube_grasped_on_four_faces_matches_the_hand_derivation() {
         let grasp = four_face_grasp(mu, k);
         // Exactly these wrenches (not snapped): agreement to rounding.
         let wrenches = grasp.wrenches();
-        for method in [
-            OwsMethod::Partial,
-            OwsMethod::PartialRays,
-            OwsMethod::BruteForce,
-        ] {
+        for method in [Method::Partial, Method::PartialRays, Method::Full] {
             let q = ows_of_wrenches(&wrenches, &space, method).unwrap();
             assert!(q.force_closure, "k = {k}, {method:?}");
             let value = q.value.unwrap();
@@ -74,7 +68,7 @@ fn cube_grasped_on_four_faces_matches_the_hand_derivation() {
             assert_eq!(q.deciding_disturbance, Some(2), "k = {k}, {method:?}");
         }
         // Through the evaluator (snapped wrenches: relative change below 6e−8).
-        let q = OwsEvaluator::new(OwsMethod::Partial)
+        let q = OwsEvaluator::new(Method::Partial)
             .evaluate(&grasp, &space)
             .unwrap();
         assert!((q.value.unwrap() - mu / 2.0).abs() < 1e-6);
@@ -82,7 +76,7 @@ fn cube_grasped_on_four_faces_matches_the_hand_derivation() {
         for (d, expected) in [(0, 1.0), (1, mu), (2, mu / 2.0)] {
             let single =
                 ObjectWrenchSpace::from_disturbances(vec![space.disturbances()[d]]).unwrap();
-            let q = ows_of_wrenches(&wrenches, &single, OwsMethod::Partial).unwrap();
+            let q = ows_of_wrenches(&wrenches, &single, Method::Partial).unwrap();
             assert!(
                 (q.value.unwrap() - expected).abs() < 1e-12,
                 "d = {d}, k = {k}"
@@ -123,11 +117,7 @@ fn gauges_of_cube_and_cross_polytope() {
             .iter()
             .map(|d| d.iter().map(|x| x.abs()).sum::<f64>())
             .fold(0.0, f64::max);
-        for method in [
-            OwsMethod::Partial,
-            OwsMethod::PartialRays,
-            OwsMethod::BruteForce,
-        ] {
+        for method in [Method::Partial, Method::PartialRays, Method::Full] {
             let q = ows_of_wrenches(&cube, &space, method).unwrap();
             let expected = a / max_inf;
             assert!(
@@ -142,7 +132,7 @@ fn gauges_of_cube_and_cross_polytope() {
             );
         }
         // The ellipsoid's value is a lower bound (the ellipsoid contains every disturbance).
-        let approx = ows_of_wrenches(&cube, &space, OwsMethod::Ellipsoid);
+        let approx = ows_of_wrenches(&cube, &space, Method::Ellipsoid);
         if count >= 6
             && let Ok(q) = approx
         {
@@ -162,10 +152,10 @@ fn partial_equals_brute_force(mesh: &Mesh, grasps: usize, seed: u64) -> usize {
         ObjectWrenchSpace::from_mesh(mesh, FrictionModel::try_new(0.4, 4).unwrap()).unwrap();
     let mut rng = Rng::new(seed);
     let sampler = SurfaceSampler::new(mesh);
-    let mut partial = OwsEvaluator::new(OwsMethod::Partial);
-    let mut brute = OwsEvaluator::new(OwsMethod::BruteForce);
-    let mut rays = OwsEvaluator::new(OwsMethod::PartialRays);
-    let mut ellipsoid = OwsEvaluator::new(OwsMethod::Ellipsoid);
+    let mut partial = OwsEvaluator::new(Method::Partial);
+    let mut brute = OwsEvaluator::new(Method::Full);
+    let mut rays = OwsEvaluator::new(Method::PartialRays);
+    let mut ellipsoid = OwsEvaluator::new(Method::Ellipsoid);
     let mut closure = 0;
     let mut by_gjk = 0;
     let (mut partial_facets, mut full_facets) = (0, 0);
@@ -267,11 +257,7 @@ fn a_flat_sheet_is_never_force_closure() {
     let space = ObjectWrenchSpace::from_mesh(&mesh, friction).unwrap();
     let mut rng = Rng::new(9);
     let sampler = SurfaceSampler::new(&mesh);
-    for method in [
-        OwsMethod::Partial,
-        OwsMethod::PartialRays,
-        OwsMethod::BruteForce,
-    ] {
+    for method in [Method::Partial, Method::PartialRays, Method::Full] {
         let mut evaluator = OwsEvaluator::new(method);
         for _ in 0..50 {
             let fingers = Grasp::random_on_surface(&mut rng, &sampler, 4, friction).unwrap();
@@ -293,13 +279,13 @@ fn torque_frame_must_match_the_space() {
         .torque_reference([0.1, 0.0, 0.0])
         .build()
         .unwrap();
-    let error = OwsEvaluator::new(OwsMethod::Partial)
+    let error = OwsEvaluator::new(Method::Partial)
         .evaluate(&moved, &space)
         .unwrap_err();
     assert!(matches!(error, QualityError::TorqueFrameMismatch { .. }));
     assert!(error.to_string().contains("torque frame"));
     assert!(
-        OwsEvaluator::new(OwsMethod::Partial)
+        OwsEvaluator::new(Method::Partial)
             .evaluate(&space.frame(&moved).unwrap(), &space)
             .is_ok()
     );
@@ -317,11 +303,7 @@ fn not_force_closure_has_no_value() {
     )
     .unwrap();
     let space = ObjectWrenchSpace::from_disturbances(vec![[1.0, 0.0, 0.0, 0.0, 0.0, 0.0]]).unwrap();
-    for method in [
-        OwsMethod::Partial,
-        OwsMethod::PartialRays,
-        OwsMethod::BruteForce,
-    ] {
+    for method in [Method::Partial, Method::PartialRays, Method::Full] {
         let q = OwsEvaluator::new(method).evaluate(&pinch, &space).unwrap();
         assert!(!q.force_closure);
         assert_eq!(q.value, None);
@@ -367,7 +349,7 @@ fn hull_reduction_keeps_the_value() {
     assert!(kept <= space.len(), "{kept} of {}", extra.len());
     let full = ObjectWrenchSpace::from_disturbances(extra).unwrap();
     let mut rng = Rng::new(5);
-    let mut evaluator = OwsEvaluator::new(OwsMethod::Partial);
+    let mut evaluator = OwsEvaluator::new(Method::Partial);
     for _ in 0..50 {
         let grasp = space
             .frame(&Grasp::random_on_box(
@@ -400,8 +382,8 @@ fn batch_results_are_in_input_order_and_match_one_by_one() {
             space.frame(&fingers).unwrap()
         })
         .collect();
-    let batch = evaluate_batch(&grasps, &space, OwsMethod::Partial);
-    let mut one = OwsEvaluator::new(OwsMethod::Partial);
+    let batch = evaluate_ows_batch(&grasps, &space, Method::Partial);
+    let mut one = OwsEvaluator::new(Method::Partial);
     for (g, result) in grasps.iter().zip(&batch) {
         let expected = one.evaluate(g, &space).unwrap();
         let got = result.as_ref().unwrap();
@@ -409,4 +391,46 @@ fn batch_results_are_in_input_order_and_match_one_by_one() {
         assert_eq!(got.force_closure, expected.force_closure);
     }
     assert!(batch.iter().any(|q| q.as_ref().unwrap().force_closure));
+}
+
+#[test]
+fn one_method_enum_refuses_what_a_metric_does_not_take() {
+    use pqhull::grasp::quality::{Evaluator, Metric};
+    let pinch = Grasp::try_new(
+        vec![
+            Contact::try_new([-1.0, 0.0, 0.0], [1.0, 0.0, 0.0], None).unwrap(),
+            Contact::try_new([1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], None).unwrap(),
+        ],
+        FrictionModel::try_new(0.5, 8).unwrap(),
+    )
+    .unwrap();
+    let space = ObjectWrenchSpace::from_disturbances(vec![[1.0, 0.0, 0.0, 0.0, 0.0, 0.0]]).unwrap();
+    let refused = OwsEvaluator::new(Method::Qhull).evaluate(&pinch, &space);
+    assert_eq!(
+        refused.unwrap_err(),
+        QualityError::UnsupportedMethod {
+            method: Method::Qhull,
+            metric: Metric::Ows
+        }
+    );
+    for method in [Method::PartialRays, Method::Ellipsoid] {
+        let e = Evaluator::new(Metric::Q1, method)
+            .evaluate(&pinch)
+            .unwrap_err();
+        assert!(e.to_string().contains("only ows"), "{e}");
+        assert!(!method.supports(Metric::Q1) && method.supports(Metric::Ows));
+    }
+    let e = Evaluator::new(Metric::Ows, Method::Partial)
+        .evaluate(&pinch)
+        .unwrap_err();
+    assert_eq!(e, QualityError::OwsNeedsWrenchSpace);
+    for metric in [
+        Metric::Q1,
+        Metric::QInf {
+            with_zero_wrench: true,
+        },
+        Metric::Ows,
+    ] {
+        assert!(Method::Partial.supports(metric) && Method::Full.supports(metric));
+    }
 }

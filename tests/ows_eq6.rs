@@ -4,7 +4,7 @@
 #![cfg(feature = "qhull")]
 
 use pqhull::geometry::Rng;
-use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod, ows_of_wrenches};
+use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, ows_of_wrenches};
 use pqhull::grasp::quality::{Method, q1_of_wrenches};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
 use pqhull::mesh::Mesh;
@@ -193,8 +193,8 @@ fn cube_q_ows_equals_a_brute_force_from_the_formulas() {
     let friction = FrictionModel::try_new(mu, k).unwrap();
     let space = ObjectWrenchSpace::from_mesh(&cube, friction).unwrap();
     let (c, rho) = space.torque_frame().unwrap();
-    let mut partial = OwsEvaluator::new(OwsMethod::Partial);
-    let mut brute = OwsEvaluator::new(OwsMethod::BruteForce);
+    let mut partial = OwsEvaluator::new(Method::Partial);
+    let mut brute = OwsEvaluator::new(Method::Full);
     let mut rng = Rng::new(6);
     let (mut compared, mut not_closure) = (0, 0);
     let mut worst = 0.0f64;
@@ -236,7 +236,7 @@ fn cube_q_ows_equals_a_brute_force_from_the_formulas() {
             );
         }
         // On exactly these wrenches the metric is exact, whatever the evaluator's snapping.
-        let raw = ows_of_wrenches(&wrenches, &space, OwsMethod::Partial).unwrap();
+        let raw = ows_of_wrenches(&wrenches, &space, Method::Partial).unwrap();
         let value = raw.value.unwrap();
         assert!(
             (value - expected).abs() <= 1e-12 * expected,
@@ -273,11 +273,7 @@ fn ellipsoid_method_keeps_the_grasps_own_verdict() {
     let pinch = space.frame(&pinch).unwrap();
     let own = q1_of_wrenches(&pinch.wrenches(), Method::Partial).unwrap();
     assert!(!own.force_closure);
-    for method in [
-        OwsMethod::Partial,
-        OwsMethod::BruteForce,
-        OwsMethod::Ellipsoid,
-    ] {
+    for method in [Method::Partial, Method::Full, Method::Ellipsoid] {
         let q = OwsEvaluator::new(method).evaluate(&pinch, &space).unwrap();
         assert!(!q.force_closure, "{method:?}");
         assert_eq!(q.value, None, "{method:?}");
@@ -291,10 +287,10 @@ fn ellipsoid_method_keeps_the_grasps_own_verdict() {
         let grasp = space
             .frame(&Grasp::random_on_box(&mut rng, [H; 3], 4, friction))
             .unwrap();
-        let exact = OwsEvaluator::new(OwsMethod::Partial)
+        let exact = OwsEvaluator::new(Method::Partial)
             .evaluate(&grasp, &space)
             .unwrap();
-        let approx = OwsEvaluator::new(OwsMethod::Ellipsoid)
+        let approx = OwsEvaluator::new(Method::Ellipsoid)
             .evaluate(&grasp, &space)
             .unwrap();
         assert_eq!(approx.force_closure, exact.force_closure);

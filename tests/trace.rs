@@ -175,7 +175,7 @@ fn every_strategy<const D: usize>(points: &[[f64; D]], seed: u64) {
     assert_eq!(last_mark, Some(outside.nearest_point));
 
     let disturbances = directions::<D>(3 * D, seed);
-    let (plain, ows, trace) = traced_run(points, OwsInflation::new(&disturbances));
+    let (plain, ows, trace) = traced_run(points, OwsInflation::with_rays(&disturbances));
     same_ows(&plain, &ows);
     assert!(ows.is_force_closure());
     assert!(
@@ -187,7 +187,7 @@ fn every_strategy<const D: usize>(points: &[[f64; D]], seed: u64) {
     assert_eq!(trace.context.disturbances, disturbances);
 
     let index = pqhull::geometry::SupportIndex::new(&disturbances);
-    let (_, indexed, trace) = traced_run(points, OwsInflation::with_index(&index));
+    let (_, indexed, trace) = traced_run(points, OwsInflation::new(&index));
     assert_eq!(indexed.value, ows.value);
     assert_eq!(
         trace.context.disturbances, disturbances,
@@ -198,7 +198,7 @@ fn every_strategy<const D: usize>(points: &[[f64; D]], seed: u64) {
         .iter()
         .map(|p| std::array::from_fn(|i| if i == 0 { p[i] + 3.0 * extent } else { p[i] }))
         .collect();
-    let (plain, not_closure, trace) = traced_run(&moved, OwsInflation::new(&disturbances));
+    let (plain, not_closure, trace) = traced_run(&moved, OwsInflation::with_rays(&disturbances));
     same_ows(&plain, &not_closure);
     assert!(!not_closure.is_force_closure());
     assert!(trace.stop_reason().unwrap().contains("not force closure"));

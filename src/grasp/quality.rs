@@ -71,30 +71,87 @@ use std::time::Instant;
 mod minkowski;
 pub use minkowski::MINKOWSKI_MATERIALISE_LIMIT;
 
-/// Which metric to evaluate.
+/// A grasp-quality metric: the one vocabulary of the evaluators, the planner and `pqh`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[non_exhaustive]
 pub enum Metric {
-    /// Ferrari–Canny Q1 over the union of the contact wrenches.
+    /// Ferrari–Canny Q1 over the union of the contact wrenches ([`Evaluator`]).
     #[default]
     Q1,
-    /// Ferrari–Canny Q∞ over the Minkowski sum of the contacts' wrench sets.
+    /// Ferrari–Canny Q∞ over the Minkowski sum of the contacts' wrench sets ([`Evaluator`]).
     QInf {
         /// GraspIt!'s variant: the zero wrench joins every contact's set.
         with_zero_wrench: bool,
     },
+    /// The object-wrench-space metric Q_OWS: needs the object's
+    /// [`ObjectWrenchSpace`](crate::grasp::ows::ObjectWrenchSpace), so it is evaluated by
+    /// [`OwsEvaluator`](crate::grasp::ows::OwsEvaluator), not by [`Evaluator`].
+    Ows,
 }
 
-/// How to evaluate it.
+impl Metric {
+    /// The name `pqh` uses for it (`q1`, `qinf`, `qinf0` with the zero wrench, `ows`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Metric::Q1 => "q1",
+            Metric::QInf {
+                with_zero_wrench: false,
+            } => "qinf",
+            Metric::QInf {
+                with_zero_wrench: true,
+            } => "qinf0",
+            Metric::Ows => "ows",
+        }
+    }
+}
+
+/// How a metric is computed. Every metric takes [`Partial`](Method::Partial) (the default) and
+/// [`Full`](Method::Full); the others belong to some metrics only, and the rest give
+/// [`QualityError::UnsupportedMethod`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[non_exhaustive]
 pub enum Method {
-    /// The partial hull (`ClosestToOrigin`, PQHGWS): stops as soon as the answer is certain.
+    /// The partial hull (Q1, Q∞: `ClosestToOrigin`, PQHGWS; Q_OWS: `OwsInflation`, PQHOWS):
+    /// stops as soon as the answer is certain. Exact.
     #[default]
     Partial,
-    /// The full hull with this crate's engine, then the answer from all its facets.
+    /// The full hull with this crate's engine, then the answer from all its facets (for Q_OWS,
+    /// every disturbance against every facet: the seed paper's brute force). Exact, the reference.
     Full,
-    /// The full hull by Qhull, for comparison: needs the crate's `qhull` feature, else
-    /// [`QualityError::QhullUnavailable`].
+    /// Q1 and Q∞ only: the full hull by Qhull, for comparison. Needs the crate's `qhull` feature,
+    /// else [`QualityError::QhullUnavailable`].
     Qhull,
+    /// Q_OWS only: the partial hull with every disturbance assigned to the facet its ray leaves
+    /// through, as the seed paper's Algorithm 2 is published
+    /// ([`OwsInflation::with_rays`](crate::strategy::OwsInflation::with_rays)). Exact, slower
+    /// on large disturbance sets; kept to compare with.
+    PartialRays,
+    /// Q_OWS only: Borst et al.'s approximation. The wrench space is mapped so that the
+    /// disturbances' enclosing ellipsoid becomes the unit ball, then Q1 of the mapped grasp is
+    /// taken. Never larger than the exact value, and not exact.
+    Ellipsoid,
+}
+
+impl Method {
+    /// The name `pqh` uses for it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Partial => "partial",
+            Method::Full => "full",
+            Method::Qhull => "qhull",
+            Method::PartialRays => "partial-rays",
+            Method::Ellipsoid => "ellipsoid",
+        }
+    }
+
+    /// Whether `metric` can be computed this way.
+    pub fn supports(self, metric: Metric) -> bool {
+        match self {
+            Method::Partial | Method::Full => true,
+            Method::Qhull => metric != Metric::Ows,
+            Method::PartialRays | Method::Ellipsoid => metric == Metric::Ows,
+        }
+    }
 }
 
 /// Up to seven wrenches: a facet's six, or the points spanning a nearest face.
@@ -271,6 +328,16 @@ pub enum QualityError {
     Qhull(String),
     /// [`Method::Qhull`] in a build without the `qhull` feature.
     QhullUnavailable,
+    /// [`Metric::Ows`] given to [`Evaluator`]: Q_OWS needs the object's wrench space, so it is
+    /// [`OwsEvaluator`](crate::grasp::ows::OwsEvaluator)'s.
+    OwsNeedsWrenchSpace,
+    /// The method does not compute this metric (see [`Method`]).
+    UnsupportedMethod {
+        /// The method asked for.
+        method: Method,
+        /// The metric asked for.
+        metric: Metric,
+    },
     /// Q_OWS: the grasp's torque frame is not the object wrench space's (build the grasp with
     /// [`ObjectWrenchSpace::frame`](crate::grasp::ows::ObjectWrenchSpace::frame)).
     TorqueFrameMismatch {
@@ -307,6 +374,16 @@ impl fmt::Display for QualityError {
                 )
             }
             QualityError::Qhull(message) => write!(f, "qhull failed: {message}"),
+            QualityError::UnsupportedMethod { method, metric } => write!(
+                f,
+                "the {} method does not compute {} (partial and full compute every metric; \
+                 qhull only q1 and qinf; partial-rays and ellipsoid only ows)",
+                method.name(),
+                metric.name()
+            ),
+            QualityError::OwsNeedsWrenchSpace => f.write_str(
+                "Q_OWS needs the object's wrench space: evaluate it with an OwsEvaluator",
+            ),
             QualityError::QhullUnavailable => f.write_str(
                 "the Qhull method needs pqhull built with the `qhull` feature (which needs libclang)",
             ),
@@ -404,6 +481,12 @@ impl Evaluator {
     /// [`QualityError::Qhull`] when Qhull fails.
     pub fn evaluate(&mut self, grasp: &Grasp) -> Result<Quality, QualityError> {
         let started = Instant::now();
+        if self.metric == Metric::Ows {
+            return Err(QualityError::OwsNeedsWrenchSpace);
+        }
+        if !self.method.supports(self.metric) {
+            unsupported(self.method, self.metric)?;
+        }
         self.cones.fill(grasp);
         // The caller's wrenches first: a finite one that is too large is named as such (its
         // snapped copy's distance to it may overflow, which would read as "not finite").
@@ -429,6 +512,9 @@ impl Evaluator {
                     Method::Partial => raw.partial(started, &mut self.buffers),
                     Method::Full => raw.full(started, &mut self.buffers),
                     Method::Qhull => qhull_q1(&self.cones.raw, started)?,
+                    Method::PartialRays | Method::Ellipsoid => {
+                        unsupported(self.method, self.metric)?
+                    }
                 }
                 .banded(scale)
             }
@@ -445,6 +531,7 @@ impl Evaluator {
                     started,
                 )?,
             },
+            Metric::Ows => return Err(QualityError::OwsNeedsWrenchSpace),
         };
         quality = quality.in_caller_units(unit);
         quality.stats.elapsed = started.elapsed();
@@ -515,6 +602,7 @@ pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Quality, 
         Method::Partial => partial_q1(wrenches, None, started, &mut HullBuffers::default()),
         Method::Full => full_q1(wrenches, None, started, &mut HullBuffers::default()),
         Method::Qhull => qhull_q1(wrenches, started)?,
+        Method::PartialRays | Method::Ellipsoid => unsupported(method, Metric::Q1)?,
     }
     .banded(largest_norm(wrenches));
     quality.stats.elapsed = started.elapsed();
@@ -849,6 +937,11 @@ fn full_q1(
     }
     let (distance, vertices) = best.expect("the origin sees a facet");
     Quality::new(-distance, vertices.iter().map(|&v| w[v]), stats)
+}
+
+/// [`QualityError::UnsupportedMethod`], typed as any result.
+fn unsupported<T>(method: Method, metric: Metric) -> Result<T, QualityError> {
+    Err(QualityError::UnsupportedMethod { method, metric })
 }
 
 #[cfg(not(feature = "qhull"))]

@@ -23,7 +23,7 @@ impl<const D: usize> Hull<D> {
     /// let square = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0], [0.3, 0.2]];
     /// let disturbances = [[1.0, 0.0], [1.0, 1.0]];
     /// let (_, result, trace) =
-    ///     Hull::try_with_strategy_traced(&square, OwsInflation::new(&disturbances))?;
+    ///     Hull::try_with_strategy_traced(&square, OwsInflation::with_rays(&disturbances))?;
     /// assert!((result.value.unwrap() - 1.0).abs() < 1e-12);
     /// assert_eq!(trace.context.strategy, "OwsInflation");
     /// assert_eq!(trace.context.disturbances, disturbances);

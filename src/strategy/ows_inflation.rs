@@ -43,10 +43,10 @@ use std::collections::BinaryHeap;
 ///
 /// # Two bookkeepings, one answer
 ///
-/// [`OwsInflation::new`] is Algorithm 2 as published: every disturbance is assigned to a facet,
+/// [`OwsInflation::with_rays`] is Algorithm 2 as published: every disturbance is assigned to a facet,
 /// which costs a pass over all of them against the first hull's facets and a reassignment at each
 /// expansion — O(disturbances × facets), dominant for an object wrench space of tens of thousands
-/// of disturbances. [`OwsInflation::with_index`] keys each facet instead by the smallest factor of
+/// of disturbances. [`OwsInflation::new`] keys each facet instead by the smallest factor of
 /// *any* disturbance against its plane, `offset / h(−n)` with `h` the support function of the
 /// disturbances, answered by a [`SupportIndex`] in far fewer than one dot product per
 /// disturbance (lazily: a facet waits under a lower bound of its key, from the top of the tree,
@@ -63,15 +63,15 @@ use std::collections::BinaryHeap;
 /// // The square [−1, 1]² resists the disturbances (1, 0) and (1, 1) up to r = 1.
 /// let square = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0], [0.3, 0.2]];
 /// let disturbances = [[1.0, 0.0], [1.0, 1.0]];
-/// let (_, result) = Hull::try_with_strategy(&square, OwsInflation::new(&disturbances))?;
+/// let (_, result) = Hull::try_with_strategy(&square, OwsInflation::with_rays(&disturbances))?;
 /// assert!((result.value.unwrap() - 1.0).abs() < 1e-12);
 /// // Doubling every disturbance halves the answer.
 /// let doubled = [[2.0, 0.0], [2.0, 2.0]];
-/// let (_, result) = Hull::try_with_strategy(&square, OwsInflation::new(&doubled))?;
+/// let (_, result) = Hull::try_with_strategy(&square, OwsInflation::with_rays(&doubled))?;
 /// assert!((result.value.unwrap() - 0.5).abs() < 1e-12);
 /// // A triangle with the origin on its boundary is not force closure: no value.
 /// let triangle = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]];
-/// let (_, result) = Hull::try_with_strategy(&triangle, OwsInflation::new(&disturbances))?;
+/// let (_, result) = Hull::try_with_strategy(&triangle, OwsInflation::with_rays(&disturbances))?;
 /// assert_eq!(result.value, None);
 /// # Ok::<(), pqhull::HullError>(())
 /// ```
@@ -216,16 +216,18 @@ pub fn inflation_factor<const D: usize>(
 }
 
 impl<'a, const D: usize> OwsInflation<'a, D> {
-    /// A strategy inflating `disturbances` (each resisted by its opposite; see the type's docs),
-    /// assigning each to the facet its ray leaves through (Algorithm 2 as published).
-    pub fn new(disturbances: &'a [[f64; D]]) -> Self {
-        Self::with(Disturbances::Rays(disturbances))
+    /// A strategy inflating the disturbances of `index` (each resisted by its opposite; see the
+    /// type's docs), keying facets through their support function: the fast one, and the
+    /// default everywhere.
+    pub fn new(index: &'a SupportIndex<D>) -> Self {
+        Self::with(Disturbances::Support(index))
     }
 
-    /// The same answer, keying facets through the support function of the disturbances
-    /// (see the type's docs): much faster for large disturbance sets.
-    pub fn with_index(index: &'a SupportIndex<D>) -> Self {
-        Self::with(Disturbances::Support(index))
+    /// The same answer with every disturbance assigned to the facet its ray leaves through, as
+    /// the seed paper's Algorithm 2 is published: much slower on large disturbance sets, kept to
+    /// compare with.
+    pub fn with_rays(disturbances: &'a [[f64; D]]) -> Self {
+        Self::with(Disturbances::Rays(disturbances))
     }
 
     /// This strategy's buffers (queue, assignments, scratch) under a new index, for the next
@@ -599,7 +601,7 @@ impl<const D: usize> Strategy<D> for OwsInflation<'_, D> {
 /// runs.
 impl<const D: usize> Default for OwsInflation<'static, D> {
     fn default() -> Self {
-        OwsInflation::new(&[])
+        OwsInflation::with_rays(&[])
     }
 }
 
@@ -611,7 +613,7 @@ impl<const D: usize> Default for OwsInflation<'static, D> {
 /// use pqhull::strategy::OwsInflation;
 /// let square = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]];
 /// let disturbances = [[1.0, 0.0]];
-/// let mut strategy = OwsInflation::new(&disturbances);
+/// let mut strategy = OwsInflation::with_rays(&disturbances);
 /// let (mut hull, first) = Hull::try_with_strategy(&square, &mut strategy)?;
 /// let wide = square.map(|p| [2.0 * p[0], p[1]]);
 /// let second = hull.rebuild_with_strategy(&wide, &mut strategy)?;

@@ -1672,23 +1672,19 @@ pub fn check_ows(
     q1: &HullReference,
     degenerate: bool,
 ) {
-    use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod};
+    use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
     let space = ObjectWrenchSpace::from_disturbances(disturbances.to_vec()).expect("space");
     let reference = report.time("reference OWS", || {
         ows_reference_for(grasp, q1, disturbances, degenerate)
     });
-    for method in [
-        OwsMethod::Partial,
-        OwsMethod::BruteForce,
-        OwsMethod::Ellipsoid,
-    ] {
+    for method in [Method::Partial, Method::Full, Method::Ellipsoid] {
         let key = format!("OWS {method:?}");
         let result = report.time(&key, || {
             let (grasp, space) = (grasp.clone(), space.clone());
             guarded(move || OwsEvaluator::new(method).evaluate(&grasp, &space))
         });
         match result {
-            Err(e) if method == OwsMethod::Ellipsoid => report.soft_error(&key, case, &e),
+            Err(e) if method == Method::Ellipsoid => report.soft_error(&key, case, &e),
             Err(e) => report.error(&key, case, &e),
             Ok(q) => judge_ows(
                 report,
@@ -1699,7 +1695,7 @@ pub fn check_ows(
                 q1,
                 degenerate,
                 reference,
-                method == OwsMethod::Ellipsoid,
+                method == Method::Ellipsoid,
             ),
         }
     }

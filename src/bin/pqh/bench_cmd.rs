@@ -200,11 +200,7 @@ pub(crate) fn mean(values: impl Iterator<Item = f64>) -> f64 {
 }
 
 fn name(method: Method) -> &'static str {
-    match method {
-        Method::Partial => "partial",
-        Method::Full => "full",
-        Method::Qhull => "qhull",
-    }
+    method.name()
 }
 
 /// Evaluates `set` one grasp after another with one evaluator; a grasp the method cannot

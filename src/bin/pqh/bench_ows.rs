@@ -6,7 +6,7 @@ use crate::grasp_cmd::describe_space;
 use crate::plan_cmd::load_object;
 use clap::Args;
 use pqhull::geometry::Rng;
-use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod, OwsQuality, relative_error};
+use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsQuality, relative_error};
 use pqhull::grasp::quality::{Evaluator, Method, Metric};
 use pqhull::grasp::{FrictionModel, Grasp};
 use pqhull::mesh::SurfaceSampler;
@@ -110,7 +110,7 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
         .collect::<Result<_, _>>()
         .map_err(|e| CliError::Geometry(e.to_string()))?;
 
-    let evaluate = |method: OwsMethod, set: &[Grasp]| -> Result<Vec<OwsQuality>, CliError> {
+    let evaluate = |method: Method, set: &[Grasp]| -> Result<Vec<OwsQuality>, CliError> {
         let mut evaluator = OwsEvaluator::new(method);
         let bar = crate::progress::bar(set.len(), &format!("{method:?}"));
         let results = set
@@ -126,7 +126,7 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
         results
     };
     // Partial first, so the others cannot warm caches for it.
-    let partial = evaluate(OwsMethod::Partial, &grasps)?;
+    let partial = evaluate(Method::Partial, &grasps)?;
     let mut q1 = Evaluator::new(Metric::Q1, Method::Partial);
     let mut q1_times = grasps
         .iter()
@@ -134,12 +134,12 @@ pub fn run(args: &OwsArgs) -> Result<(), CliError> {
         .collect::<Result<Vec<_>, _>>()
         .map_err(|e| CliError::Geometry(e.to_string()))?;
     let brute_set = &grasps[..args.brute_grasps.min(grasps.len())];
-    let brute = evaluate(OwsMethod::BruteForce, brute_set)?;
+    let brute = evaluate(Method::Full, brute_set)?;
     let rays = evaluate(
-        OwsMethod::PartialRays,
+        Method::PartialRays,
         &grasps[..args.rays_grasps.min(grasps.len())],
     )?;
-    let ellipsoid = evaluate(OwsMethod::Ellipsoid, &grasps)?;
+    let ellipsoid = evaluate(Method::Ellipsoid, &grasps)?;
 
     let disagree = |other: &[OwsQuality]| {
         partial

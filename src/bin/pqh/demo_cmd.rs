@@ -6,7 +6,8 @@ use crate::plan_cmd::{load_object, report_json, run_plan};
 use clap::Args;
 use pqhull::grasp::FrictionModel;
 use pqhull::grasp::ows::ObjectWrenchSpace;
-use pqhull::plan::{BestComparison, PlanConfig, PlanMethod, PlanMetric, PlanReport};
+use pqhull::grasp::quality::{Method, Metric};
+use pqhull::plan::{BestComparison, PlanConfig, PlanReport};
 use serde_json::json;
 use std::path::PathBuf;
 
@@ -77,7 +78,7 @@ pub fn run(args: &DemoArgs) -> Result<(), CliError> {
         .map_err(|e| CliError::Input(format!("{name}: {e}")))?;
     let full_samples = args.full_samples.clamp(1, args.samples);
     let mut runs = Vec::new();
-    for (metric, label) in [(PlanMetric::Q1, "Q1"), (PlanMetric::Ows, "OWS")] {
+    for (metric, label) in [(Metric::Q1, "Q1"), (Metric::Ows, "OWS")] {
         let config = PlanConfig {
             contacts: 4,
             samples: args.samples,
@@ -92,16 +93,16 @@ pub fn run(args: &DemoArgs) -> Result<(), CliError> {
         let s = Some(&space);
         runs.push(MetricRun {
             name: label,
-            partial: run_plan(&mesh, s, &config, PlanMethod::Partial, label)?,
-            partial_short: run_plan(&mesh, s, &short, PlanMethod::Partial, label)?,
-            full: run_plan(&mesh, s, &short, PlanMethod::Full, "full hull")?,
+            partial: run_plan(&mesh, s, &config, Method::Partial, label)?,
+            partial_short: run_plan(&mesh, s, &short, Method::Partial, label)?,
+            full: run_plan(&mesh, s, &short, Method::Full, "full hull")?,
         });
     }
     let q1_config = PlanConfig {
         contacts: 4,
         samples: args.samples,
         friction,
-        metric: PlanMetric::Q1,
+        metric: Metric::Q1,
         seed: args.seed,
     };
     let view = crate::plan_view::write(

@@ -7,7 +7,7 @@ use crate::limits::MAX_THREADS;
 use clap::{Args, ValueEnum};
 use pqhull::Stats;
 use pqhull::grasp::json::{parse_grasp, split_grasps};
-use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod, OwsQuality, SpaceOrigin};
+use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsQuality, SpaceOrigin};
 use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, QualityError};
 use pqhull::grasp::{FrictionModel, Grasp};
 use pqhull::mesh::{CentreKind, Mesh};
@@ -115,11 +115,11 @@ pub fn method(arg: MethodArg) -> Result<Method, CliError> {
 }
 
 /// The OWS method for `arg`.
-pub fn ows_method(arg: MethodArg) -> Result<OwsMethod, CliError> {
+pub fn ows_method(arg: MethodArg) -> Result<Method, CliError> {
     match arg {
-        MethodArg::Partial => Ok(OwsMethod::Partial),
-        MethodArg::Brute => Ok(OwsMethod::BruteForce),
-        MethodArg::Ellipsoid => Ok(OwsMethod::Ellipsoid),
+        MethodArg::Partial => Ok(Method::Partial),
+        MethodArg::Brute => Ok(Method::Full),
+        MethodArg::Ellipsoid => Ok(Method::Ellipsoid),
         MethodArg::Full | MethodArg::Qhull => Err(CliError::Usage(
             "--metric ows takes --method partial, brute or ellipsoid".into(),
         )),

@@ -6,10 +6,9 @@ use clap::{Args, ValueEnum};
 use pqhull::grasp::FrictionModel;
 use pqhull::grasp::GraspError;
 use pqhull::grasp::ows::ObjectWrenchSpace;
+use pqhull::grasp::quality::{Method, Metric};
 use pqhull::mesh::Mesh;
-use pqhull::plan::{
-    BestComparison, PlanConfig, PlanError, PlanMethod, PlanMetric, PlanReport, plan_with_progress,
-};
+use pqhull::plan::{BestComparison, PlanConfig, PlanError, PlanReport, plan_with_progress};
 use serde_json::{Value, json};
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -97,11 +96,13 @@ pub fn load_object(mesh: Option<&Path>) -> Result<(Mesh, String), CliError> {
     }
 }
 
-fn metric(arg: PlanMetricArg) -> PlanMetric {
+fn metric(arg: PlanMetricArg) -> Metric {
     match arg {
-        PlanMetricArg::Q1 => PlanMetric::Q1,
-        PlanMetricArg::Qinf => PlanMetric::QInf,
-        PlanMetricArg::Ows => PlanMetric::Ows,
+        PlanMetricArg::Q1 => Metric::Q1,
+        PlanMetricArg::Qinf => Metric::QInf {
+            with_zero_wrench: false,
+        },
+        PlanMetricArg::Ows => Metric::Ows,
     }
 }
 
@@ -110,7 +111,7 @@ pub fn run_plan(
     mesh: &Mesh,
     space: Option<&ObjectWrenchSpace>,
     config: &PlanConfig,
-    method: PlanMethod,
+    method: Method,
     label: &str,
 ) -> Result<PlanReport, CliError> {
     let bar = progress::bar(config.samples, label);
@@ -171,13 +172,7 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
         metric: metric(args.metric),
         seed: args.seed,
     };
-    let partial = run_plan(
-        &mesh,
-        space.as_ref(),
-        &config,
-        PlanMethod::Partial,
-        "partial",
-    )?;
+    let partial = run_plan(&mesh, space.as_ref(), &config, Method::Partial, "partial")?;
     let default_full = match args.metric {
         PlanMetricArg::Qinf => 2,
         _ => args.samples,
@@ -188,18 +183,12 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
             samples: full_samples,
             ..config
         };
-        let full = run_plan(&mesh, space.as_ref(), &short, PlanMethod::Full, "full hull")?;
+        let full = run_plan(&mesh, space.as_ref(), &short, Method::Full, "full hull")?;
         // The partial plan over the same first samples, to compare the best grasps.
         let partial_short = if full_samples == args.samples {
             partial.clone()
         } else {
-            run_plan(
-                &mesh,
-                space.as_ref(),
-                &short,
-                PlanMethod::Partial,
-                "partial",
-            )?
+            run_plan(&mesh, space.as_ref(), &short, Method::Partial, "partial")?
         };
         Some((full, partial_short))
     } else {

@@ -2,10 +2,11 @@
 
 use crate::error::CliError;
 use pqhull::grasp::Grasp;
-use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod};
+use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
 use pqhull::grasp::quality::q1;
+use pqhull::grasp::quality::{Method, Metric};
 use pqhull::mesh::Mesh;
-use pqhull::plan::{BestGrasp, PlanConfig, PlanMethod, PlanMetric, PlanReport, plan};
+use pqhull::plan::{BestGrasp, PlanConfig, PlanReport, plan};
 use pqhull::viz::scene::{Color, Panel, Scene, scene_page};
 use std::path::{Path, PathBuf};
 
@@ -21,7 +22,7 @@ const FINGERS: [Color; 6] = [
 
 /// The best grasp of `config`'s samples by `metric` (reusing `report` when it is that plan).
 fn best_by(
-    metric: PlanMetric,
+    metric: Metric,
     mesh: &Mesh,
     space: &ObjectWrenchSpace,
     config: &PlanConfig,
@@ -31,7 +32,7 @@ fn best_by(
         return Ok(report.best.clone());
     }
     let other = PlanConfig { metric, ..*config };
-    plan(mesh, Some(space), &other, PlanMethod::Partial)
+    plan(mesh, Some(space), &other, Method::Partial)
         .map(|r| r.best)
         .map_err(|e| CliError::Geometry(e.to_string()))
 }
@@ -39,7 +40,7 @@ fn best_by(
 /// Both metrics of `grasp`: (Q1, Q_OWS).
 fn both_metrics(grasp: &Grasp, space: &ObjectWrenchSpace) -> (Option<f64>, Option<f64>) {
     let q = q1(grasp).ok().map(|q| q.value);
-    let ows = OwsEvaluator::new(OwsMethod::Partial)
+    let ows = OwsEvaluator::new(Method::Partial)
         .evaluate(grasp, space)
         .ok()
         .and_then(|q| q.value);
@@ -93,7 +94,7 @@ pub fn write(
     report: &PlanReport,
 ) -> Result<PathBuf, CliError> {
     let mut panels = Vec::new();
-    for (metric, label) in [(PlanMetric::Q1, "Q1"), (PlanMetric::Ows, "OWS")] {
+    for (metric, label) in [(Metric::Q1, "Q1"), (Metric::Ows, "OWS")] {
         let best = best_by(metric, mesh, space, config, report)?;
         let caption = match &best {
             Some(b) => {

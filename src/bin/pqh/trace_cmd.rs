@@ -229,7 +229,7 @@ fn trace<const D: usize>(
                     .map(|r| r.2)
             }
             StrategyArg::Ows => {
-                Hull::try_with_strategy_traced(&points, OwsInflation::new(&disturbances))
+                Hull::try_with_strategy_traced(&points, OwsInflation::with_rays(&disturbances))
                     .map(|r| r.2)
             }
         };

@@ -7,35 +7,14 @@ use crate::grasp::Grasp;
 use crate::grasp::certify::{BracketScratch, Disturbances, RawSide, bracket, support_with_error};
 use crate::grasp::flatness::{FLAT, Flatness};
 use crate::grasp::quality::{
-    FORCE_CLOSURE_EPSILON, HullBuffers, Method, QualityError, certified_outside, check_wrenches,
-    find_or_make, q1_certified, q1_of_wrenches,
+    FORCE_CLOSURE_EPSILON, HullBuffers, Method, Metric, QualityError, certified_outside,
+    check_wrenches, find_or_make, q1_certified, q1_of_wrenches,
 };
 use crate::grasp::snap::{SnappedCones, pyramid_labels, snapped_union};
 use crate::hull::{FacetId, Hull, HullError};
 use crate::predicates::Sign;
 use crate::strategy::{OwsInflation, Stats, exact_factor, factor_lower_bound};
 use std::time::Instant;
-
-/// How Q_OWS is computed.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum OwsMethod {
-    /// The partial hull grown by [`OwsInflation`] (PQHOWS) with facets keyed through the
-    /// disturbances' support function ([`OwsInflation::with_index`]): exact, the default.
-    #[default]
-    Partial,
-    /// The same partial hull with every disturbance assigned to the facet its ray leaves through,
-    /// as Algorithm 2 is published ([`OwsInflation::new`]): exact, slower on large disturbance
-    /// sets; kept for comparison.
-    PartialRays,
-    /// The full grasp hull, then every disturbance against every facet (the seed paper's eq. 8–9):
-    /// exact, the reference.
-    BruteForce,
-    /// Borst et al.'s approximation: map the wrench space so that the disturbances' enclosing
-    /// ellipsoid ([`ObjectWrenchSpace::ellipsoid`]) becomes the unit ball, then take Q1 of the
-    /// mapped grasp. Never larger than the exact value (the ellipsoid contains every
-    /// disturbance), and not exact.
-    Ellipsoid,
-}
 
 /// Q_OWS of one grasp.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -59,15 +38,15 @@ pub fn relative_error(approximate: f64, exact: f64) -> f64 {
 ///
 /// ```
 /// use pqhull::grasp::{FrictionModel, Grasp};
-/// use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod};
+/// use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, Method};
 /// use pqhull::mesh::Mesh;
 /// use pqhull::geometry::Rng;
 ///
 /// let friction = FrictionModel::try_new(0.5, 8)?;
 /// let bar = Mesh::cuboid([0.5, 0.2, 0.1])?;
 /// let ows = ObjectWrenchSpace::from_mesh(&bar, friction)?;
-/// let mut partial = OwsEvaluator::new(OwsMethod::Partial);
-/// let mut brute = OwsEvaluator::new(OwsMethod::BruteForce);
+/// let mut partial = OwsEvaluator::new(Method::Partial);
+/// let mut brute = OwsEvaluator::new(Method::Full);
 /// let mut rng = Rng::new(7);
 /// for _ in 0..5 {
 ///     // A random 4-contact grasp, put in the object's torque frame.
@@ -82,7 +61,7 @@ pub fn relative_error(approximate: f64, exact: f64) -> f64 {
 /// ```
 #[derive(Clone, Debug, Default)]
 pub struct OwsEvaluator {
-    method: OwsMethod,
+    method: Method,
     wrenches: Vec<[f64; 6]>,
     /// The snapped cone generators behind `wrenches`.
     cones: SnappedCones,
@@ -110,7 +89,7 @@ struct OwsBuffers {
 
 impl OwsEvaluator {
     /// An evaluator using `method`.
-    pub fn new(method: OwsMethod) -> Self {
+    pub fn new(method: Method) -> Self {
         OwsEvaluator {
             method,
             wrenches: Vec::new(),
@@ -121,7 +100,7 @@ impl OwsEvaluator {
     }
 
     /// The method used.
-    pub fn method(&self) -> OwsMethod {
+    pub fn method(&self) -> Method {
         self.method
     }
 
@@ -176,7 +155,7 @@ impl OwsEvaluator {
 pub fn ows_of_wrenches(
     wrenches: &[[f64; 6]],
     space: &ObjectWrenchSpace,
-    method: OwsMethod,
+    method: Method,
 ) -> Result<OwsQuality, QualityError> {
     let started = Instant::now();
     let set = GraspSet {
@@ -210,9 +189,15 @@ type Snapped<'a> = (&'a [[f64; 6]], &'a [u32], f64);
 fn ows_with(
     set: &GraspSet<'_>,
     space: &ObjectWrenchSpace,
-    method: OwsMethod,
+    method: Method,
     buffers: &mut OwsBuffers,
 ) -> Result<OwsQuality, QualityError> {
+    if !method.supports(Metric::Ows) {
+        return Err(QualityError::UnsupportedMethod {
+            method,
+            metric: Metric::Ows,
+        });
+    }
     let raw = set.raw;
     check_wrenches(raw)?;
     if raw.is_empty() {
@@ -220,7 +205,7 @@ fn ows_with(
     }
     // A grasp GJK certifies not force closure has no OWS value: no hull needed. (Not for
     // `PartialRays`, kept as published for comparison.)
-    if method == OwsMethod::Partial && certified_outside(raw, &mut buffers.gjk).is_some() {
+    if method == Method::Partial && certified_outside(raw, &mut buffers.gjk).is_some() {
         return Ok(not_force_closure(Stats::default()));
     }
     let scale = largest_norm(raw);
@@ -229,7 +214,7 @@ fn ows_with(
     if buffers.flatness.slab(raw.iter().copied()) <= FLAT * scale {
         return Ok(not_force_closure(Stats::default()));
     }
-    if method == OwsMethod::Ellipsoid {
+    if method == Method::Ellipsoid {
         return ellipsoid(raw, space);
     }
     if let Some((snapped, pyramids, delta)) = set.snapped {
@@ -271,25 +256,26 @@ fn search(
     w: &[[f64; 6]],
     pyramids: Option<&[u32]>,
     space: &ObjectWrenchSpace,
-    method: OwsMethod,
+    method: Method,
     buffers: &mut OwsBuffers,
 ) -> Option<OwsQuality> {
     let result = match method {
-        OwsMethod::Partial => {
+        Method::Partial => {
             let parked = std::mem::take(&mut buffers.inflation);
             let mut strategy = parked.rebind_index(space.support_index());
             let result = partial(w, pyramids, &mut strategy, &mut buffers.hull);
             buffers.inflation = strategy.park();
             result
         }
-        OwsMethod::PartialRays => partial(
+        Method::PartialRays => partial(
             w,
             pyramids,
-            OwsInflation::new(space.disturbances()),
+            OwsInflation::with_rays(space.disturbances()),
             &mut buffers.hull,
         ),
-        OwsMethod::BruteForce => brute_force(w, pyramids, space, &mut buffers.hull),
-        OwsMethod::Ellipsoid => unreachable!("the ellipsoid method builds no exact hull"),
+        Method::Full => brute_force(w, pyramids, space, &mut buffers.hull),
+        // Refused by `ows_with` before any hull is built.
+        Method::Ellipsoid | Method::Qhull => unreachable!("no exact OWS hull by {method:?}"),
     };
     result.filter(|q| q.force_closure)
 }
@@ -457,10 +443,10 @@ fn ellipsoid(wrenches: &[[f64; 6]], space: &ObjectWrenchSpace) -> Result<OwsQual
 /// `parallel` feature, a default); the space is shared, not copied. Each worker thread keeps one [`OwsEvaluator`] per
 /// method for the life of the thread, as
 /// [`quality::evaluate_batch`](crate::grasp::quality::evaluate_batch) does.
-pub fn evaluate_batch(
+pub fn evaluate_ows_batch(
     grasps: &[Grasp],
     space: &ObjectWrenchSpace,
-    method: OwsMethod,
+    method: Method,
 ) -> Vec<Result<OwsQuality, QualityError>> {
     crate::grasp::map_in_order(grasps, |grasp| {
         OWS_EVALUATORS.with_borrow_mut(|kept| {
@@ -471,7 +457,7 @@ pub fn evaluate_batch(
 }
 
 thread_local! {
-    /// The evaluators of [`evaluate_batch`] on this thread, one per method used.
+    /// The evaluators of [`evaluate_ows_batch`] on this thread, one per method used.
     static OWS_EVALUATORS: std::cell::RefCell<Vec<OwsEvaluator>> = const {
         std::cell::RefCell::new(Vec::new())
     };

@@ -37,7 +37,8 @@
 //! by d₂.
 //!
 //! ```
-//! use pqhull::grasp::ows::{ObjectWrenchSpace, OwsMethod, ows_of_wrenches};
+//! use pqhull::grasp::ows::{ObjectWrenchSpace, ows_of_wrenches};
+//! use pqhull::grasp::quality::Method;
 //!
 //! let cube: Vec<[f64; 6]> = (0..64)
 //!     .map(|i| std::array::from_fn(|c| if i >> c & 1 == 1 { 2.0 } else { -2.0 }))
@@ -46,7 +47,7 @@
 //!     [1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
 //!     [0.5, 0.0, 0.0, 0.0, 0.0, 4.0],
 //! ])?;
-//! for method in [OwsMethod::Partial, OwsMethod::BruteForce] {
+//! for method in [Method::Partial, Method::Full] {
 //!     let quality = ows_of_wrenches(&cube, &space, method)?;
 //!     assert!(quality.force_closure);
 //!     assert!((quality.value.unwrap() - 0.5).abs() < 1e-15);
@@ -58,7 +59,5 @@
 mod evaluate;
 mod space;
 
-pub use evaluate::{
-    OwsEvaluator, OwsMethod, OwsQuality, evaluate_batch, ows_of_wrenches, relative_error,
-};
+pub use evaluate::{OwsEvaluator, OwsQuality, evaluate_ows_batch, ows_of_wrenches, relative_error};
 pub use space::{ELLIPSOID_TOLERANCE, MAX_DISTURBANCES, ObjectWrenchSpace, OwsError, SpaceOrigin};
