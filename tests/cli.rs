@@ -70,7 +70,7 @@ fn square_full_hull_json() {
     let v = json(&pqh(&["hull", "--json", path.to_str().unwrap()], None));
     assert_eq!(v["dimension"], 2);
     assert_eq!(v["points"], 5);
-    assert_eq!(v["strategy"], "full");
+    assert_eq!(v["strategy"], "farthest-point");
     assert_eq!(usizes(&v["vertices"]), vec![0, 1, 2, 3]);
     assert!((v["volume"].as_f64().unwrap() - 4.0).abs() < 1e-12);
     assert!(v.get("origin_distance").is_none());
@@ -284,7 +284,7 @@ fn origin_errors() {
     );
     let err = one_line_error(&o, 2);
     assert!(
-        err.contains("--origin") && err.contains("dimension 2"),
+        err.contains("--query") && err.contains("dimension 2"),
         "{err}"
     );
     // Not a number.
@@ -614,4 +614,96 @@ fn grasp_floats_are_read_exactly() {
             "grasp {i}: pqh {g:e}, library {e:e}"
         );
     }
+}
+
+/// The `[possible values: …]` list of `--strategy` in a subcommand's help.
+fn strategy_values(subcommand: &str) -> Vec<String> {
+    let help = String::from_utf8(pqh(&[subcommand, "-h"], None).stdout).unwrap();
+    let at = help.find("--strategy").expect("a --strategy option");
+    let list = &help[at..];
+    let start =
+        list.find("[possible values: ").expect("possible values") + "[possible values: ".len();
+    let end = start + list[start..].find(']').unwrap();
+    list[start..end].split(", ").map(str::to_string).collect()
+}
+
+#[test]
+fn hull_and_trace_share_strategy_names_and_the_query_flag() {
+    let hull = strategy_values("hull");
+    let trace = strategy_values("trace");
+    assert_eq!(hull, ["farthest-point", "closest-to-origin"], "{hull:?}");
+    assert_eq!(
+        trace,
+        ["farthest-point", "closest-to-origin", "ows-inflation"],
+        "{trace:?}"
+    );
+    // The canonical names and every old spelling give the same answer.
+    let run = |args: &[&str]| -> Value {
+        let o = pqh(args, Some(SQUARE));
+        assert!(
+            o.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let mut v = json(&o);
+        v["stats"]["elapsed_us"] = Value::Null; // the only field that may differ between runs
+        v
+    };
+    let canonical = run(&[
+        "hull",
+        "--json",
+        "--strategy",
+        "closest-to-origin",
+        "--query",
+        "0.5,0",
+    ]);
+    let old = run(&[
+        "hull",
+        "--json",
+        "--strategy",
+        "closest-to-origin",
+        "--origin",
+        "0.5,0",
+    ]);
+    let short = run(&["hull", "--json", "--strategy", "closest", "--query=0.5,0"]);
+    assert_eq!(canonical, old);
+    assert_eq!(canonical, short);
+    let full = run(&["hull", "--json", "--strategy", "full"]);
+    assert_eq!(
+        full,
+        run(&["hull", "--json", "--strategy", "farthest-point"])
+    );
+    assert_eq!(full["strategy"], "farthest-point");
+    // pqh trace takes the same names, the short ones, and --origin for --query.
+    let dir = std::env::temp_dir().join(format!("pqh-names-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("t.html");
+    let out = out.to_str().unwrap();
+    for (strategy, extra) in [
+        ("farthest-point", None),
+        ("farthest", None),
+        ("closest-to-origin", Some("--query=0.1,0.1")),
+        ("closest", Some("--origin=0.1,0.1")),
+        ("ows-inflation", None),
+        ("ows", None),
+    ] {
+        let mut args = vec![
+            "trace",
+            "--family",
+            "cube",
+            "--points",
+            "30",
+            "--dimension",
+            "2",
+        ];
+        args.extend(["--strategy", strategy, "--output", out]);
+        args.extend(extra);
+        let o = pqh(&args, None);
+        assert!(
+            o.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+    }
+    std::fs::remove_dir_all(&dir).ok();
 }

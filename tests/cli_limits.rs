@@ -331,7 +331,7 @@ fn exit_statuses_follow_the_table() {
         ),
         2,
     );
-    assert!(err.contains("--origin") && err.contains("field 2"), "{err}");
+    assert!(err.contains("--query") && err.contains("field 2"), "{err}");
 }
 
 #[test]

@@ -118,7 +118,7 @@ fn check_both_strategies<const D: usize>(name: &str, points: &[[f64; D]]) {
 
     let v = hull_json(&[], &path);
     let hull = Hull::try_new(points).expect("full hull");
-    assert_eq!(v["strategy"], "full");
+    assert_eq!(v["strategy"], "farthest-point");
     check_against(&v, &hull);
     assert_eq!(v["volume"].as_f64(), Some(hull.volume()));
     let stats = hull.stats();

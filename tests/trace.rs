@@ -542,7 +542,7 @@ fn pages_are_self_contained_and_svgs_are_written() {
         .map(|e| e.unwrap().file_name().into_string().unwrap())
         .collect();
     for (k, panel) in panels.iter().enumerate() {
-        let name = ["closest", "ows"][k];
+        let name = ["closest-to-origin", "ows-inflation"][k];
         let steps = panel["trace"]["events"].as_array().unwrap().len();
         let count = files.iter().filter(|f| f.starts_with(name)).count();
         assert_eq!(count, steps, "{name}: one SVG per step");

@@ -14,9 +14,10 @@ use std::path::PathBuf;
 pub const LONG_ABOUT: &str = "\
 Builds the convex hull of the points in FILE (standard input for '-' or no FILE).
 
---strategy full (the default) runs QuickHull to completion and reports the vertices, facets and
-volume. --strategy closest-to-origin grows the hull only toward the query point (--origin,
-default the origin) and stops as soon as the facet nearest it is certain; it reports the signed
+--strategy farthest-point (the default; `full` is an alias) runs QuickHull to completion and
+reports the vertices, facets and volume. --strategy closest-to-origin grows the hull only toward
+the query point (--query, default the origin; `--origin` is an alias) and stops as soon as the
+facet nearest it is certain; it reports the signed
 distance from the query point to the hull boundary (positive inside, negative outside), the
 closest facet and the nearest boundary point. The facets listed are those of the partial hull.
 
@@ -30,32 +31,40 @@ pub struct HullArgs {
     file: Option<PathBuf>,
 
     /// How far to grow the hull
-    #[arg(long, value_enum, default_value_t = StrategyArg::Full)]
+    #[arg(long, value_enum, default_value_t = StrategyArg::FarthestPoint)]
     strategy: StrategyArg,
 
     /// Query point for closest-to-origin, as x,y,...; it must have the points' dimension
     /// [default: the origin]
-    #[arg(long, value_name = "X,Y,...", allow_hyphen_values = true)]
-    origin: Option<String>,
+    #[arg(
+        long,
+        alias = "origin",
+        value_name = "X,Y,...",
+        allow_hyphen_values = true
+    )]
+    query: Option<String>,
 
     /// Print one JSON object instead of a human-readable summary
     #[arg(long)]
     json: bool,
 }
 
-/// The `--strategy` values.
+/// The `--strategy` values: the library's strategy names, as `pqh trace` takes them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 enum StrategyArg {
-    /// The full hull (QuickHull, farthest point first)
-    Full,
-    /// A partial hull, grown toward the query point until its nearest facet is certain
+    /// FarthestPoint: the full hull (QuickHull, farthest point first)
+    #[value(alias = "full", alias = "farthest")]
+    FarthestPoint,
+    /// ClosestToOrigin: a partial hull, grown toward the query point until its nearest facet is
+    /// certain
+    #[value(alias = "closest")]
     ClosestToOrigin,
 }
 
 impl StrategyArg {
     fn name(self) -> &'static str {
         match self {
-            StrategyArg::Full => "full",
+            StrategyArg::FarthestPoint => "farthest-point",
             StrategyArg::ClosestToOrigin => "closest-to-origin",
         }
     }
@@ -63,12 +72,12 @@ impl StrategyArg {
 
 /// Runs `pqh hull`.
 pub fn run(args: &HullArgs) -> Result<(), CliError> {
-    let origin = match (&args.origin, args.strategy) {
+    let origin = match (&args.query, args.strategy) {
         (None, _) => None,
-        (Some(text), StrategyArg::ClosestToOrigin) => Some(parse_point("--origin", text)?),
-        (Some(_), StrategyArg::Full) => {
+        (Some(text), StrategyArg::ClosestToOrigin) => Some(parse_point("--query", text)?),
+        (Some(_), StrategyArg::FarthestPoint) => {
             return Err(CliError::Usage(
-                "--origin only applies to --strategy closest-to-origin".to_string(),
+                "--query only applies to --strategy closest-to-origin".to_string(),
             ));
         }
     };
@@ -79,7 +88,7 @@ pub fn run(args: &HullArgs) -> Result<(), CliError> {
         && q.len() != d
     {
         return Err(CliError::Usage(format!(
-            "--origin has {} coordinate(s) but the points in {} have dimension {d}",
+            "--query has {} coordinate(s) but the points in {} have dimension {d}",
             q.len(),
             source.name()
         )));
@@ -138,7 +147,7 @@ impl Job<'_> {
         drop(self.table);
         let geometry = |e: HullError| CliError::Geometry(format!("{}: {e}", self.source));
         let (hull, outcome) = match self.strategy {
-            StrategyArg::Full => {
+            StrategyArg::FarthestPoint => {
                 let hull = Hull::<D>::try_new(&points).map_err(geometry)?;
                 let outcome = Outcome {
                     strategy: self.strategy,
@@ -356,7 +365,7 @@ fn write_human<const D: usize>(
     writeln!(out, "dimension        {D}")?;
     writeln!(out, "points           {}", hull.point_count())?;
     writeln!(out, "strategy         {}", outcome.strategy.name())?;
-    let partial = if outcome.strategy == StrategyArg::Full {
+    let partial = if outcome.strategy == StrategyArg::FarthestPoint {
         ""
     } else {
         " (of the partial hull)"

@@ -23,10 +23,11 @@ The points come from FILE (a points file, '-' for standard input) or from a gene
 (--family cube|sphere|corners|simplex|shell|lens|lattice|clusters|duplicates, with --points,
 --dimension and --seed).
 
-Strategies: farthest (full QuickHull), closest (distance from --query, default the origin),
-ows (inflation of the --disturbances, default a few seeded unit directions; each disturbance d is
-resisted along -d). --compare S2 draws a second strategy's run on the same points beside the
-first. For 2-D input, --svg-dir DIR also writes one SVG picture per step.";
+Strategies (the names `pqh hull` takes): farthest-point (full QuickHull), closest-to-origin
+(distance from --query, default the origin), ows-inflation (inflation of the --disturbances,
+default a few seeded unit directions; each disturbance d is resisted along -d); the short names
+farthest, closest and ows still work. --compare S2 draws a second strategy's run on the same
+points beside the first. For 2-D input, --svg-dir DIR also writes one SVG picture per step.";
 
 /// Inputs larger than this make pages too heavy to be useful.
 const MAX_POINTS: usize = 5000;
@@ -62,11 +63,16 @@ pub struct TraceArgs {
     #[arg(long, value_enum, value_name = "STRATEGY")]
     compare: Option<StrategyArg>,
 
-    /// Query point of `closest`, as x,y or x,y,z [default: the origin]
-    #[arg(long, value_name = "X,Y[,Z]", allow_hyphen_values = true)]
+    /// Query point of closest-to-origin, as x,y or x,y,z [default: the origin]
+    #[arg(
+        long,
+        alias = "origin",
+        value_name = "X,Y[,Z]",
+        allow_hyphen_values = true
+    )]
     query: Option<String>,
 
-    /// Points file of disturbances for `ows` [default: seeded unit directions]
+    /// Points file of disturbances for ows-inflation [default: seeded unit directions]
     #[arg(long, value_name = "FILE")]
     disturbances: Option<PathBuf>,
 
@@ -87,19 +93,22 @@ pub struct TraceArgs {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 enum StrategyArg {
     /// FarthestPoint: the full hull
-    Farthest,
+    #[value(alias = "farthest", alias = "full")]
+    FarthestPoint,
     /// ClosestToOrigin: distance from the query point
-    Closest,
+    #[value(alias = "closest")]
+    ClosestToOrigin,
     /// OwsInflation: the object-wrench-space metric
-    Ows,
+    #[value(alias = "ows")]
+    OwsInflation,
 }
 
 impl StrategyArg {
     fn name(self) -> &'static str {
         match self {
-            StrategyArg::Farthest => "farthest",
-            StrategyArg::Closest => "closest",
-            StrategyArg::Ows => "ows",
+            StrategyArg::FarthestPoint => "farthest-point",
+            StrategyArg::ClosestToOrigin => "closest-to-origin",
+            StrategyArg::OwsInflation => "ows-inflation",
         }
     }
 }
@@ -111,11 +120,11 @@ pub fn run(args: &TraceArgs) -> Result<(), CliError> {
         .into_iter()
         .flatten()
         .collect();
-    if args.query.is_some() && !strategies.contains(&StrategyArg::Closest) {
-        return usage("--query only applies to the closest strategy");
+    if args.query.is_some() && !strategies.contains(&StrategyArg::ClosestToOrigin) {
+        return usage("--query only applies to the closest-to-origin strategy");
     }
-    if args.disturbances.is_some() && !strategies.contains(&StrategyArg::Ows) {
-        return usage("--disturbances only applies to the ows strategy");
+    if args.disturbances.is_some() && !strategies.contains(&StrategyArg::OwsInflation) {
+        return usage("--disturbances only applies to the ows-inflation strategy");
     }
     let (input, name) = match (&args.file, &args.family) {
         (Some(_), Some(_)) => return usage("give a points FILE or --family, not both"),
@@ -221,14 +230,14 @@ fn trace<const D: usize>(
     let mut traces: Vec<Trace<D>> = Vec::new();
     for &s in strategies {
         let traced = match s {
-            StrategyArg::Farthest => {
+            StrategyArg::FarthestPoint => {
                 Hull::try_with_strategy_traced(&points, FarthestPoint::new()).map(|r| r.2)
             }
-            StrategyArg::Closest => {
+            StrategyArg::ClosestToOrigin => {
                 Hull::try_with_strategy_traced(&points, ClosestToOrigin::towards(query))
                     .map(|r| r.2)
             }
-            StrategyArg::Ows => {
+            StrategyArg::OwsInflation => {
                 Hull::try_with_strategy_traced(&points, OwsInflation::with_rays(&disturbances))
                     .map(|r| r.2)
             }
