@@ -193,10 +193,11 @@ fn check_case<const D: usize>(family: &Family, seed: u64) -> Result<(), TestCase
 }
 
 macro_rules! dimension_suite {
-    ($($name:ident => $d:literal),*) => {$(
+    ($($(#[$attr:meta])* $name:ident => $d:literal),*) => {$(
         proptest! {
             #![proptest_config(ProptestConfig::with_cases(cases_for($d)))]
             #[test]
+            $(#[$attr])*
             fn $name(seed in any::<u64>(), which in 0usize..64) {
                 let families = families();
                 let family = &families[which % families.len()];
@@ -213,11 +214,13 @@ dimension_suite!(
     invariants_5d => 5,
     invariants_6d => 6,
     invariants_7d => 7,
+    #[ignore = "extended (about 100 s): --run-ignored all runs it, as CI does"]
     invariants_8d => 8
 );
 
 /// Every family in every dimension at least once, with a fixed seed (proptest samples randomly).
 #[test]
+#[ignore = "extended (about 60 s): --run-ignored all runs it, as CI does"]
 fn every_family_every_dimension() {
     fn run<const D: usize>() {
         for family in families() {
