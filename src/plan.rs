@@ -350,7 +350,7 @@ mod tests {
         PlanReport {
             best: best.map(|(sample, value)| BestGrasp {
                 sample,
-                grasp: Grasp::try_new(vec![contact], friction).unwrap(),
+                grasp: Grasp::builder(vec![contact], friction).build().unwrap(),
                 value,
             }),
             samples: 2,

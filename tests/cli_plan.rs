@@ -195,14 +195,22 @@ fn demo_from_an_empty_directory_uses_the_built_in_object() {
     // No data/ or ../shared beside it: the default object must come from the binary itself.
     let dir = std::env::temp_dir().join(format!("pqh-demo-empty-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    assert_eq!(std::fs::read_dir(&dir).unwrap().count(), 0, "{dir:?} is not empty");
+    assert_eq!(
+        std::fs::read_dir(&dir).unwrap().count(),
+        0,
+        "{dir:?} is not empty"
+    );
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_pqh"))
         .args(["demo", "--samples", "20", "--full-samples", "4"])
         .current_dir(&dir)
         .output()
         .expect("run pqh demo");
     let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     assert!(
         stdout.contains("on built-in spot.obj (2930 vertices"),
         "not the shipped object: {stdout}"

@@ -461,7 +461,9 @@ fn object_wrench_space_of_a_sphere() {
             Contact::try_new(position, [-v[0], -v[1], -v[2]], None).unwrap()
         })
         .collect();
-    let grasp = Grasp::try_new(contacts, FrictionModel::try_new(0.5, 8).unwrap()).unwrap();
+    let grasp = Grasp::builder(contacts, FrictionModel::try_new(0.5, 8).unwrap())
+        .build()
+        .unwrap();
     let wrenches = grasp.wrenches();
     let e = CentredEllipsoid::try_enclosing(&wrenches, 1e-9).unwrap();
     assert_encloses_tightly(&e, &wrenches);

@@ -95,7 +95,9 @@ fn two_antipodal_hard_fingers_are_not_force_closure() {
         Contact::try_new([-0.5, 0.0, 0.0], [1.0, 0.0, 0.0], None).unwrap(),
         Contact::try_new([0.5, 0.0, 0.0], [-1.0, 0.0, 0.0], None).unwrap(),
     ];
-    let grasp = Grasp::try_new(contacts, FrictionModel::try_new(0.5, 8).unwrap()).unwrap();
+    let grasp = Grasp::builder(contacts, FrictionModel::try_new(0.5, 8).unwrap())
+        .build()
+        .unwrap();
     for method in methods() {
         let q = Evaluator::new(Metric::Q1, method).evaluate(&grasp).unwrap();
         assert!(!q.force_closure, "{method:?}");
@@ -271,13 +273,14 @@ fn batch_keeps_input_order() {
 /// wrench (1024² points) the same.
 #[test]
 fn q_inf_of_a_flat_sum_too_large_to_materialise() {
-    let pinch = Grasp::try_new(
+    let pinch = Grasp::builder(
         vec![
             Contact::try_new([-1.0, 0.0, 0.0], [1.0, 0.0, 0.0], None).unwrap(),
             Contact::try_new([1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], None).unwrap(),
         ],
         FrictionModel::try_new(0.5, pqhull::grasp::MAX_CONE_EDGES).unwrap(),
     )
+    .build()
     .unwrap();
     let by = |with_zero_wrench: bool, method: Method, grasp: &Grasp| {
         Evaluator::new(Metric::QInf { with_zero_wrench }, method).evaluate(grasp)
@@ -298,7 +301,7 @@ fn q_inf_of_a_flat_sum_too_large_to_materialise() {
         );
     }
     // A sum that size which is not flat is still refused by the full method (128³ > 2²⁰).
-    let tilted = Grasp::try_new(
+    let tilted = Grasp::builder(
         vec![
             Contact::try_new([-1.0, 0.0, 0.0], [1.0, 0.0, 0.0], None).unwrap(),
             Contact::try_new([1.0, 0.3, 0.0], [-1.0, 0.0, 0.0], None).unwrap(),
@@ -306,6 +309,7 @@ fn q_inf_of_a_flat_sum_too_large_to_materialise() {
         ],
         FrictionModel::try_new(0.5, 128).unwrap(),
     )
+    .build()
     .unwrap();
     assert!(matches!(
         by(false, Method::Full, &tilted),
@@ -319,13 +323,14 @@ fn q_inf_of_a_flat_sum_too_large_to_materialise() {
 #[test]
 fn q_inf_of_flat_sums_agrees_with_the_materialised_sum() {
     let pinch = |offset: f64| {
-        Grasp::try_new(
+        Grasp::builder(
             vec![
                 Contact::try_new([-1.0, offset, 0.0], [1.0, 0.0, 0.0], None).unwrap(),
                 Contact::try_new([1.0, 0.0, 0.0], [-1.0, 0.2, 0.0], None).unwrap(),
             ],
             FrictionModel::try_new(0.3, 12).unwrap(),
         )
+        .build()
         .unwrap()
     };
     for offset in [0.0, 0.4] {
@@ -410,8 +415,9 @@ fn huge_wrenches_are_an_error_and_large_ones_are_finite() {
         Contact::try_new([0.02, -0.1, -0.02], [0.0, 1.0, 0.0], None).unwrap(),
     ];
     for (mu, ok) in [(1e160, false), (1e120, false), (1e99, true), (0.5, true)] {
-        let grasp =
-            Grasp::try_new(contacts.clone(), FrictionModel::try_new(mu, 8).unwrap()).unwrap();
+        let grasp = Grasp::builder(contacts.clone(), FrictionModel::try_new(mu, 8).unwrap())
+            .build()
+            .unwrap();
         for metric in [
             Metric::Q1,
             Metric::QInf {

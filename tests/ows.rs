@@ -26,7 +26,9 @@ fn four_face_grasp(mu: f64, k: usize) -> Grasp {
         Contact::try_new([0.0, -1.0, 0.0], [0.0, 1.0, 0.0], z).unwrap(),
         Contact::try_new([0.0, 1.0, 0.0], [0.0, -1.0, 0.0], z).unwrap(),
     ];
-    Grasp::try_new(contacts, FrictionModel::try_new(mu, k).unwrap()).unwrap()
+    Grasp::builder(contacts, FrictionModel::try_new(mu, k).unwrap())
+        .build()
+        .unwrap()
 }
 
 /// Derivation (c = origin, ρ = 1, μ ≤ 1, k a multiple of 4 so that edges point along ±z and
@@ -295,13 +297,14 @@ fn torque_frame_must_match_the_space() {
 #[test]
 fn not_force_closure_has_no_value() {
     // Two antipodal hard fingers: rank 5 at most, never force closure.
-    let pinch = Grasp::try_new(
+    let pinch = Grasp::builder(
         vec![
             Contact::try_new([-1.0, 0.0, 0.0], [1.0, 0.0, 0.0], None).unwrap(),
             Contact::try_new([1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], None).unwrap(),
         ],
         FrictionModel::try_new(0.5, 8).unwrap(),
     )
+    .build()
     .unwrap();
     let space = ObjectWrenchSpace::from_disturbances(vec![[1.0, 0.0, 0.0, 0.0, 0.0, 0.0]]).unwrap();
     for method in [Method::Partial, Method::PartialRays, Method::Full] {
@@ -360,7 +363,9 @@ fn hull_reduction_keeps_the_value() {
                 friction,
             ))
             .unwrap();
-        let grasp = Grasp::try_new(grasp.contacts().to_vec(), friction).unwrap();
+        let grasp = Grasp::builder(grasp.contacts().to_vec(), friction)
+            .build()
+            .unwrap();
         let a = evaluator.evaluate(&grasp, &full).unwrap();
         let b = evaluator.evaluate(&grasp, &reduced).unwrap();
         match (a.value, b.value) {
@@ -397,13 +402,14 @@ fn batch_results_are_in_input_order_and_match_one_by_one() {
 #[test]
 fn one_method_enum_refuses_what_a_metric_does_not_take() {
     use pqhull::grasp::quality::{Evaluator, Metric};
-    let pinch = Grasp::try_new(
+    let pinch = Grasp::builder(
         vec![
             Contact::try_new([-1.0, 0.0, 0.0], [1.0, 0.0, 0.0], None).unwrap(),
             Contact::try_new([1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], None).unwrap(),
         ],
         FrictionModel::try_new(0.5, 8).unwrap(),
     )
+    .build()
     .unwrap();
     let space = ObjectWrenchSpace::from_disturbances(vec![[1.0, 0.0, 0.0, 0.0, 0.0, 0.0]]).unwrap();
     let refused = OwsEvaluator::new(Method::Qhull).evaluate(&pinch, &space);

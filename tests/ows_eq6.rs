@@ -262,13 +262,14 @@ fn ellipsoid_method_keeps_the_grasps_own_verdict() {
     let cube = Mesh::cuboid([H; 3]).unwrap();
     let friction = FrictionModel::try_new(0.5, 8).unwrap();
     let space = ObjectWrenchSpace::from_mesh(&cube, friction).unwrap();
-    let pinch = Grasp::try_new(
+    let pinch = Grasp::builder(
         vec![
             Contact::try_new([-H, 0.0, 0.0], [1.0, 0.0, 0.0], None).unwrap(),
             Contact::try_new([H, 0.0, 0.0], [-1.0, 0.0, 0.0], None).unwrap(),
         ],
         friction,
     )
+    .build()
     .unwrap();
     let pinch = space.frame(&pinch).unwrap();
     let own = q1_of_wrenches(&pinch.wrenches(), Method::Partial).unwrap();

@@ -90,7 +90,8 @@ pub fn normalize<const D: usize>(a: [f64; D]) -> Option<[f64; D]> {
     if m == 0.0 {
         return None;
     }
-    let w = scale(a, 1.0 / m);
+    // Divide (rather than multiply by 1/m, which overflows for a subnormal m).
+    let w = a.map(|x| x / m);
     Some(scale(w, 1.0 / norm(w)))
 }
 

@@ -98,17 +98,9 @@ pub struct Grasp {
 }
 
 impl Grasp {
-    /// A grasp with the default torque reference c = origin and torque scale ρ = 1.
-    ///
-    /// # Errors
-    ///
-    /// [`GraspError::NoContacts`] when `contacts` is empty, [`GraspError::TooManyContacts`] when
-    /// it has more than [`MAX_CONTACTS`].
-    pub fn try_new(contacts: Vec<Contact>, friction: FrictionModel) -> Result<Grasp, GraspError> {
-        Grasp::builder(contacts, friction).build()
-    }
-
-    /// A builder starting from the defaults c = origin, ρ = 1.
+    /// The one way to make a grasp: a builder starting from the defaults c = origin, ρ = 1
+    /// ([`GraspBuilder::torque_reference`], [`GraspBuilder::torque_scale`]), checked by
+    /// [`GraspBuilder::build`].
     pub fn builder(contacts: Vec<Contact>, friction: FrictionModel) -> GraspBuilder {
         GraspBuilder {
             contacts,

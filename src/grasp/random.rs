@@ -86,6 +86,6 @@ impl Grasp {
                 Contact::try_new(s.position, s.inward_normal, None)
             })
             .collect::<Result<Vec<_>, _>>()?;
-        Grasp::try_new(fingers, friction)
+        Grasp::builder(fingers, friction).build()
     }
 }

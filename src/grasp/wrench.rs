@@ -133,7 +133,7 @@ mod tests {
     fn counts_and_contact_major_order() {
         let k = 8;
         let fm = FrictionModel::try_new(0.4, k).unwrap();
-        let g = Grasp::try_new(cube_contacts(), fm).unwrap();
+        let g = Grasp::builder(cube_contacts(), fm).build().unwrap();
         assert_eq!(g.contact_count(), 3);
         assert_eq!(g.wrench_count(), 24);
         let all = g.wrenches();
@@ -161,13 +161,16 @@ mod tests {
         let c = contact([0.0; 3], [0.0, 0.0, 1.0], None);
         let fm = FrictionModel::try_new(0.5, 3).unwrap();
         assert_eq!(
-            Grasp::try_new(vec![c], fm).unwrap().minkowski_count(),
+            Grasp::builder(vec![c], fm)
+                .build()
+                .unwrap()
+                .minkowski_count(),
             Some(3)
         );
-        let g = Grasp::try_new(vec![c; 41], fm).unwrap(); // 3^41 > 2^64
+        let g = Grasp::builder(vec![c; 41], fm).build().unwrap(); // 3^41 > 2^64
         assert_eq!(g.minkowski_count(), None);
         let fm = FrictionModel::try_new(0.5, 32).unwrap();
-        let g = Grasp::try_new(vec![c; 4], fm).unwrap();
+        let g = Grasp::builder(vec![c; 4], fm).build().unwrap();
         assert_eq!(g.minkowski_count(), Some(1 << 20));
     }
 
@@ -281,7 +284,10 @@ mod tests {
     #[test]
     fn every_grasp_error() {
         let fm = FrictionModel::try_new(0.5, 4).unwrap();
-        assert_eq!(Grasp::try_new(vec![], fm), Err(GraspError::NoContacts));
+        assert_eq!(
+            Grasp::builder(vec![], fm).build(),
+            Err(GraspError::NoContacts)
+        );
         for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
             let got = Grasp::builder(cube_contacts(), fm)
                 .torque_reference([0.0, bad, 0.0])
@@ -304,7 +310,7 @@ mod tests {
             matches!(got, Err(GraspError::InvalidTorqueScale { torque_scale }) if torque_scale.is_nan())
         );
         // Defaults.
-        let g = Grasp::try_new(cube_contacts(), fm).unwrap();
+        let g = Grasp::builder(cube_contacts(), fm).build().unwrap();
         assert_eq!(g.torque_reference(), [0.0; 3]);
         assert_eq!(g.torque_scale(), 1.0);
         assert_eq!(g.friction(), fm);
@@ -316,8 +322,8 @@ mod tests {
         use crate::grasp::MAX_CONTACTS;
         let fm = FrictionModel::try_new(0.5, 4).unwrap();
         let one = cube_contacts()[0];
-        assert!(Grasp::try_new(vec![one; MAX_CONTACTS], fm).is_ok());
-        let got = Grasp::try_new(vec![one; MAX_CONTACTS + 1], fm);
+        assert!(Grasp::builder(vec![one; MAX_CONTACTS], fm).build().is_ok());
+        let got = Grasp::builder(vec![one; MAX_CONTACTS + 1], fm).build();
         assert_eq!(
             got,
             Err(GraspError::TooManyContacts {
@@ -332,7 +338,7 @@ mod tests {
     #[should_panic(expected = "the buffer holds 3 wrenches")]
     fn contact_wrenches_rejects_a_wrong_buffer() {
         let fm = FrictionModel::try_new(0.5, 4).unwrap();
-        let g = Grasp::try_new(cube_contacts(), fm).unwrap();
+        let g = Grasp::builder(cube_contacts(), fm).build().unwrap();
         g.contact_wrenches(0, &mut [[0.0; 6]; 3]);
     }
 }

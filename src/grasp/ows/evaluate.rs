@@ -38,7 +38,8 @@ pub fn relative_error(approximate: f64, exact: f64) -> f64 {
 ///
 /// ```
 /// use pqhull::grasp::{FrictionModel, Grasp};
-/// use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, Method};
+/// use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
+/// use pqhull::grasp::quality::Method;
 /// use pqhull::mesh::Mesh;
 /// use pqhull::geometry::Rng;
 ///
