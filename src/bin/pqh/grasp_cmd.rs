@@ -2,16 +2,16 @@
 //! order.
 
 use crate::error::CliError;
-use crate::format::short;
 use crate::limits::MAX_THREADS;
+use crate::methods::{MethodArg, method, ows_method};
 use clap::{Args, ValueEnum};
 use pqhull::Stats;
-use pqhull::grasp::json::{parse_grasp, split_grasps};
-use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsMethod, OwsQuality, SpaceOrigin};
-use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, QualityError};
+use pqhull::grasp::json::{error_line, parse_grasp, quality_line, split_grasps};
+use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsQuality};
+use pqhull::grasp::quality::{Evaluator, Metric, Quality, QualityError};
 use pqhull::grasp::{FrictionModel, Grasp};
-use pqhull::mesh::{CentreKind, Mesh};
-use serde_json::{Value, json};
+use pqhull::mesh::Mesh;
+use serde_json::Value;
 use std::io::{Read, Write};
 use std::path::PathBuf;
 
@@ -54,20 +54,6 @@ pub enum MetricArg {
     Ows,
 }
 
-#[derive(Clone, Copy, Debug, ValueEnum)]
-pub enum MethodArg {
-    /// Partial hull: stop once the nearest facet is certain (default)
-    Partial,
-    /// Full hull with pqhull's engine
-    Full,
-    /// Full hull with Qhull (needs the `qhull` feature)
-    Qhull,
-    /// OWS only: full hull, every disturbance against every facet
-    Brute,
-    /// OWS only: Borst et al.'s enclosing-ellipsoid approximation
-    Ellipsoid,
-}
-
 #[derive(Debug, Args)]
 pub struct GraspArgs {
     /// Grasps file (JSON, JSON array or JSON Lines); '-' or nothing reads standard input
@@ -96,34 +82,6 @@ pub struct GraspArgs {
     /// OWS with --mesh: edges of the disturbance cones, 3 to 1024 (default: the first grasp's)
     #[arg(long, value_parser = crate::limits::cone_edges())]
     pub ows_edges: Option<usize>,
-}
-
-pub fn method(arg: MethodArg) -> Result<Method, CliError> {
-    match arg {
-        MethodArg::Partial => Ok(Method::Partial),
-        MethodArg::Full => Ok(Method::Full),
-        MethodArg::Qhull if cfg!(feature = "qhull") => Ok(Method::Qhull),
-        MethodArg::Qhull => Err(CliError::Usage(
-            "--method qhull needs pqh built with the `qhull` feature".into(),
-        )),
-        MethodArg::Brute | MethodArg::Ellipsoid => Err(CliError::Usage(
-            "--method brute and ellipsoid are for --metric ows; q1 and qinf take partial, full \
-             or qhull"
-                .into(),
-        )),
-    }
-}
-
-/// The OWS method for `arg`.
-pub fn ows_method(arg: MethodArg) -> Result<OwsMethod, CliError> {
-    match arg {
-        MethodArg::Partial => Ok(OwsMethod::Partial),
-        MethodArg::Brute => Ok(OwsMethod::BruteForce),
-        MethodArg::Ellipsoid => Ok(OwsMethod::Ellipsoid),
-        MethodArg::Full | MethodArg::Qhull => Err(CliError::Usage(
-            "--metric ows takes --method partial, brute or ellipsoid".into(),
-        )),
-    }
 }
 
 fn read_input(file: &Option<PathBuf>) -> Result<String, CliError> {
@@ -157,18 +115,9 @@ fn result_line<T>(
     match result {
         Ok(q) => {
             let (force_closure, quality, stats) = fields(q);
-            json!({
-                "index": index,
-                "force_closure": force_closure,
-                "quality": quality,
-                "stats": {
-                    "points_processed": stats.points_processed,
-                    "facets_created": stats.facets_created,
-                    "elapsed_us": stats.elapsed.as_secs_f64() * 1e6,
-                }
-            })
+            quality_line(index, force_closure, quality, &stats)
         }
-        Err(e) => json!({"index": index, "error": e.to_string()}),
+        Err(e) => error_line(index, &e.to_string()),
     }
 }
 
@@ -199,7 +148,7 @@ fn evaluate_lines<E, T: Send>(
         .zip(&results)
         .enumerate()
         .map(|(index, (entry, result))| match (entry, result) {
-            (Err(message), _) => json!({"index": index, "error": message}),
+            (Err(message), _) => error_line(index, message),
             (Ok(_), Some(result)) => result_line(index, result, &fields),
             (Ok(_), None) => unreachable!("every parsed grasp is evaluated"),
         })
@@ -258,35 +207,6 @@ pub fn prepare_space(
     }
 }
 
-/// One stderr line describing the prepared space (what the grasps are measured against).
-pub fn describe_space(space: &ObjectWrenchSpace) -> String {
-    match space.origin() {
-        SpaceOrigin::Mesh {
-            centre_of_mass: c,
-            centre_kind,
-            characteristic_length,
-            ..
-        } => format!(
-            "object wrench space: {} disturbances; torque reference {} ({}, {}, {}), torque \
-             scale {}{}",
-            space.len(),
-            match centre_kind {
-                CentreKind::Volume => "centre of mass",
-                CentreKind::SurfaceCentroid => "surface centroid (open mesh)",
-            },
-            short(c[0]),
-            short(c[1]),
-            short(c[2]),
-            short(*characteristic_length),
-            match space.vertices_without_normal() {
-                0 => String::new(),
-                n => format!("; {n} vertices without a normal left out"),
-            }
-        ),
-        SpaceOrigin::Given => format!("task wrench space: {} disturbances", space.len()),
-    }
-}
-
 fn run_ows(
     args: &GraspArgs,
     entries: Vec<Result<Grasp, String>>,
@@ -311,7 +231,7 @@ fn run_ows(
     let space = prepare_space(args.mesh.as_deref(), args.disturbances.as_deref(), friction)?;
     eprintln!(
         "pqh: note: {} (prepared in {:.1} ms)",
-        describe_space(&space),
+        space.describe(),
         started.elapsed().as_secs_f64() * 1e3
     );
     // With a mesh, every grasp is put in the mesh's torque frame; one that names its own is an

@@ -4,15 +4,11 @@ use crate::error::CliError;
 use crate::progress;
 use clap::{Args, ValueEnum};
 use pqhull::grasp::FrictionModel;
-use pqhull::grasp::GraspError;
 use pqhull::grasp::ows::ObjectWrenchSpace;
-use pqhull::mesh::Mesh;
-use pqhull::plan::{
-    BestComparison, PlanConfig, PlanError, PlanMethod, PlanMetric, PlanReport, plan_with_progress,
-};
-use serde_json::{Value, json};
+use pqhull::plan::{BestComparison, PlanConfig, PlanMethod, PlanMetric};
+use serde_json::json;
 use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 pub const LONG_ABOUT: &str = "\
 Plans grasps on a mesh the way GraspIt!'s random planner does: each sample puts --contacts
@@ -29,13 +25,6 @@ Without --mesh the object is the built-in spot.obj (Keenan Crane's cow, CC0; dat
 repository), whatever the working directory.
 --output writes an HTML view of the best grasp by Q1 beside the best by OWS (the seed paper's
 Fig. 10).";
-
-/// The mesh used when `--mesh` is not given: spot.obj (2930 vertices, CC0), built into the binary
-/// so that the default works from any directory.
-const DEFAULT_MESH: &str = include_str!("../../../data/meshes/spot.obj");
-
-/// The name the built-in mesh goes by in reports.
-pub const DEFAULT_MESH_NAME: &str = "built-in spot.obj";
 
 #[derive(Clone, Copy, Debug, ValueEnum)]
 pub enum PlanMetricArg {
@@ -84,66 +73,12 @@ pub struct PlanArgs {
     pub json: bool,
 }
 
-/// A generated ellipsoid with semi-axes 0.5 × 0.25 × 0.15: smooth, not a sphere.
-/// The mesh and a name for it: `mesh`, or the built-in spot.obj.
-pub fn load_object(mesh: Option<&Path>) -> Result<(Mesh, String), CliError> {
-    match mesh {
-        Some(path) => Mesh::load(path)
-            .map(|m| (m, path.display().to_string()))
-            .map_err(|e| CliError::Input(e.to_string())),
-        None => Mesh::from_obj_reader(DEFAULT_MESH.as_bytes(), DEFAULT_MESH_NAME)
-            .map(|m| (m, DEFAULT_MESH_NAME.to_string()))
-            .map_err(|e| CliError::Input(e.to_string())),
-    }
-}
-
 fn metric(arg: PlanMetricArg) -> PlanMetric {
     match arg {
         PlanMetricArg::Q1 => PlanMetric::Q1,
         PlanMetricArg::Qinf => PlanMetric::QInf,
         PlanMetricArg::Ows => PlanMetric::Ows,
     }
-}
-
-/// Runs one plan with a progress bar.
-pub fn run_plan(
-    mesh: &Mesh,
-    space: Option<&ObjectWrenchSpace>,
-    config: &PlanConfig,
-    method: PlanMethod,
-    label: &str,
-) -> Result<PlanReport, CliError> {
-    let bar = progress::bar(config.samples, label);
-    let report = plan_with_progress(mesh, space, config, method, |done| {
-        bar.set_position(done as u64)
-    })
-    .map_err(|e| match e {
-        // Sizes beyond a limit: the options' fault, not the geometry's.
-        PlanError::Empty
-        | PlanError::TooManySamples { .. }
-        | PlanError::Grasp(GraspError::TooManyContacts { .. }) => CliError::Usage(e.to_string()),
-        _ => CliError::Geometry(e.to_string()),
-    });
-    bar.finish_and_clear();
-    report
-}
-
-pub fn report_json(report: &PlanReport) -> Value {
-    json!({
-        "samples": report.samples,
-        "force_closure": report.force_closure,
-        "quality_s": report.quality_time.as_secs_f64(),
-        "other_s": report.other_time.as_secs_f64(),
-        "facets_created": report.facets_created,
-        "best": report.best.as_ref().map(|b| json!({
-            "sample": b.sample,
-            "value": b.value,
-            "contacts": b.grasp.contacts().iter().map(|c| json!({
-                "position": c.position(),
-                "normal": c.normal(),
-            })).collect::<Vec<_>>(),
-        })),
-    })
 }
 
 pub fn run(args: &PlanArgs) -> Result<(), CliError> {
@@ -154,7 +89,7 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
             "--contacts and --samples must be at least 1".into(),
         ));
     }
-    let (mesh, name) = load_object(args.mesh.as_deref())?;
+    let (mesh, name) = crate::input::object(args.mesh.as_deref())?;
     let needs_space = matches!(args.metric, PlanMetricArg::Ows) || args.output.is_some();
     let space = if needs_space {
         Some(
@@ -171,7 +106,7 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
         metric: metric(args.metric),
         seed: args.seed,
     };
-    let partial = run_plan(
+    let partial = progress::plan(
         &mesh,
         space.as_ref(),
         &config,
@@ -188,12 +123,12 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
             samples: full_samples,
             ..config
         };
-        let full = run_plan(&mesh, space.as_ref(), &short, PlanMethod::Full, "full hull")?;
+        let full = progress::plan(&mesh, space.as_ref(), &short, PlanMethod::Full, "full hull")?;
         // The partial plan over the same first samples, to compare the best grasps.
         let partial_short = if full_samples == args.samples {
             partial.clone()
         } else {
-            run_plan(
+            progress::plan(
                 &mesh,
                 space.as_ref(),
                 &short,
@@ -217,13 +152,7 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
         .as_ref()
         .map(|(full, partial_short)| (full, partial_short, full.compare_best(partial_short)));
     let same_best = compared.and_then(|(_, _, c)| c.same());
-    // A time ratio only when there was a best grasp to compare: grasps that are not force
-    // closure are settled by the partial method without any hull, so over those alone the
-    // ratio measures a full hull against a separation certificate, not the metric's work.
-    let speedup = compared.and_then(|(full, short, c)| {
-        (c != BestComparison::NothingToCompare)
-            .then(|| full.quality_seconds_per_sample() / short.quality_seconds_per_sample())
-    });
+    let speedup = compared.and_then(|(full, short, _)| full.quality_speedup_over(short));
     let note = compared.and_then(|(full, _, c)| {
         (c == BestComparison::NothingToCompare).then(|| {
             format!(
@@ -243,8 +172,8 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
             "edges": args.edges,
             "friction": args.friction,
             "seed": args.seed,
-            "partial": report_json(&partial),
-            "full": comparison.as_ref().map(|(full, _)| report_json(full)),
+            "partial": partial.to_json(),
+            "full": comparison.as_ref().map(|(full, _)| full.to_json()),
             "comparison": compared.map(|(_, _, c)| c.name()),
             "same_best": same_best,
             "quality_speedup": speedup,
