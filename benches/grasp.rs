@@ -23,7 +23,7 @@
 //! only); about 4 minutes on 2 quiet cores. One group: `... --bench grasp -- '^batch/'`.
 
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};
-use pqhull::geometry::Rng;
+use pqhull::bench::workloads::{BAR_FRICTION, bar_grasps};
 use pqhull::grasp::quality::{Evaluator, Method, Metric, evaluate_batch};
 use pqhull::grasp::{FrictionModel, Grasp};
 use std::hint::black_box;
@@ -42,11 +42,8 @@ fn configure() -> Criterion {
 
 /// The first `count` random 4-contact grasps with `k` cone edges.
 fn grasps(count: usize, k: usize) -> Vec<Grasp> {
-    let mut rng = Rng::new(SEED);
-    let friction = FrictionModel::try_new(0.5, k).expect("valid friction model");
-    (0..count)
-        .map(|_| Grasp::random_on_box(&mut rng, [0.5, 0.2, 0.1], 4, friction))
-        .collect()
+    let friction = FrictionModel::try_new(BAR_FRICTION, k).expect("valid friction model");
+    bar_grasps(SEED, count, 4, friction)
 }
 
 /// One group: every (label, metric, method) on the same grasp set, one evaluator each.

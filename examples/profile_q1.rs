@@ -11,7 +11,7 @@
 //! Arguments: `force-closure` or `other`, cone edges (32), grasps (200), rounds (30). Prints the
 //! mean time per grasp and the work counters.
 
-use pqhull::geometry::Rng;
+use pqhull::bench::workloads::bar_grasps;
 use pqhull::grasp::quality::{Evaluator, Method, Metric};
 use pqhull::grasp::{FrictionModel, Grasp};
 use std::time::Instant;
@@ -41,10 +41,7 @@ fn main() {
         std::process::exit(2);
     });
     // The grasps of `pqh bench gws` (seed 1, the 1 x 0.4 x 0.2 bar).
-    let mut rng = Rng::new(1);
-    let grasps: Vec<Grasp> = (0..count)
-        .map(|_| Grasp::random_on_box(&mut rng, [0.5, 0.2, 0.1], 4, friction))
-        .collect();
+    let grasps: Vec<Grasp> = bar_grasps(1, count, 4, friction);
     let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial);
     let chosen: Vec<&Grasp> = grasps
         .iter()

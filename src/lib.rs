@@ -26,6 +26,7 @@
 //! ```
 #![forbid(unsafe_code)]
 
+pub mod bench;
 pub mod geometry;
 pub mod grasp;
 pub mod hull;

@@ -30,11 +30,19 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod object;
+
+pub use object::DEFAULT_OBJECT_NAME;
+#[cfg(feature = "mesh")]
+pub use object::default_object;
+
 use crate::geometry::Rng;
+use crate::grasp::json::write_contact;
 use crate::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
 use crate::grasp::quality::{Evaluator, Method, Metric, QualityError};
 use crate::grasp::{Contact, FrictionModel, Grasp, GraspError, MAX_CONTACTS};
 use crate::mesh::{Mesh, SurfaceSampler};
+use serde_json::{Value, json};
 use std::fmt;
 use std::time::{Duration, Instant};
 
@@ -145,6 +153,53 @@ impl PlanReport {
     /// Seconds of quality evaluation per sample.
     pub fn quality_seconds_per_sample(&self) -> f64 {
         self.quality_time.as_secs_f64() / self.samples as f64
+    }
+
+    /// This plan's quality evaluation time per sample over `other`'s (a plan over the same
+    /// samples by another method), only when there was a best grasp to compare: grasps that are
+    /// not force closure are settled by the partial method without any hull, so over those
+    /// alone the ratio would time a full hull against a separation certificate, not the
+    /// metric's work.
+    pub fn quality_speedup_over(&self, other: &PlanReport) -> Option<f64> {
+        (self.compare_best(other) != BestComparison::NothingToCompare)
+            .then(|| self.quality_seconds_per_sample() / other.quality_seconds_per_sample())
+    }
+
+    /// The report as `pqh plan --json` gives it: `samples`, `force_closure`, `quality_s`,
+    /// `other_s`, `facets_created` and `best` (null, or its `sample`, `value` and `contacts`
+    /// as [`write_contact`] writes them).
+    ///
+    /// ```
+    /// use pqhull::grasp::FrictionModel;
+    /// use pqhull::mesh::Mesh;
+    /// use pqhull::plan::{plan, PlanConfig, Method, Metric};
+    ///
+    /// let object = Mesh::uv_sphere(0.3, 8, 16)?;
+    /// let config = PlanConfig {
+    ///     contacts: 3,
+    ///     samples: 20,
+    ///     friction: FrictionModel::try_new(0.5, 6)?,
+    ///     metric: Metric::Q1,
+    ///     seed: 2,
+    /// };
+    /// let report = plan(&object, None, &config, Method::Partial)?.to_json();
+    /// assert_eq!(report["samples"], 20);
+    /// assert!(report["best"].is_null() || report["best"]["contacts"].as_array().unwrap().len() == 3);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn to_json(&self) -> Value {
+        json!({
+            "samples": self.samples,
+            "force_closure": self.force_closure,
+            "quality_s": self.quality_time.as_secs_f64(),
+            "other_s": self.other_time.as_secs_f64(),
+            "facets_created": self.facets_created,
+            "best": self.best.as_ref().map(|b| json!({
+                "sample": b.sample,
+                "value": b.value,
+                "contacts": b.grasp.contacts().iter().map(write_contact).collect::<Vec<_>>(),
+            })),
+        })
     }
 }
 

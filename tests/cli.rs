@@ -707,3 +707,49 @@ fn hull_and_trace_share_strategy_names_and_the_query_flag() {
     }
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn the_sample_grasps_file_evaluates_by_every_metric() {
+    let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("data/grasps/sample.jsonl");
+    let path = path.to_str().unwrap();
+    let lines = |args: &[&str]| -> Vec<Value> {
+        let o = pqh(args, None);
+        assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+        stdout(&o)
+            .lines()
+            .map(|l| serde_json::from_str(l).unwrap())
+            .collect()
+    };
+    // (Q∞ by the full method would hull 8^4 and 16^3 Minkowski points here: minutes per grasp.)
+    for (metric, method) in [("q1", "full"), ("qinf", "partial")] {
+        let partial = lines(&["grasp", "--metric", metric, path]);
+        let full = lines(&["grasp", "--metric", metric, "--method", method, path]);
+        let closure: Vec<bool> = partial
+            .iter()
+            .map(|l| l["force_closure"].as_bool().unwrap())
+            .collect();
+        // A box grasp, an antipodal pinch (rank-deficient), a 3-finger grasp with tangents and a
+        // torque frame, three fingers on one face.
+        assert_eq!(closure, [true, false, true, false], "{metric}");
+        for (p, f) in partial.iter().zip(&full) {
+            assert_eq!(p["force_closure"], f["force_closure"], "{metric}");
+            let (a, b) = (
+                p["quality"].as_f64().unwrap(),
+                f["quality"].as_f64().unwrap(),
+            );
+            assert!(
+                (a - b).abs() <= 1e-12 * a.abs().max(1e-3),
+                "{metric}: {a} vs {b}"
+            );
+        }
+    }
+    let ows = lines(&[
+        "grasp",
+        "--metric",
+        "ows",
+        "--mesh",
+        &format!("{}/data/meshes/woody.obj", env!("CARGO_MANIFEST_DIR")),
+        path,
+    ]);
+    assert_eq!(ows.len(), 4);
+}

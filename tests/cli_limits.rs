@@ -506,3 +506,72 @@ fn notes_on_stderr_are_not_errors() {
         assert!(line.starts_with("pqh: note: "), "{line}");
     }
 }
+
+#[test]
+fn full_qinf_of_a_large_minkowski_sum_needs_force() {
+    // Two antipodal contacts × 40 edges: 1,600 Minkowski points (> 1,000), quick to hull.
+    let grasp = r#"{"contacts":[{"position":[1,0,0],"normal":[-1,0,0]},{"position":[-1,0,0],"normal":[1,0,0]}],"friction":0.5,"cone_edges":40}"#;
+    let refused = pqh(
+        &["grasp", "--metric", "qinf", "--method", "full"],
+        Some(grasp),
+    );
+    assert_eq!(refused.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&refused.stderr);
+    assert!(
+        err.contains("grasp 0") && err.contains("1600 Minkowski points") && err.contains("--force"),
+        "{err}"
+    );
+    assert!(
+        refused.stdout.is_empty(),
+        "nothing evaluated before the refusal"
+    );
+    let forced = pqh(
+        &["grasp", "--metric", "qinf", "--method", "full", "--force"],
+        Some(grasp),
+    );
+    assert!(
+        forced.status.success(),
+        "{}",
+        String::from_utf8_lossy(&forced.stderr)
+    );
+    let partial = pqh(&["grasp", "--metric", "qinf"], Some(grasp));
+    let value = |o: &std::process::Output| -> serde_json::Value {
+        serde_json::from_slice::<serde_json::Value>(&o.stdout).unwrap()["quality"].clone()
+    };
+    assert_eq!(value(&forced), value(&partial));
+    // The partial method and Q1 never need it.
+    assert!(
+        pqh(
+            &["grasp", "--metric", "q1", "--method", "full"],
+            Some(grasp)
+        )
+        .status
+        .success()
+    );
+}
+
+#[test]
+fn a_method_a_metric_does_not_take_is_a_usage_error() {
+    let grasp = r#"{"contacts":[{"position":[1,0,0],"normal":[-1,0,0]},{"position":[-1,0,0],"normal":[1,0,0]}],"friction":0.5,"cone_edges":8}"#;
+    let o = pqh(
+        &["grasp", "--metric", "q1", "--method", "ellipsoid"],
+        Some(grasp),
+    );
+    assert_eq!(o.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        err.contains("--metric q1 takes --method partial, full, qhull, not ellipsoid"),
+        "{err}"
+    );
+    // bench gws lists only the methods that compute Q1.
+    let help = String::from_utf8(pqh(&["bench", "gws", "-h"], None).stdout).unwrap();
+    let methods = help
+        .lines()
+        .find(|l| l.contains("--methods"))
+        .unwrap()
+        .to_string();
+    assert!(
+        methods.contains("[possible values: partial, full, qhull]"),
+        "{methods}"
+    );
+}

@@ -1,4 +1,4 @@
-//! Reading grasps from JSON: the format `pqh grasp` takes.
+//! Grasps as JSON: the format `pqh grasp` takes, and the lines it writes.
 //!
 //! A grasp is one JSON object
 //!
@@ -36,6 +36,13 @@
 //! );
 //! assert!(grasps[2].as_ref().unwrap_err().to_string().starts_with("line 4: not JSON: "));
 //! ```
+//!
+//! The writers go the other way: [`write_grasp`] gives the object [`parse_grasp`] reads back,
+//! and [`quality_line`] / [`error_line`] the result line `pqh grasp` prints for each grasp.
+
+mod write;
+
+pub use write::{error_line, quality_line, write_contact, write_grasp};
 
 use std::fmt;
 

@@ -115,6 +115,23 @@ impl Grasp {
         &self.contacts
     }
 
+    /// How many points Q∞'s Minkowski sum has when written out, `(k + z)^m` (k cone edges, z = 1
+    /// with the zero wrench, m contacts), or `None` beyond `usize`: what the full and Qhull
+    /// methods materialise and hull (the partial method never does). A guide to their cost.
+    ///
+    /// ```
+    /// use pqhull::grasp::{Contact, FrictionModel, Grasp};
+    /// let c = |x: f64| Contact::try_new([x, 0.0, 0.0], [-x, 0.0, 0.0], None);
+    /// let grasp = Grasp::builder(vec![c(1.0)?, c(-1.0)?], FrictionModel::try_new(0.5, 8)?).build()?;
+    /// assert_eq!(grasp.minkowski_points(false), Some(64));
+    /// assert_eq!(grasp.minkowski_points(true), Some(81));
+    /// # Ok::<(), pqhull::grasp::GraspError>(())
+    /// ```
+    pub fn minkowski_points(&self, with_zero_wrench: bool) -> Option<usize> {
+        let per = self.friction.cone_edges() + usize::from(with_zero_wrench);
+        per.checked_pow(u32::try_from(self.contacts.len()).ok()?)
+    }
+
     /// The number of contacts m (1 ≤ m ≤ [`MAX_CONTACTS`]).
     pub fn contact_count(&self) -> usize {
         self.contacts.len()

@@ -51,6 +51,72 @@ impl Grasp {
             .expect("random_on_box: at least one contact")
     }
 
+    /// A random grasp with `contacts` fingers (at most 6) on distinct faces of the box
+    /// [−h₀, h₀] × [−h₁, h₁] × [−h₂, h₂]: the faces are a uniform choice of `contacts` of the six
+    /// (a partial Fisher–Yates shuffle), each finger at a uniform point of its face, pushing along
+    /// the face's inward normal n = −s·e_a (face x_a = s·h_a) with tangent e_(a+1 mod 3). Default
+    /// torque frame: the box's centre and ρ = 1, so the torques are the plain p × f. This is the
+    /// 6-D wrench set of `pqh compare`; unlike [`Grasp::random_on_box`], no two fingers share a
+    /// face, so small grasps are often force closure.
+    ///
+    /// ```
+    /// use pqhull::grasp::{FrictionModel, Grasp};
+    /// use pqhull::geometry::Rng;
+    /// let g = Grasp::random_on_distinct_faces(&mut Rng::new(1), [0.5; 3], 4, FrictionModel::try_new(0.5, 8)?);
+    /// let mut faces: Vec<_> = g.contacts().iter().map(|c| c.normal().map(|x| x as i8)).collect();
+    /// faces.sort();
+    /// faces.dedup();
+    /// assert_eq!(faces.len(), 4);
+    /// assert_eq!(g.torque_scale(), 1.0);
+    /// # Ok::<(), pqhull::grasp::GraspError>(())
+    /// ```
+    ///
+    /// # Panics
+    /// If `contacts` is 0 or more than 6, or a half extent is not finite and positive.
+    pub fn random_on_distinct_faces(
+        rng: &mut Rng,
+        half: [f64; 3],
+        contacts: usize,
+        friction: FrictionModel,
+    ) -> Grasp {
+        assert!(
+            (1..=6).contains(&contacts),
+            "random_on_distinct_faces: 1 to 6 contacts (a box has six faces), got {contacts}"
+        );
+        assert!(
+            half.iter().all(|h| h.is_finite() && *h > 0.0),
+            "random_on_distinct_faces: half extents must be finite and positive, got {half:?}"
+        );
+        // Face 2a is x_a = −h_a, face 2a + 1 is x_a = +h_a.
+        let mut faces: [usize; 6] = [0, 1, 2, 3, 4, 5];
+        for i in 0..contacts {
+            let j = i + rng.index(6 - i);
+            faces.swap(i, j);
+        }
+        let fingers = faces[..contacts]
+            .iter()
+            .map(|&face| {
+                let (axis, sign) = (face / 2, if face % 2 == 0 { -1.0 } else { 1.0 });
+                let mut p = [0.0; 3];
+                for (c, x) in p.iter_mut().enumerate() {
+                    *x = if c == axis {
+                        half[c] * sign
+                    } else {
+                        rng.uniform_in(-half[c], half[c])
+                    };
+                }
+                let mut n = [0.0; 3];
+                n[axis] = -sign;
+                let mut t = [0.0; 3];
+                t[(axis + 1) % 3] = 1.0;
+                Contact::try_new(p, n, Some(t)).expect("axes are a valid normal and tangent")
+            })
+            .collect();
+        Grasp::builder(fingers, friction)
+            .build()
+            .expect("1 to 6 contacts")
+    }
+
     /// A random grasp with `contacts` fingers at area-uniform points of a mesh's surface
     /// (`sampler`, built once per mesh), each pushing along its triangle's inward normal (default
     /// tangent), in the default torque frame; [`ObjectWrenchSpace::frame`] puts it in an object's

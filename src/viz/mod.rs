@@ -11,6 +11,8 @@
 //! * [`svg::trace_svgs`] — one static SVG picture per step of a 2-D trace.
 //! * [`scene`] — the 3-D viewer itself, for any scene of coloured triangles, points, segments
 //!   and labels ([`scene::scene_page`]).
+//! * [`plan_scene`] — a plan's best grasps by Q1 and by Q_OWS side by side on the object
+//!   ([`plan_scene::plan_page`]).
 //!
 //! ```
 //! use pqhull::{ClosestToOrigin, Hull};
@@ -28,6 +30,7 @@
 
 pub mod html;
 mod json;
+pub mod plan_scene;
 pub mod scene;
 pub mod svg;
 

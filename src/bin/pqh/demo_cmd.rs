@@ -2,7 +2,7 @@
 //! hulls, and write the views.
 
 use crate::error::CliError;
-use crate::plan_cmd::{load_object, report_json, run_plan};
+use crate::progress;
 use clap::Args;
 use pqhull::grasp::FrictionModel;
 use pqhull::grasp::ows::ObjectWrenchSpace;
@@ -54,13 +54,9 @@ struct MetricRun {
 }
 
 impl MetricRun {
-    /// The time ratio, only when there was a best grasp to compare (grasps that are not force
-    /// closure are settled without a hull by the partial method: over those alone the ratio
-    /// would time a full hull against a separation certificate).
+    /// Full over partial quality time, when there was a best grasp to compare.
     fn speedup(&self) -> Option<f64> {
-        (self.comparison() != BestComparison::NothingToCompare).then(|| {
-            self.full.quality_seconds_per_sample() / self.partial_short.quality_seconds_per_sample()
-        })
+        self.full.quality_speedup_over(&self.partial_short)
     }
 
     fn comparison(&self) -> BestComparison {
@@ -73,7 +69,7 @@ pub fn run(args: &DemoArgs) -> Result<(), CliError> {
         return Err(CliError::Usage("--samples must be at least 1".into()));
     }
     let friction = FrictionModel::try_new(0.5, 8).map_err(|e| CliError::Usage(e.to_string()))?;
-    let (mesh, name) = load_object(args.mesh.as_deref())?;
+    let (mesh, name) = crate::input::object(args.mesh.as_deref())?;
     let space = ObjectWrenchSpace::from_mesh(&mesh, friction)
         .map_err(|e| CliError::Input(format!("{name}: {e}")))?;
     let full_samples = args.full_samples.clamp(1, args.samples);
@@ -93,9 +89,9 @@ pub fn run(args: &DemoArgs) -> Result<(), CliError> {
         let s = Some(&space);
         runs.push(MetricRun {
             name: label,
-            partial: run_plan(&mesh, s, &config, Method::Partial, label)?,
-            partial_short: run_plan(&mesh, s, &short, Method::Partial, label)?,
-            full: run_plan(&mesh, s, &short, Method::Full, "full hull")?,
+            partial: progress::plan(&mesh, s, &config, Method::Partial, label)?,
+            partial_short: progress::plan(&mesh, s, &short, Method::Partial, label)?,
+            full: progress::plan(&mesh, s, &short, Method::Full, "full hull")?,
         });
     }
     let q1_config = PlanConfig {
@@ -122,8 +118,8 @@ pub fn run(args: &DemoArgs) -> Result<(), CliError> {
             "seed": args.seed,
             "metrics": runs.iter().map(|r| json!({
                 "metric": r.name,
-                "partial": report_json(&r.partial),
-                "full": report_json(&r.full),
+                "partial": r.partial.to_json(),
+                "full": r.full.to_json(),
                 "quality_speedup": r.speedup(),
                 "comparison": r.comparison().name(),
                 "same_best": r.comparison().same(),

@@ -1,5 +1,7 @@
 //! The CLI's error type and exit codes.
 
+use pqhull::grasp::GraspError;
+use pqhull::plan::PlanError;
 use std::fmt;
 
 /// Everything that makes `pqh` fail. Each is reported as one `pqh: error: ` line on stderr.
@@ -30,6 +32,21 @@ impl fmt::Display for CliError {
         match self {
             CliError::Usage(m) | CliError::Input(m) | CliError::Geometry(m) => f.write_str(m),
             CliError::Output(e) => write!(f, "cannot write output: {e}"),
+        }
+    }
+}
+
+/// A plan that could not run: sizes beyond a limit are the options' fault (usage), anything else
+/// the geometry's.
+impl From<PlanError> for CliError {
+    fn from(e: PlanError) -> Self {
+        match e {
+            PlanError::Empty
+            | PlanError::TooManySamples { .. }
+            | PlanError::Grasp(GraspError::TooManyContacts { .. }) => {
+                CliError::Usage(e.to_string())
+            }
+            _ => CliError::Geometry(e.to_string()),
         }
     }
 }

@@ -15,25 +15,14 @@ pub fn number(x: f64) -> String {
     }
 }
 
-/// `x` to six decimals, or six significant digits with an exponent.
-pub fn short(x: f64) -> String {
-    if everyday(x) {
-        format!("{x:.6}")
-    } else {
-        format!("{x:.5e}")
-    }
-}
-
 #[cfg(test)]
 mod tests {
-    use super::{number, short};
+    use super::number;
 
     #[test]
     fn exponents_outside_the_everyday_range() {
         assert_eq!(number(1e200), "1e200");
         assert_eq!(number(-2.5e-300), "-2.5e-300");
         assert_eq!(number(0.125), "0.125");
-        assert_eq!(short(1e-200), "1.00000e-200");
-        assert_eq!(short(-0.5), "-0.500000");
     }
 }

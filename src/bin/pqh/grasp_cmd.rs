@@ -2,16 +2,16 @@
 //! order.
 
 use crate::error::CliError;
-use crate::format::short;
-use crate::limits::MAX_THREADS;
-use clap::{Args, ValueEnum};
+use crate::limits::{FULL_QINF_POINTS, MAX_THREADS};
+use crate::methods::{MethodArg, MetricArg, method_for};
+use clap::Args;
 use pqhull::Stats;
-use pqhull::grasp::json::{parse_grasp, split_grasps};
-use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsQuality, SpaceOrigin};
+use pqhull::grasp::json::{error_line, parse_grasp, quality_line, split_grasps};
+use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsQuality};
 use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, QualityError};
 use pqhull::grasp::{FrictionModel, Grasp};
-use pqhull::mesh::{CentreKind, Mesh};
-use serde_json::{Value, json};
+use pqhull::mesh::Mesh;
+use serde_json::Value;
 use std::io::{Read, Write};
 use std::path::PathBuf;
 
@@ -44,30 +44,6 @@ Limits (docs/limits.md): cone_edges from 3 to 1024, 1 to 256 contacts per grasp,
 grasp at all, or in which no grasp could be read (every one is an error line), exits with status
 2 after the error lines.";
 
-#[derive(Clone, Copy, Debug, ValueEnum)]
-pub enum MetricArg {
-    /// Ferrari–Canny Q1 over the union of contact wrenches
-    Q1,
-    /// Q∞ over the Minkowski sum (implicit for the partial method)
-    Qinf,
-    /// Object wrench space metric (needs --mesh or --disturbances)
-    Ows,
-}
-
-#[derive(Clone, Copy, Debug, ValueEnum)]
-pub enum MethodArg {
-    /// Partial hull: stop once the nearest facet is certain (default)
-    Partial,
-    /// Full hull with pqhull's engine
-    Full,
-    /// Full hull with Qhull (needs the `qhull` feature)
-    Qhull,
-    /// OWS only: full hull, every disturbance against every facet
-    Brute,
-    /// OWS only: Borst et al.'s enclosing-ellipsoid approximation
-    Ellipsoid,
-}
-
 #[derive(Debug, Args)]
 pub struct GraspArgs {
     /// Grasps file (JSON, JSON array or JSON Lines); '-' or nothing reads standard input
@@ -84,6 +60,10 @@ pub struct GraspArgs {
     /// Q∞ with the zero wrench added to every contact (GraspIt!'s variant)
     #[arg(long)]
     pub zero_wrench: bool,
+    /// Q∞ by --method full or qhull above 1000 Minkowski points per grasp: run it anyway
+    /// (it takes minutes per grasp; --method partial gives the same value in milliseconds)
+    #[arg(long)]
+    pub force: bool,
     /// OWS: the object's mesh (OBJ or STL)
     #[arg(long, conflicts_with = "disturbances")]
     pub mesh: Option<PathBuf>,
@@ -96,34 +76,6 @@ pub struct GraspArgs {
     /// OWS with --mesh: edges of the disturbance cones, 3 to 1024 (default: the first grasp's)
     #[arg(long, value_parser = crate::limits::cone_edges())]
     pub ows_edges: Option<usize>,
-}
-
-pub fn method(arg: MethodArg) -> Result<Method, CliError> {
-    match arg {
-        MethodArg::Partial => Ok(Method::Partial),
-        MethodArg::Full => Ok(Method::Full),
-        MethodArg::Qhull if cfg!(feature = "qhull") => Ok(Method::Qhull),
-        MethodArg::Qhull => Err(CliError::Usage(
-            "--method qhull needs pqh built with the `qhull` feature".into(),
-        )),
-        MethodArg::Brute | MethodArg::Ellipsoid => Err(CliError::Usage(
-            "--method brute and ellipsoid are for --metric ows; q1 and qinf take partial, full \
-             or qhull"
-                .into(),
-        )),
-    }
-}
-
-/// The OWS method for `arg`.
-pub fn ows_method(arg: MethodArg) -> Result<Method, CliError> {
-    match arg {
-        MethodArg::Partial => Ok(Method::Partial),
-        MethodArg::Brute => Ok(Method::Full),
-        MethodArg::Ellipsoid => Ok(Method::Ellipsoid),
-        MethodArg::Full | MethodArg::Qhull => Err(CliError::Usage(
-            "--metric ows takes --method partial, brute or ellipsoid".into(),
-        )),
-    }
 }
 
 fn read_input(file: &Option<PathBuf>) -> Result<String, CliError> {
@@ -157,23 +109,38 @@ fn result_line<T>(
     match result {
         Ok(q) => {
             let (force_closure, quality, stats) = fields(q);
-            json!({
-                "index": index,
-                "force_closure": force_closure,
-                "quality": quality,
-                "stats": {
-                    "points_processed": stats.points_processed,
-                    "facets_created": stats.facets_created,
-                    "elapsed_us": stats.elapsed.as_secs_f64() * 1e6,
-                }
-            })
+            quality_line(index, force_closure, quality, &stats)
         }
-        Err(e) => json!({"index": index, "error": e.to_string()}),
+        Err(e) => error_line(index, &e.to_string()),
     }
 }
 
 /// Evaluates every parsed grasp on `threads` workers (one evaluator each, with a progress bar)
 /// and returns the output lines in input order; entries that did not parse keep their error.
+/// Q∞ by a full method on a grasp whose Minkowski sum has more than
+/// [`FULL_QINF_POINTS`] points: a usage error (before any work) naming the grasp, unless forced.
+fn refuse_large_minkowski_sums(
+    entries: &[Result<Grasp, String>],
+    zero_wrench: bool,
+) -> Result<(), CliError> {
+    let largest = entries
+        .iter()
+        .enumerate()
+        .filter_map(|(i, g)| Some((i, g.as_ref().ok()?.minkowski_points(zero_wrench))))
+        .max_by_key(|&(_, n)| n.unwrap_or(usize::MAX));
+    match largest {
+        Some((index, n)) if n.is_none_or(|n| n > FULL_QINF_POINTS) => {
+            let points = n.map_or("more than 2^64".to_string(), |n| n.to_string());
+            Err(CliError::Usage(format!(
+                "grasp {index}: Q∞ by a full method hulls its {points} Minkowski points (more than \
+                 {FULL_QINF_POINTS}: minutes per grasp; 4 contacts × 8 edges took 89 s); \
+                 --method partial gives the same value in milliseconds, --force runs it anyway"
+            )))
+        }
+        _ => Ok(()),
+    }
+}
+
 fn evaluate_lines<E, T: Send>(
     entries: &[Result<Grasp, String>],
     threads: Option<usize>,
@@ -199,7 +166,7 @@ fn evaluate_lines<E, T: Send>(
         .zip(&results)
         .enumerate()
         .map(|(index, (entry, result))| match (entry, result) {
-            (Err(message), _) => json!({"index": index, "error": message}),
+            (Err(message), _) => error_line(index, message),
             (Ok(_), Some(result)) => result_line(index, result, &fields),
             (Ok(_), None) => unreachable!("every parsed grasp is evaluated"),
         })
@@ -258,41 +225,12 @@ pub fn prepare_space(
     }
 }
 
-/// One stderr line describing the prepared space (what the grasps are measured against).
-pub fn describe_space(space: &ObjectWrenchSpace) -> String {
-    match space.origin() {
-        SpaceOrigin::Mesh {
-            centre_of_mass: c,
-            centre_kind,
-            characteristic_length,
-            ..
-        } => format!(
-            "object wrench space: {} disturbances; torque reference {} ({}, {}, {}), torque \
-             scale {}{}",
-            space.len(),
-            match centre_kind {
-                CentreKind::Volume => "centre of mass",
-                CentreKind::SurfaceCentroid => "surface centroid (open mesh)",
-            },
-            short(c[0]),
-            short(c[1]),
-            short(c[2]),
-            short(*characteristic_length),
-            match space.vertices_without_normal() {
-                0 => String::new(),
-                n => format!("; {n} vertices without a normal left out"),
-            }
-        ),
-        SpaceOrigin::Given => format!("task wrench space: {} disturbances", space.len()),
-    }
-}
-
 fn run_ows(
     args: &GraspArgs,
     entries: Vec<Result<Grasp, String>>,
     values: &[Result<Value, String>],
 ) -> Result<Vec<Value>, CliError> {
-    let method = ows_method(args.method)?;
+    let method = method_for(args.method, Metric::Ows)?;
     let first = entries
         .iter()
         .find_map(|g| g.as_ref().ok())
@@ -311,7 +249,7 @@ fn run_ows(
     let space = prepare_space(args.mesh.as_deref(), args.disturbances.as_deref(), friction)?;
     eprintln!(
         "pqh: note: {} (prepared in {:.1} ms)",
-        describe_space(&space),
+        space.describe(),
         started.elapsed().as_secs_f64() * 1e3
     );
     // With a mesh, every grasp is put in the mesh's torque frame; one that names its own is an
@@ -379,13 +317,11 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
     let lines = match args.metric {
         MetricArg::Ows => run_ows(args, entries, &values)?,
         MetricArg::Q1 | MetricArg::Qinf => {
-            let metric = match args.metric {
-                MetricArg::Qinf => Metric::QInf {
-                    with_zero_wrench: args.zero_wrench,
-                },
-                _ => Metric::Q1,
-            };
-            let method = method(args.method)?;
+            let metric = args.metric.metric(args.zero_wrench);
+            let method = method_for(args.method, metric)?;
+            if metric != Metric::Q1 && method != Method::Partial && !args.force {
+                refuse_large_minkowski_sums(&entries, args.zero_wrench)?;
+            }
             evaluate_lines(
                 &entries,
                 args.threads,

@@ -1,5 +1,6 @@
 //! `pqh hull`: the convex hull of a points file, full or partial.
 
+use crate::dispatch::with_dimension;
 use crate::error::CliError;
 use crate::format::number;
 use crate::input::{Source, parse_point};
@@ -102,19 +103,10 @@ pub fn run(args: &HullArgs) -> Result<(), CliError> {
         json: args.json,
         source: &name,
     };
-    match d {
-        2 => job.run::<2>(),
-        3 => job.run::<3>(),
-        4 => job.run::<4>(),
-        5 => job.run::<5>(),
-        6 => job.run::<6>(),
-        7 => job.run::<7>(),
-        8 => job.run::<8>(),
-        _ => Err(CliError::Input(format!(
-            "{name}: the points have dimension {d} (from line {first_line}); pqh supports \
-             dimensions 2 to 8"
-        ))),
-    }
+    with_dimension!(d, |D| job.run::<D>(), else |_| Err(CliError::Input(format!(
+        "{name}: the points have dimension {d} (from line {first_line}); pqh supports \
+         dimensions 2 to 8"
+    ))))
 }
 
 /// What to build and print, independent of the dimension.

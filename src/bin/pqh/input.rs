@@ -1,8 +1,20 @@
-//! Reading points files (or standard input).
+//! Reading points files (or standard input) and meshes.
 
 use crate::error::CliError;
+use pqhull::mesh::Mesh;
+use pqhull::plan::{DEFAULT_OBJECT_NAME, default_object};
 use pqhull::points_file::{PointTable, ReadError, read_points};
 use std::path::Path;
+
+/// The object of `--mesh` and a name for it: the file, or the library's default object.
+pub fn object(mesh: Option<&Path>) -> Result<(Mesh, String), CliError> {
+    match mesh {
+        Some(path) => Mesh::load(path)
+            .map(|m| (m, path.display().to_string()))
+            .map_err(|e| CliError::Input(e.to_string())),
+        None => Ok((default_object(), DEFAULT_OBJECT_NAME.to_string())),
+    }
+}
 
 /// Where points come from: a file, or standard input for `-` or no path.
 pub struct Source<'a> {

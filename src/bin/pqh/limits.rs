@@ -19,6 +19,15 @@ pub const MAX_THREADS: usize = 256;
 /// and evaluates each by several methods; 100,000 is far more than a stable median needs.
 pub const MAX_BENCH_GRASPS: usize = 100_000;
 
+/// The most Minkowski points per grasp (`Grasp::minkowski_points`) that Q∞ by a full method
+/// (`--method full` or `qhull`) hulls without `--force` (`pqh grasp`) or an explicit
+/// `--full-samples` (`pqh plan`).
+///
+/// Why: the full hull of a Minkowski sum is exact but slow, its points being highly degenerate
+/// (4 contacts × 8 edges, 4,096 points, took 89 s per grasp on the development machine), while
+/// the partial method gives the same value in milliseconds.
+pub const FULL_QINF_POINTS: usize = 1000;
+
 /// The parser of a whole-number option from `min` to `max` inclusive, run while the command line
 /// is parsed; its error names the bound (clap adds the option and the value).
 pub fn count(

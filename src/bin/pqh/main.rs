@@ -2,22 +2,26 @@
 //!
 //! Parsing, I/O and output only; every computation is a call into the `pqhull` library.
 
+// One file per command (`*_cmd.rs`, `bench_ows.rs`); the others are helpers the commands share.
+// A command file uses helpers only, never another command's file.
 mod bench_cmd;
 mod bench_ows;
 mod compare_cmd;
 mod demo_cmd;
+mod dispatch;
 mod error;
 mod format;
 mod grasp_cmd;
 mod hull_cmd;
 mod input;
 mod limits;
+mod methods;
 mod plan_cmd;
 mod plan_view;
 mod progress;
 mod trace_cmd;
 
-use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
+use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
 use error::CliError;
 use std::process::ExitCode;
 
@@ -63,12 +67,12 @@ enum Command {
     /// Convex hull of a points file (full, or partial toward a query point)
     #[command(long_about = hull_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
     Hull(hull_cmd::HullArgs),
-    /// Grasp quality (Q1, Q∞) of grasps given as JSON, one JSON line per grasp
+    /// Grasp quality (Q1, Q∞, Q_OWS) of grasps given as JSON, one JSON line per grasp
     #[command(long_about = grasp_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
     Grasp(grasp_cmd::GraspArgs),
     /// Benchmarks: `pqh bench gws` compares every method on random grasps
     #[command(after_help = EXIT_STATUS_HELP)]
-    Bench(bench_cmd::BenchArgs),
+    Bench(BenchArgs),
     /// A GraspIt!-like random grasp planner: partial vs full-hull quality evaluation
     #[command(long_about = plan_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
     Plan(plan_cmd::PlanArgs),
@@ -81,6 +85,22 @@ enum Command {
     /// Full vs partial hull on built-in seeded point sets: agreement and speed-up
     #[command(long_about = compare_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
     Compare(compare_cmd::CompareArgs),
+}
+
+#[derive(Debug, Args)]
+struct BenchArgs {
+    #[command(subcommand)]
+    which: Which,
+}
+
+#[derive(Debug, Subcommand)]
+enum Which {
+    /// Random 4-contact grasps on a box, k = 4 … 64: Q1 partial vs full vs Qhull, Q∞, batch
+    /// throughput on 1…n threads
+    #[command(long_about = bench_cmd::GWS_LONG_ABOUT)]
+    Gws(bench_cmd::GwsArgs),
+    /// Q_OWS on random surface grasps of a mesh: partial vs brute force vs ellipsoid, vs Q1
+    Ows(bench_ows::OwsArgs),
 }
 
 /// The command with every limit attached (see `limits`).
@@ -174,7 +194,12 @@ fn main() -> ExitCode {
         Command::Demo(args) => demo_cmd::run(&args),
         Command::Compare(args) => compare_cmd::run(&args),
         Command::Grasp(args) => grasp_cmd::run(&args),
-        Command::Bench(args) => bench_cmd::run(&args),
+        Command::Bench(BenchArgs {
+            which: Which::Gws(args),
+        }) => bench_cmd::run(&args),
+        Command::Bench(BenchArgs {
+            which: Which::Ows(args),
+        }) => bench_ows::run(&args),
         Command::Trace(args) => trace_cmd::run(&args),
         Command::Plan(args) => plan_cmd::run(&args),
     };

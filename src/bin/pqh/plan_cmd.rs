@@ -1,17 +1,17 @@
 //! `pqh plan`: a GraspIt!-like random planner, partial vs full-hull quality evaluation.
 
 use crate::error::CliError;
+use crate::limits::FULL_QINF_POINTS;
+use crate::methods::MetricArg;
 use crate::progress;
-use clap::{Args, ValueEnum};
+use clap::Args;
 use pqhull::grasp::FrictionModel;
-use pqhull::grasp::GraspError;
 use pqhull::grasp::ows::ObjectWrenchSpace;
-use pqhull::grasp::quality::{Method, Metric};
-use pqhull::mesh::Mesh;
-use pqhull::plan::{BestComparison, PlanConfig, PlanError, PlanReport, plan_with_progress};
-use serde_json::{Value, json};
+use pqhull::grasp::quality::Method;
+use pqhull::plan::{BestComparison, PlanConfig};
+use serde_json::json;
 use std::io::Write;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 
 pub const LONG_ABOUT: &str = "\
 Plans grasps on a mesh the way GraspIt!'s random planner does: each sample puts --contacts
@@ -29,23 +29,6 @@ repository), whatever the working directory.
 --output writes an HTML view of the best grasp by Q1 beside the best by OWS (the seed paper's
 Fig. 10).";
 
-/// The mesh used when `--mesh` is not given: spot.obj (2930 vertices, CC0), built into the binary
-/// so that the default works from any directory.
-const DEFAULT_MESH: &str = include_str!("../../../data/meshes/spot.obj");
-
-/// The name the built-in mesh goes by in reports.
-pub const DEFAULT_MESH_NAME: &str = "built-in spot.obj";
-
-#[derive(Clone, Copy, Debug, ValueEnum)]
-pub enum PlanMetricArg {
-    /// Ferrari–Canny Q1
-    Q1,
-    /// Q∞ over the Minkowski sum
-    Qinf,
-    /// Object wrench space metric
-    Ows,
-}
-
 #[derive(Debug, Args)]
 pub struct PlanArgs {
     /// Object mesh (OBJ or STL) [default: the built-in spot.obj]
@@ -58,14 +41,13 @@ pub struct PlanArgs {
     #[arg(long, default_value_t = 200, value_parser = crate::limits::samples())]
     pub samples: usize,
     /// Samples for the full-hull run (the first ones; 0: skip it) [default: --samples; for qinf,
-    /// 2: the full method builds the hull of all k^m Minkowski points, about 2 minutes per grasp
-    /// on spot at 4 contacts × 8 edges; with so few samples neither run may find a force-closure
-    /// grasp, and then nothing is compared; at most 1000000]
+    /// 2, or 0 when k^m is over 1000 Minkowski points: the full method hulls all of them, about
+    /// 90 s per grasp at 4 contacts × 8 edges; at most 1000000]
     #[arg(long, value_parser = crate::limits::count(0, crate::limits::MAX_SAMPLES))]
     pub full_samples: Option<usize>,
     /// Metric to maximise
-    #[arg(long, value_enum, default_value_t = PlanMetricArg::Q1)]
-    pub metric: PlanMetricArg,
+    #[arg(long, value_enum, default_value_t = MetricArg::Q1)]
+    pub metric: MetricArg,
     /// Friction coefficient (contacts and, for ows, disturbances)
     #[arg(long, default_value_t = 0.5)]
     pub friction: f64,
@@ -83,70 +65,6 @@ pub struct PlanArgs {
     pub json: bool,
 }
 
-/// A generated ellipsoid with semi-axes 0.5 × 0.25 × 0.15: smooth, not a sphere.
-/// The mesh and a name for it: `mesh`, or the built-in spot.obj.
-pub fn load_object(mesh: Option<&Path>) -> Result<(Mesh, String), CliError> {
-    match mesh {
-        Some(path) => Mesh::load(path)
-            .map(|m| (m, path.display().to_string()))
-            .map_err(|e| CliError::Input(e.to_string())),
-        None => Mesh::from_obj_reader(DEFAULT_MESH.as_bytes(), DEFAULT_MESH_NAME)
-            .map(|m| (m, DEFAULT_MESH_NAME.to_string()))
-            .map_err(|e| CliError::Input(e.to_string())),
-    }
-}
-
-fn metric(arg: PlanMetricArg) -> Metric {
-    match arg {
-        PlanMetricArg::Q1 => Metric::Q1,
-        PlanMetricArg::Qinf => Metric::QInf {
-            with_zero_wrench: false,
-        },
-        PlanMetricArg::Ows => Metric::Ows,
-    }
-}
-
-/// Runs one plan with a progress bar.
-pub fn run_plan(
-    mesh: &Mesh,
-    space: Option<&ObjectWrenchSpace>,
-    config: &PlanConfig,
-    method: Method,
-    label: &str,
-) -> Result<PlanReport, CliError> {
-    let bar = progress::bar(config.samples, label);
-    let report = plan_with_progress(mesh, space, config, method, |done| {
-        bar.set_position(done as u64)
-    })
-    .map_err(|e| match e {
-        // Sizes beyond a limit: the options' fault, not the geometry's.
-        PlanError::Empty
-        | PlanError::TooManySamples { .. }
-        | PlanError::Grasp(GraspError::TooManyContacts { .. }) => CliError::Usage(e.to_string()),
-        _ => CliError::Geometry(e.to_string()),
-    });
-    bar.finish_and_clear();
-    report
-}
-
-pub fn report_json(report: &PlanReport) -> Value {
-    json!({
-        "samples": report.samples,
-        "force_closure": report.force_closure,
-        "quality_s": report.quality_time.as_secs_f64(),
-        "other_s": report.other_time.as_secs_f64(),
-        "facets_created": report.facets_created,
-        "best": report.best.as_ref().map(|b| json!({
-            "sample": b.sample,
-            "value": b.value,
-            "contacts": b.grasp.contacts().iter().map(|c| json!({
-                "position": c.position(),
-                "normal": c.normal(),
-            })).collect::<Vec<_>>(),
-        })),
-    })
-}
-
 pub fn run(args: &PlanArgs) -> Result<(), CliError> {
     let friction = FrictionModel::try_new(args.friction, args.edges)
         .map_err(|e| CliError::Usage(format!("--friction/--edges: {e}")))?;
@@ -155,8 +73,8 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
             "--contacts and --samples must be at least 1".into(),
         ));
     }
-    let (mesh, name) = load_object(args.mesh.as_deref())?;
-    let needs_space = matches!(args.metric, PlanMetricArg::Ows) || args.output.is_some();
+    let (mesh, name) = crate::input::object(args.mesh.as_deref())?;
+    let needs_space = matches!(args.metric, MetricArg::Ows) || args.output.is_some();
     let space = if needs_space {
         Some(
             ObjectWrenchSpace::from_mesh(&mesh, friction)
@@ -169,12 +87,25 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
         contacts: args.contacts,
         samples: args.samples,
         friction,
-        metric: metric(args.metric),
+        metric: args.metric.metric(false),
         seed: args.seed,
     };
-    let partial = run_plan(&mesh, space.as_ref(), &config, Method::Partial, "partial")?;
+    let partial = progress::plan(&mesh, space.as_ref(), &config, Method::Partial, "partial")?;
+    // Q∞ by the full method hulls k^m Minkowski points per sample: minutes each above
+    // FULL_QINF_POINTS (4 × 8: 4,096 points, 89 s). Then the comparison runs only when asked for.
+    let minkowski = args.edges.checked_pow(args.contacts as u32);
     let default_full = match args.metric {
-        PlanMetricArg::Qinf => 2,
+        MetricArg::Qinf if minkowski.is_none_or(|n| n > FULL_QINF_POINTS) => {
+            if args.full_samples.is_none() {
+                eprintln!(
+                    "pqh: note: no full-hull comparison: Q∞ by the full method hulls {} Minkowski \
+                     points per sample (minutes each); --full-samples N runs it on N samples",
+                    minkowski.map_or("more than 2^64".to_string(), |n| n.to_string())
+                );
+            }
+            0
+        }
+        MetricArg::Qinf => 2,
         _ => args.samples,
     };
     let full_samples = args.full_samples.unwrap_or(default_full).min(args.samples);
@@ -183,12 +114,12 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
             samples: full_samples,
             ..config
         };
-        let full = run_plan(&mesh, space.as_ref(), &short, Method::Full, "full hull")?;
+        let full = progress::plan(&mesh, space.as_ref(), &short, Method::Full, "full hull")?;
         // The partial plan over the same first samples, to compare the best grasps.
         let partial_short = if full_samples == args.samples {
             partial.clone()
         } else {
-            run_plan(&mesh, space.as_ref(), &short, Method::Partial, "partial")?
+            progress::plan(&mesh, space.as_ref(), &short, Method::Partial, "partial")?
         };
         Some((full, partial_short))
     } else {
@@ -206,13 +137,7 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
         .as_ref()
         .map(|(full, partial_short)| (full, partial_short, full.compare_best(partial_short)));
     let same_best = compared.and_then(|(_, _, c)| c.same());
-    // A time ratio only when there was a best grasp to compare: grasps that are not force
-    // closure are settled by the partial method without any hull, so over those alone the
-    // ratio measures a full hull against a separation certificate, not the metric's work.
-    let speedup = compared.and_then(|(full, short, c)| {
-        (c != BestComparison::NothingToCompare)
-            .then(|| full.quality_seconds_per_sample() / short.quality_seconds_per_sample())
-    });
+    let speedup = compared.and_then(|(full, short, _)| full.quality_speedup_over(short));
     let note = compared.and_then(|(full, _, c)| {
         (c == BestComparison::NothingToCompare).then(|| {
             format!(
@@ -232,8 +157,8 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
             "edges": args.edges,
             "friction": args.friction,
             "seed": args.seed,
-            "partial": report_json(&partial),
-            "full": comparison.as_ref().map(|(full, _)| report_json(full)),
+            "partial": partial.to_json(),
+            "full": comparison.as_ref().map(|(full, _)| full.to_json()),
             "comparison": compared.map(|(_, _, c)| c.name()),
             "same_best": same_best,
             "quality_speedup": speedup,

@@ -1,5 +1,6 @@
 //! `pqh trace`: a strategy's run, step by step, as a self-contained HTML page.
 
+use crate::dispatch::with_dimension;
 use crate::error::CliError;
 use crate::input::{Source, parse_point};
 use clap::{Args, ValueEnum};
@@ -151,13 +152,14 @@ pub fn run(args: &TraceArgs) -> Result<(), CliError> {
             "{name}: {count} points; pqh trace draws at most {MAX_POINTS}"
         )));
     }
-    match input.dimension {
-        2 => trace::<2>(args, &input, &name, &strategies),
-        3 => trace::<3>(args, &input, &name, &strategies),
-        d => Err(CliError::Input(format!(
+    with_dimension!(
+        input.dimension,
+        [2, 3],
+        |D| trace::<D>(args, &input, &name, &strategies),
+        else |d| Err(CliError::Input(format!(
             "{name}: the points have dimension {d}; pqh trace draws 2-D and 3-D inputs"
-        ))),
-    }
+        )))
+    )
 }
 
 /// Points read or generated, row-major.

@@ -1,0 +1,110 @@
+//! The `--metric` and `--method` values: one enum each, the library's [`Metric`] and [`Method`]
+//! under the names `pqh` prints, shared by `pqh grasp`, `pqh plan` and `pqh bench gws`.
+
+use crate::error::CliError;
+use clap::ValueEnum;
+use pqhull::grasp::quality::{Method, Metric};
+
+/// The `--metric` values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum MetricArg {
+    /// Ferrari–Canny Q1 over the union of contact wrenches
+    Q1,
+    /// Q∞ over the Minkowski sum (implicit for the partial method)
+    Qinf,
+    /// Object wrench space metric (needs the object: --mesh, or --disturbances in pqh grasp)
+    Ows,
+}
+
+impl MetricArg {
+    /// The library's metric (`zero_wrench`: Q∞ with the zero wrench in every contact's set).
+    pub fn metric(self, zero_wrench: bool) -> Metric {
+        match self {
+            MetricArg::Q1 => Metric::Q1,
+            MetricArg::Qinf => Metric::QInf {
+                with_zero_wrench: zero_wrench,
+            },
+            MetricArg::Ows => Metric::Ows,
+        }
+    }
+}
+
+/// The `--method` values (which metric takes which: `Method::supports`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum MethodArg {
+    /// Partial hull: stop once the answer is certain (every metric; the default)
+    Partial,
+    /// Full hull with pqhull's engine (every metric; for ows the brute force, alias `brute`)
+    #[value(alias = "brute")]
+    Full,
+    /// Full hull with Qhull (q1, qinf; needs the `qhull` feature)
+    Qhull,
+    /// Partial hull, disturbances assigned by ray as Algorithm 2 is published (ows)
+    PartialRays,
+    /// Borst et al.'s enclosing-ellipsoid approximation (ows; not exact)
+    Ellipsoid,
+}
+
+impl MethodArg {
+    fn method(self) -> Method {
+        match self {
+            MethodArg::Partial => Method::Partial,
+            MethodArg::Full => Method::Full,
+            MethodArg::Qhull => Method::Qhull,
+            MethodArg::PartialRays => Method::PartialRays,
+            MethodArg::Ellipsoid => Method::Ellipsoid,
+        }
+    }
+}
+
+/// The `--methods` values of `pqh bench gws`: the methods that compute Q1 (only these are
+/// listed, so the help shows exactly what is accepted).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum GwsMethodArg {
+    /// Partial hull
+    Partial,
+    /// Full hull with pqhull's engine
+    Full,
+    /// Full hull with Qhull (needs the `qhull` feature)
+    Qhull,
+}
+
+impl GwsMethodArg {
+    /// The library's method, or a usage error for Qhull in a build without it.
+    pub fn method(self) -> Result<Method, CliError> {
+        match self {
+            GwsMethodArg::Partial => Ok(Method::Partial),
+            GwsMethodArg::Full => Ok(Method::Full),
+            GwsMethodArg::Qhull => available(Method::Qhull),
+        }
+    }
+}
+
+/// `--method` for `metric`: a usage error naming what the metric takes when it does not take
+/// this one, or when it is Qhull in a build without the `qhull` feature.
+pub fn method_for(arg: MethodArg, metric: Metric) -> Result<Method, CliError> {
+    let method = arg.method();
+    if !method.supports(metric) {
+        let takes: Vec<&str> = MethodArg::value_variants()
+            .iter()
+            .filter(|m| m.method().supports(metric))
+            .map(|m| m.method().name())
+            .collect();
+        return Err(CliError::Usage(format!(
+            "--metric {} takes --method {}, not {}",
+            metric.name(),
+            takes.join(", "),
+            method.name()
+        )));
+    }
+    available(method)
+}
+
+fn available(method: Method) -> Result<Method, CliError> {
+    if method == Method::Qhull && !cfg!(feature = "qhull") {
+        return Err(CliError::Usage(
+            "--method qhull needs pqh built with the `qhull` feature".into(),
+        ));
+    }
+    Ok(method)
+}
