@@ -223,11 +223,14 @@ fn usage_and_input_errors_are_reported() {
                 "--mesh",
                 cube.to_str().unwrap(),
                 "--method",
-                "full",
+                "qhull",
             ],
-            "partial, brute or ellipsoid",
+            "--metric ows takes --method partial, full, partial-rays, ellipsoid, not qhull",
         ),
-        (vec!["grasp", "--method", "brute"], "for --metric ows"),
+        (
+            vec!["grasp", "--method", "ellipsoid"],
+            "--metric q1 takes --method partial, full, qhull, not ellipsoid",
+        ),
     ];
     for (args, message) in cases {
         let out = pqh(&args, FOUR_FACES);

@@ -157,21 +157,21 @@ fn evaluate(
     progress: Progress<'_>,
 ) -> Result<Vec<OwsQuality>, OwsBenchError> {
     let mut evaluator = OwsEvaluator::new(method);
-    let label = format!("{method:?}");
-    progress(&label, 0, set.len());
+    let label = method.name();
+    progress(label, 0, set.len());
     let results = set
         .iter()
         .enumerate()
         .map(|(i, g)| {
             let q = evaluator.evaluate(g, space);
-            progress(&label, i + 1, set.len());
+            progress(label, i + 1, set.len());
             q
         })
         .collect::<Result<_, _>>()
         .map_err(OwsBenchError::Quality);
     if results.is_err() {
         // The phase ended early: close it.
-        progress(&label, set.len(), set.len());
+        progress(label, set.len(), set.len());
     }
     results
 }
@@ -390,10 +390,7 @@ mod tests {
             }
         })
         .unwrap();
-        assert_eq!(
-            phases,
-            ["Partial", "BruteForce", "PartialRays", "Ellipsoid"]
-        );
+        assert_eq!(phases, ["partial", "full", "partial-rays", "ellipsoid"]);
         assert_eq!(report.compared_with_brute, 5); // at most the grasps there are
         assert_eq!(report.compared_with_rays, 0);
         assert!(report.methods[6].median_us.is_nan()); // no partial-rays grasp
