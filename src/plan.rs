@@ -172,7 +172,8 @@ impl PlanReport {
     /// ```
     /// use pqhull::grasp::FrictionModel;
     /// use pqhull::mesh::Mesh;
-    /// use pqhull::plan::{plan, PlanConfig, Method, Metric};
+    /// use pqhull::grasp::quality::{Method, Metric};
+    /// use pqhull::plan::{plan, PlanConfig};
     ///
     /// let object = Mesh::uv_sphere(0.3, 8, 16)?;
     /// let config = PlanConfig {

@@ -88,7 +88,7 @@ pub const MAX_CONTACTS: usize = 256;
 /// A grasp: m ≥ 1 contacts sharing one friction model, a torque reference point c and a torque
 /// scale ρ (see the [module docs](self) for the conventions).
 ///
-/// Build it with [`Grasp::try_new`] (c = origin, ρ = 1) or [`Grasp::builder`].
+/// Build it with [`Grasp::builder`] (defaults c = origin, ρ = 1).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Grasp {
     contacts: Vec<Contact>,

@@ -128,7 +128,8 @@ pub fn plan_panels(
 /// use pqhull::grasp::FrictionModel;
 /// use pqhull::grasp::ows::ObjectWrenchSpace;
 /// use pqhull::mesh::Mesh;
-/// use pqhull::plan::{plan, PlanConfig, Method, Metric};
+/// use pqhull::grasp::quality::{Method, Metric};
+/// use pqhull::plan::{plan, PlanConfig};
 /// use pqhull::viz::plan_scene::plan_page;
 ///
 /// let object = Mesh::cuboid([0.3, 0.2, 0.1])?;
