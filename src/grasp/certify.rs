@@ -48,7 +48,7 @@ const DOT_ROUNDING: f64 = 1e-15;
 const UNDERFLOW: f64 = 6.0 * 4.9e-324;
 
 /// `a·b` and a bound on its rounding error.
-pub(crate) fn dot_with_error(a: &[f64; 6], b: &[f64; 6]) -> (f64, f64) {
+pub(in crate::grasp) fn dot_with_error(a: &[f64; 6], b: &[f64; 6]) -> (f64, f64) {
     let mut sum = 0.0;
     let mut magnitude = 0.0;
     for (x, y) in a.iter().zip(b) {
@@ -65,7 +65,7 @@ fn norm_bounds(u: &[f64; 6]) -> (f64, f64) {
 }
 
 /// The function `g` whose ratio `h(u)/g(u)` the metric minimises (see the module docs).
-pub(crate) trait Gauge {
+pub(in crate::grasp) trait Gauge {
     /// An upper bound on `g(u)`, as cheap as possible (every facet asks).
     fn upper_cheap(&mut self, u: &[f64; 6]) -> f64;
     /// A tight upper bound on `g(u)`.
@@ -75,7 +75,7 @@ pub(crate) trait Gauge {
 }
 
 /// Q1: `g(u) = |u|`, the disturbances of the unit ball.
-pub(crate) struct UnitBall;
+pub(in crate::grasp) struct UnitBall;
 
 impl Gauge for UnitBall {
     fn upper_cheap(&mut self, u: &[f64; 6]) -> f64 {
@@ -90,8 +90,8 @@ impl Gauge for UnitBall {
 }
 
 /// Q_OWS: `g(u) = max_d −u·d` over the disturbances of a support index.
-pub(crate) struct Disturbances<'a> {
-    pub(crate) index: &'a crate::geometry::SupportIndex<6>,
+pub(in crate::grasp) struct Disturbances<'a> {
+    pub(in crate::grasp) index: &'a crate::geometry::SupportIndex<6>,
 }
 
 impl Disturbances<'_> {
@@ -119,20 +119,20 @@ impl Gauge for Disturbances<'_> {
 
 /// A rigorous bracket of a metric on the raw points.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Bracket {
+pub(in crate::grasp) struct Bracket {
     /// A lower bound on the metric.
-    pub(crate) low: f64,
+    pub(in crate::grasp) low: f64,
     /// An upper bound on the metric.
-    pub(crate) high: f64,
+    pub(in crate::grasp) high: f64,
     /// The facet whose raw simplex gave `high`.
-    pub(crate) facet: FacetId,
+    pub(in crate::grasp) facet: FacetId,
 }
 
 impl Bracket {
     /// The midpoint, when the bracket is within the accuracy the metrics promise: `1e−12`
     /// relative, or `1e−14·scale` for values near zero (half of each, to leave room for the
     /// reference's own rounding).
-    pub(crate) fn value_within(&self, scale: f64) -> Option<f64> {
+    pub(in crate::grasp) fn value_within(&self, scale: f64) -> Option<f64> {
         let width = self.high - self.low;
         let allowed = (5e-13 * self.high.abs()).max(5e-15 * scale);
         (width >= 0.0 && width <= allowed).then_some(0.5 * (self.low + self.high))
@@ -140,22 +140,22 @@ impl Bracket {
 }
 
 /// What the bracket needs of the raw point set.
-pub(crate) struct RawSide<R, H> {
+pub(in crate::grasp) struct RawSide<R, H> {
     /// The raw point of hull input `v`, as computed in floating point (`None` when unknown: the
     /// facet then keeps its cheap bound).
-    pub(crate) point: R,
+    pub(in crate::grasp) point: R,
     /// A bound on the distance between [`point`](Self::point)'s result and the true raw point
     /// (0 when the raw point *is* the float value, as the caller's wrenches are).
-    pub(crate) error: f64,
+    pub(in crate::grasp) error: f64,
     /// A bound on the distance between every snapped hull input and its true raw point.
-    pub(crate) delta: f64,
+    pub(in crate::grasp) delta: f64,
     /// The raw set's support function: `max_w u·w` and a bound on its rounding error.
-    pub(crate) support: H,
+    pub(in crate::grasp) support: H,
 }
 
 /// Scratch reused from one bracket to the next.
 #[derive(Clone, Debug, Default)]
-pub(crate) struct BracketScratch {
+pub(in crate::grasp) struct BracketScratch {
     cheap: Vec<(f64, FacetId)>,
 }
 
@@ -163,7 +163,7 @@ pub(crate) struct BracketScratch {
 /// which must hold the origin strictly inside; `None` when the snapped surface passes within `δ`
 /// of the origin (the argument needs the origin farther away) or no raw simplex gives an upper
 /// bound.
-pub(crate) fn bracket<R, H, G>(
+pub(in crate::grasp) fn bracket<R, H, G>(
     hull: &Hull<6>,
     raw: &mut RawSide<R, H>,
     gauge: &mut G,
@@ -246,7 +246,7 @@ where
 /// [`bracket`] has no lower bound — the raw points lie within rounding of a supporting
 /// hyperplane through the origin, and this bound is tiny: with a lower bound from elsewhere
 /// (0 for a set holding the origin, −GJK's distance otherwise) it pins the value.
-pub(crate) fn upper_bound_at<R, H, G>(
+pub(in crate::grasp) fn upper_bound_at<R, H, G>(
     hull: &Hull<6>,
     id: FacetId,
     raw: &mut RawSide<R, H>,
@@ -342,7 +342,7 @@ fn exact_normal(points: &[[f64; 6]; 6]) -> Option<[f64; 6]> {
 /// affinely dependent in floating point. Only the bracket's width depends on its accuracy: two
 /// passes of modified Gram–Schmidt on the edge vectors, then the coordinate axis least in their
 /// span, orthogonalised twice.
-pub(crate) fn hyperplane_normal(points: &[[f64; 6]; 6]) -> Option<[f64; 6]> {
+pub(in crate::grasp) fn hyperplane_normal(points: &[[f64; 6]; 6]) -> Option<[f64; 6]> {
     let base = points[0];
     let mut basis = [[0.0; 6]; 5];
     let scale = points
@@ -395,7 +395,7 @@ fn project_out(v: &mut [f64; 6], e: &[f64; 6]) {
 }
 
 /// The support function of an explicit point set, `max_w u·w`, and its rounding bound.
-pub(crate) fn support_with_error(points: &[[f64; 6]], u: &[f64; 6]) -> (f64, f64) {
+pub(in crate::grasp) fn support_with_error(points: &[[f64; 6]], u: &[f64; 6]) -> (f64, f64) {
     let mut best = (f64::NEG_INFINITY, 0.0);
     for w in points {
         let (h, error) = dot_with_error(u, w);

@@ -31,13 +31,13 @@ use faer::{Mat, Par};
 /// ([`FORCE_CLOSURE_EPSILON`](crate::grasp::quality::FORCE_CLOSURE_EPSILON) = 1e−12). It
 /// cannot be much smaller: the rounding bound of a six-term dot product alone is `6.7e−16·|w|`,
 /// so even exactly collinear contacts measure a slab of about 1e−15 of their scale.
-pub(crate) const FLAT: f64 = 4e-15;
+pub(in crate::grasp) const FLAT: f64 = 4e-15;
 
 /// `γ₆ = 6u / (1 − 6u)`: the relative rounding bound of a six-term dot product.
 const GAMMA_6: f64 = 6.0 * f64::EPSILON / 2.0 / (1.0 - 6.0 * f64::EPSILON / 2.0);
 
 /// The slab test's reusable workspace (faer's eigensolver scratch and matrices).
-pub(crate) struct Flatness {
+pub(in crate::grasp) struct Flatness {
     gram: Mat<f64>,
     vectors: Mat<f64>,
     values: Diag<f64>,
@@ -77,7 +77,7 @@ impl Flatness {
     /// A rigorous half-width `τ` of a slab `{x : |u·x| ≤ τ}` (`u` a unit vector) holding every
     /// point of `points`: the thinnest through the origin, up to the eigensolver's accuracy.
     /// `+∞` when the eigensolver fails or a point is not finite; 0 for no points.
-    pub(crate) fn slab(&mut self, points: impl Iterator<Item = [f64; 6]> + Clone) -> f64 {
+    pub(in crate::grasp) fn slab(&mut self, points: impl Iterator<Item = [f64; 6]> + Clone) -> f64 {
         // The Gram matrix of the points divided by their largest coordinate (a power of two):
         // the eigenvector is the same, and tiny or huge wrenches neither underflow nor overflow.
         let mut largest = 0.0f64;

@@ -231,11 +231,11 @@ const UNIT_RANGE: i32 = 256;
 
 /// The exponent e of the unit 2^e the wrenches are evaluated in (see [`UNIT_RANGE`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) struct WrenchUnit(pub(crate) i32);
+pub(in crate::grasp) struct WrenchUnit(pub(in crate::grasp) i32);
 
 impl WrenchUnit {
     /// The unit for wrenches whose largest coordinate magnitude is `largest` (finite).
-    pub(crate) fn for_largest(largest: f64) -> Self {
+    pub(in crate::grasp) fn for_largest(largest: f64) -> Self {
         let range = 2f64.powi(UNIT_RANGE);
         if largest == 0.0 || (largest >= 1.0 / range && largest <= range) {
             return WrenchUnit(0);
@@ -246,12 +246,12 @@ impl WrenchUnit {
     }
 
     /// `x` in this unit: divided by 2^e.
-    pub(crate) fn down(self, x: f64) -> f64 {
+    pub(in crate::grasp) fn down(self, x: f64) -> f64 {
         times_power_of_two(x, -self.0)
     }
 
     /// `w` in this unit.
-    pub(crate) fn apply(self, w: [f64; 6]) -> [f64; 6] {
+    pub(in crate::grasp) fn apply(self, w: [f64; 6]) -> [f64; 6] {
         w.map(|x| self.down(x))
     }
 }
@@ -292,7 +292,7 @@ pub const MAX_WRENCH_COORDINATE: f64 = 1e100;
 
 /// [`QualityError::NonFiniteWrench`] or [`QualityError::WrenchTooLarge`] for wrenches the
 /// metrics cannot evaluate.
-pub(crate) fn check_wrenches(wrenches: &[[f64; 6]]) -> Result<(), QualityError> {
+pub(in crate::grasp) fn check_wrenches(wrenches: &[[f64; 6]]) -> Result<(), QualityError> {
     let mut largest = 0.0f64;
     for &x in wrenches.iter().flatten() {
         if !x.is_finite() {
@@ -420,19 +420,19 @@ pub struct Evaluator {
 
 /// The hull and partial strategy a Q1 evaluation reuses from one wrench set to the next.
 #[derive(Clone, Debug, Default)]
-pub(crate) struct HullBuffers {
+pub(in crate::grasp) struct HullBuffers {
     hull: Option<Hull<6>>,
     nearest: ClosestToOrigin<6>,
     gjk: Gjk<6>,
-    pub(crate) bracket: BracketScratch,
-    pub(crate) flatness: Flatness,
+    pub(in crate::grasp) bracket: BracketScratch,
+    pub(in crate::grasp) flatness: Flatness,
 }
 
 impl HullBuffers {
     /// The hull of `w` grown by `strategy`, in the reused arena. `pyramids`, when given, names
     /// the contact of every wrench: each contact's wrenches must lie *exactly* in one 2-D affine
     /// plane, as snapped friction pyramids do (see [`Hull::rebuild_with_flats`]).
-    pub(crate) fn build<'h, S: crate::Strategy<6>>(
+    pub(in crate::grasp) fn build<'h, S: crate::Strategy<6>>(
         hull: &'h mut Option<Hull<6>>,
         w: &[[f64; 6]],
         pyramids: Option<&[u32]>,
@@ -612,7 +612,7 @@ pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Quality, 
 /// Q1 of the raw wrenches `raw` by the partial method, searched on their snapped copy
 /// `snapped` (same indexing, `pyramids` naming each wrench's contact, within `delta` of the raw
 /// ones) and certified on `raw`, as [`Evaluator::evaluate`] does; banded.
-pub(crate) fn q1_certified(
+pub(in crate::grasp) fn q1_certified(
     raw: &[[f64; 6]],
     snapped: &[[f64; 6]],
     pyramids: &[u32],
@@ -674,7 +674,7 @@ fn with_thread_evaluator<T>(
 
 /// The entry of `kept` that `matches`, made by `make` and kept when there is none: the
 /// per-thread evaluator registries of the batch functions.
-pub(crate) fn find_or_make<E>(
+pub(in crate::grasp) fn find_or_make<E>(
     kept: &mut Vec<E>,
     matches: impl Fn(&E) -> bool,
     make: impl FnOnce() -> E,
@@ -725,7 +725,10 @@ fn flat_q1(w: &[[f64; 6]], started: Instant, flatness: &mut Flatness) -> Option<
 /// When GJK certifies that the origin lies outside the hull of `w` (so the grasp is not force
 /// closure): its distance, and the support points GJK inserted; the face spanning the nearest
 /// point is then in `gjk.face()`. `None` when undecided (force closure, or too close to call).
-pub(crate) fn certified_outside(w: &[[f64; 6]], gjk: &mut Gjk<6>) -> Option<(f64, usize)> {
+pub(in crate::grasp) fn certified_outside(
+    w: &[[f64; 6]],
+    gjk: &mut Gjk<6>,
+) -> Option<(f64, usize)> {
     let mut set = w;
     match gjk.run(
         &mut set,

@@ -28,18 +28,18 @@ const BITS: i32 = 24;
 /// The snapped generators of every distinct contact: `[u, v, s]` per contact, and the snapped
 /// (cos, sin) of every edge angle. "Contact" below means a distinct one (see the module docs).
 #[derive(Clone, Debug, Default)]
-pub(crate) struct SnappedCones {
-    pub(crate) generators: Vec<[[f64; 6]; 3]>,
-    pub(crate) angles: Vec<(f64, f64)>,
+pub(in crate::grasp) struct SnappedCones {
+    pub(in crate::grasp) generators: Vec<[[f64; 6]; 3]>,
+    pub(in crate::grasp) angles: Vec<(f64, f64)>,
     /// The caller's wrenches, as [`Grasp::wrenches`] computes them (contact-major, each distinct
     /// contact once): the points every reported value is certified on.
-    pub(crate) raw: Vec<[f64; 6]>,
+    pub(in crate::grasp) raw: Vec<[f64; 6]>,
     /// Per contact: an upper bound on the distance between a raw wrench and its snapped one.
-    pub(crate) delta: Vec<f64>,
+    pub(in crate::grasp) delta: Vec<f64>,
     /// Per contact: how many of the grasp's contacts it stands for (at least 1).
-    pub(crate) multiplicity: Vec<u32>,
+    pub(in crate::grasp) multiplicity: Vec<u32>,
     /// Per contact of the grasp: the distinct contact standing for it.
-    pub(crate) representative: Vec<u32>,
+    pub(in crate::grasp) representative: Vec<u32>,
     /// Per contact: its index in the grasp (the first of its copies).
     first: Vec<usize>,
 }
@@ -50,7 +50,7 @@ fn snap(x: f64, grid: f64) -> f64 {
 
 impl SnappedCones {
     /// Recomputes the generators for `grasp`, reusing this value's buffers.
-    pub(crate) fn fill(&mut self, grasp: &Grasp) {
+    pub(in crate::grasp) fn fill(&mut self, grasp: &Grasp) {
         let mu = grasp.friction.friction();
         let k = grasp.friction.cone_edges();
         self.merge_repeats(grasp);
@@ -114,7 +114,7 @@ impl SnappedCones {
 
     /// Divides every wrench (snapped generators, raw wrenches, δ) by the power of two `unit`:
     /// exact, so the snapped wrenches stay exactly planar and their sums exact.
-    pub(crate) fn rescale(&mut self, unit: super::quality::WrenchUnit) {
+    pub(in crate::grasp) fn rescale(&mut self, unit: super::quality::WrenchUnit) {
         if unit.0 == 0 {
             return;
         }
@@ -155,24 +155,24 @@ impl SnappedCones {
     }
 
     /// The number of distinct contacts.
-    pub(crate) fn contacts(&self) -> usize {
+    pub(in crate::grasp) fn contacts(&self) -> usize {
         self.generators.len()
     }
 
     /// The number of cone edges per contact.
-    pub(crate) fn edges(&self) -> usize {
+    pub(in crate::grasp) fn edges(&self) -> usize {
         self.angles.len()
     }
 
     /// Wrench j of contact i: u + cos·v + sin·s, exact in `f64`.
-    pub(crate) fn wrench(&self, i: usize, j: usize) -> [f64; 6] {
+    pub(in crate::grasp) fn wrench(&self, i: usize, j: usize) -> [f64; 6] {
         let [u, v, s] = &self.generators[i];
         let (cos, sin) = self.angles[j];
         std::array::from_fn(|c| u[c] + cos * v[c] + sin * s[c])
     }
 
     /// Whether every generator and raw wrench is finite (a tiny torque scale can overflow).
-    pub(crate) fn is_finite(&self) -> bool {
+    pub(in crate::grasp) fn is_finite(&self) -> bool {
         self.generators
             .iter()
             .flatten()
@@ -199,7 +199,7 @@ impl Grasp {
 }
 
 /// The union of the snapped wrenches, contact-major, each distinct contact once.
-pub(crate) fn snapped_union(cones: &SnappedCones, out: &mut Vec<[f64; 6]>) {
+pub(in crate::grasp) fn snapped_union(cones: &SnappedCones, out: &mut Vec<[f64; 6]>) {
     out.clear();
     for i in 0..cones.generators.len() {
         out.extend((0..cones.angles.len()).map(|j| cones.wrench(i, j)));
@@ -209,7 +209,7 @@ pub(crate) fn snapped_union(cones: &SnappedCones, out: &mut Vec<[f64; 6]>) {
 /// The contact of every wrench of [`snapped_union`] (`contacts` pyramids of `edges` wrenches):
 /// the flats to declare to the hull engine, each pyramid lying exactly in one 2-D affine plane
 /// (see the module docs).
-pub(crate) fn pyramid_labels(contacts: usize, edges: usize, out: &mut Vec<u32>) {
+pub(in crate::grasp) fn pyramid_labels(contacts: usize, edges: usize, out: &mut Vec<u32>) {
     out.clear();
     out.extend((0..contacts as u32).flat_map(|i| std::iter::repeat_n(i, edges)));
 }

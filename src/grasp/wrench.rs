@@ -79,7 +79,7 @@ impl Grasp {
     }
 
     /// w = [f ; r × f / ρ] with r = p − c.
-    pub(crate) fn wrench(&self, r: [f64; 3], f: [f64; 3]) -> [f64; 6] {
+    pub(in crate::grasp) fn wrench(&self, r: [f64; 3], f: [f64; 3]) -> [f64; 6] {
         let tau = cross(r, f);
         let rho = self.torque_scale;
         [f[0], f[1], f[2], tau[0] / rho, tau[1] / rho, tau[2] / rho]

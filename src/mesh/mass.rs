@@ -47,7 +47,7 @@ pub struct MassProperties {
 /// centre) means the enclosed volume is lost in cancellation: the rounding error of the sum is
 /// below `1e−15 · Σ|V_t|`, so this leaves five orders of magnitude of margin. A closed surface
 /// thinner than about `1e−10` of its size (a two-sided sheet) falls back to the surface centroid.
-pub(crate) const VOLUME_NEGLIGIBLE: f64 = 1e-10;
+pub(in crate::mesh) const VOLUME_NEGLIGIBLE: f64 = 1e-10;
 
 /// The exact power of two `2^n`, for `−1022 ≤ n ≤ 1023`.
 fn pow2(n: i32) -> f64 {
@@ -57,7 +57,7 @@ fn pow2(n: i32) -> f64 {
 
 /// The local frame: `local(p) = p · scale − origin · scale`, with `scale` a power of two.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Frame {
+pub(in crate::mesh) struct Frame {
     origin: V3,
     origin_scaled: V3,
     scale: f64,
@@ -66,7 +66,7 @@ pub(crate) struct Frame {
 
 impl Frame {
     /// The frame of a non-empty set of finite vertices.
-    pub(crate) fn new(vertices: &[[f64; 3]]) -> Frame {
+    pub(in crate::mesh) fn new(vertices: &[[f64; 3]]) -> Frame {
         let mut lo = [f64::INFINITY; 3];
         let mut hi = [f64::NEG_INFINITY; 3];
         for v in vertices {
@@ -95,36 +95,36 @@ impl Frame {
     }
 
     /// `p` in local coordinates.
-    pub(crate) fn local(&self, p: V3) -> V3 {
+    pub(in crate::mesh) fn local(&self, p: V3) -> V3 {
         std::array::from_fn(|i| p[i] * self.scale - self.origin_scaled[i])
     }
 
     /// A local point back in the mesh's coordinates.
-    pub(crate) fn global(&self, q: V3) -> V3 {
+    pub(in crate::mesh) fn global(&self, q: V3) -> V3 {
         add(self.origin, scale(q, self.inv_scale))
     }
 
     /// A local length in the mesh's units.
-    pub(crate) fn length(&self, l: f64) -> f64 {
+    pub(in crate::mesh) fn length(&self, l: f64) -> f64 {
         l * self.inv_scale
     }
 
     /// A local area in the mesh's units.
-    pub(crate) fn area(&self, a: f64) -> f64 {
+    pub(in crate::mesh) fn area(&self, a: f64) -> f64 {
         a * self.inv_scale * self.inv_scale
     }
 }
 
 /// Mass properties plus what the mesh caches beside them.
-pub(crate) struct MassResult {
-    pub(crate) properties: MassProperties,
+pub(in crate::mesh) struct MassResult {
+    pub(in crate::mesh) properties: MassProperties,
     /// `−1` when the mesh is closed and its signed volume negative (clockwise seen from outside),
     /// `+1` otherwise.
-    pub(crate) orientation: f64,
+    pub(in crate::mesh) orientation: f64,
 }
 
 /// Mass properties of a mesh whose indices are valid; `None` when the total area is zero.
-pub(crate) fn compute(
+pub(in crate::mesh) fn compute(
     vertices: &[[f64; 3]],
     triangles: &[[u32; 3]],
     frame: &Frame,

@@ -105,7 +105,7 @@ impl Mesh {
     }
 
     /// [`Mesh::try_new`], with the source name the loaders put in their errors.
-    pub(crate) fn try_new_named(
+    pub(in crate::mesh) fn try_new_named(
         vertices: Vec<[f64; 3]>,
         triangles: Vec<[u32; 3]>,
         source_name: Option<&str>,

@@ -24,7 +24,7 @@ pub struct Topology {
 
 impl Topology {
     /// Counts the edges of `triangles` (whose indices are already known to be in range).
-    pub(crate) fn of(triangles: &[[u32; 3]]) -> Topology {
+    pub(in crate::mesh) fn of(triangles: &[[u32; 3]]) -> Topology {
         // Undirected edge (low, high) → (uses low→high, uses high→low).
         let mut uses: HashMap<(u32, u32), (u32, u32)> = HashMap::with_capacity(triangles.len() * 2);
         let mut degenerate_triangles = 0;

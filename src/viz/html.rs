@@ -72,7 +72,7 @@ pub fn trace_page<const D: usize>(title: &str, traces: &[&Trace<D>]) -> Result<S
 }
 
 /// "Strategy — n points, e expansions, f facets created".
-pub(crate) fn panel_title<const D: usize>(trace: &Trace<D>) -> String {
+pub(in crate::viz) fn panel_title<const D: usize>(trace: &Trace<D>) -> String {
     let expansions = trace
         .events
         .iter()

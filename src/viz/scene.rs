@@ -320,7 +320,7 @@ canvas{width:100%;display:block;background:#fff;border:1px solid #ccd;cursor:gra
 
 /// The page skeleton shared with the trace pages: `data` is `{"panels": [...]}` as the viewer
 /// reads it (each panel `{title, frames}` or `{title, trace}`); `legend` is trusted HTML.
-pub(crate) fn page(title: &str, data: &Value, legend: &str) -> String {
+pub(in crate::viz) fn page(title: &str, data: &Value, legend: &str) -> String {
     // Inside <script>, only "</" can end the element early; JSON allows "\u003c" for "<".
     let json = data.to_string().replace('<', "\\u003c");
     let mut html = String::with_capacity(json.len() + 40_000);
@@ -342,7 +342,7 @@ pub(crate) fn page(title: &str, data: &Value, legend: &str) -> String {
 }
 
 /// Escapes text for HTML element content and attribute values.
-pub(crate) fn escape(text: &str) -> String {
+pub(in crate::viz) fn escape(text: &str) -> String {
     let mut out = String::with_capacity(text.len());
     for c in text.chars() {
         match c {
