@@ -65,94 +65,14 @@ use crate::geometry::{
 use crate::predicates::times_power_of_two;
 use crate::strategy::{ClosestToOrigin, Stats};
 use crate::{Hull, HullError};
-use std::fmt;
 use std::time::Instant;
 
+mod error;
 mod minkowski;
+mod vocabulary;
+pub use error::QualityError;
 pub use minkowski::MINKOWSKI_MATERIALISE_LIMIT;
-
-/// A grasp-quality metric: the one vocabulary of the evaluators, the planner and `pqh`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-#[non_exhaustive]
-pub enum Metric {
-    /// Ferrari–Canny Q1 over the union of the contact wrenches ([`Evaluator`]).
-    #[default]
-    Q1,
-    /// Ferrari–Canny Q∞ over the Minkowski sum of the contacts' wrench sets ([`Evaluator`]).
-    QInf {
-        /// GraspIt!'s variant: the zero wrench joins every contact's set.
-        with_zero_wrench: bool,
-    },
-    /// The object-wrench-space metric Q_OWS: needs the object's
-    /// [`ObjectWrenchSpace`](crate::grasp::ows::ObjectWrenchSpace), so it is evaluated by
-    /// [`OwsEvaluator`](crate::grasp::ows::OwsEvaluator), not by [`Evaluator`].
-    Ows,
-}
-
-impl Metric {
-    /// The name `pqh` uses for it (`q1`, `qinf`, `qinf0` with the zero wrench, `ows`).
-    pub fn name(self) -> &'static str {
-        match self {
-            Metric::Q1 => "q1",
-            Metric::QInf {
-                with_zero_wrench: false,
-            } => "qinf",
-            Metric::QInf {
-                with_zero_wrench: true,
-            } => "qinf0",
-            Metric::Ows => "ows",
-        }
-    }
-}
-
-/// How a metric is computed. Every metric takes [`Partial`](Method::Partial) (the default) and
-/// [`Full`](Method::Full); the others belong to some metrics only, and the rest give
-/// [`QualityError::UnsupportedMethod`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-#[non_exhaustive]
-pub enum Method {
-    /// The partial hull (Q1, Q∞: `ClosestToOrigin`, PQHGWS; Q_OWS: `OwsInflation`, PQHOWS):
-    /// stops as soon as the answer is certain. Exact.
-    #[default]
-    Partial,
-    /// The full hull with this crate's engine, then the answer from all its facets (for Q_OWS,
-    /// every disturbance against every facet: the seed paper's brute force). Exact, the reference.
-    Full,
-    /// Q1 and Q∞ only: the full hull by Qhull, for comparison. Needs the crate's `qhull` feature,
-    /// else [`QualityError::QhullUnavailable`].
-    Qhull,
-    /// Q_OWS only: the partial hull with every disturbance assigned to the facet its ray leaves
-    /// through, as the seed paper's Algorithm 2 is published
-    /// ([`OwsInflation::with_rays`](crate::strategy::OwsInflation::with_rays)). Exact, slower
-    /// on large disturbance sets; kept to compare with.
-    PartialRays,
-    /// Q_OWS only: Borst et al.'s approximation. The wrench space is mapped so that the
-    /// disturbances' enclosing ellipsoid becomes the unit ball, then Q1 of the mapped grasp is
-    /// taken. Never larger than the exact value, and not exact.
-    Ellipsoid,
-}
-
-impl Method {
-    /// The name `pqh` uses for it.
-    pub fn name(self) -> &'static str {
-        match self {
-            Method::Partial => "partial",
-            Method::Full => "full",
-            Method::Qhull => "qhull",
-            Method::PartialRays => "partial-rays",
-            Method::Ellipsoid => "ellipsoid",
-        }
-    }
-
-    /// Whether `metric` can be computed this way.
-    pub fn supports(self, metric: Metric) -> bool {
-        match self {
-            Method::Partial | Method::Full => true,
-            Method::Qhull => metric != Metric::Ows,
-            Method::PartialRays | Method::Ellipsoid => metric == Metric::Ows,
-        }
-    }
-}
+pub use vocabulary::{Method, Metric};
 
 /// Up to seven wrenches: a facet's six, or the points spanning a nearest face.
 const MAX_DECIDING: usize = 7;
@@ -305,100 +225,6 @@ pub(in crate::grasp) fn check_wrenches(wrenches: &[[f64; 6]]) -> Result<(), Qual
     }
     Ok(())
 }
-
-/// Why a grasp could not be evaluated.
-#[derive(Clone, Debug, PartialEq)]
-#[non_exhaustive]
-pub enum QualityError {
-    /// A wrench overflowed (a friction coefficient, a lever arm or the inverse torque scale too
-    /// large for `f64`).
-    NonFiniteWrench,
-    /// A wrench coordinate above [`MAX_WRENCH_COORDINATE`].
-    WrenchTooLarge {
-        /// The largest wrench coordinate (absolute value).
-        largest: f64,
-    },
-    /// The full or Qhull method would have to materialise more Minkowski points than
-    /// [`MINKOWSKI_MATERIALISE_LIMIT`] (`None`: more than `usize::MAX`).
-    MinkowskiTooLarge {
-        /// k^m (or (k+1)^m with the zero wrench).
-        points: Option<usize>,
-    },
-    /// Qhull failed (feature `qhull`).
-    Qhull(String),
-    /// [`Method::Qhull`] in a build without the `qhull` feature.
-    QhullUnavailable,
-    /// [`Metric::Ows`] given to [`Evaluator`]: Q_OWS needs the object's wrench space, so it is
-    /// [`OwsEvaluator`](crate::grasp::ows::OwsEvaluator)'s.
-    OwsNeedsWrenchSpace,
-    /// The method does not compute this metric (see [`Method`]).
-    UnsupportedMethod {
-        /// The method asked for.
-        method: Method,
-        /// The metric asked for.
-        metric: Metric,
-    },
-    /// Q_OWS: the grasp's torque frame is not the object wrench space's (build the grasp with
-    /// [`ObjectWrenchSpace::frame`](crate::grasp::ows::ObjectWrenchSpace::frame)).
-    TorqueFrameMismatch {
-        /// The grasp's (torque reference, torque scale).
-        grasp: ([f64; 3], f64),
-        /// The space's.
-        space: ([f64; 3], f64),
-    },
-    /// Q_OWS by the ellipsoid method: no enclosing ellipsoid (the disturbances span fewer than six
-    /// dimensions).
-    Ellipsoid(String),
-}
-
-impl fmt::Display for QualityError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            QualityError::NonFiniteWrench => write!(
-                f,
-                "a wrench is not finite: the friction coefficient, a lever arm or 1/torque_scale \
-                 overflows f64"
-            ),
-            QualityError::WrenchTooLarge { largest } => write!(
-                f,
-                "a wrench coordinate is {largest:e}, above the {MAX_WRENCH_COORDINATE:e} the \
-                 metrics accept (their squared norms would overflow): use other units (positions, \
-                 torque_scale) or a smaller friction coefficient"
-            ),
-            QualityError::MinkowskiTooLarge { points } => {
-                let count = points.map_or("more than usize::MAX".to_string(), |p| p.to_string());
-                write!(
-                    f,
-                    "the Minkowski sum has {count} points, more than the {MINKOWSKI_MATERIALISE_LIMIT} \
-                     the full and qhull methods materialise; use the partial method"
-                )
-            }
-            QualityError::Qhull(message) => write!(f, "qhull failed: {message}"),
-            QualityError::UnsupportedMethod { method, metric } => write!(
-                f,
-                "the {} method does not compute {} (partial and full compute every metric; \
-                 qhull only q1 and qinf; partial-rays and ellipsoid only ows)",
-                method.name(),
-                metric.name()
-            ),
-            QualityError::OwsNeedsWrenchSpace => f.write_str(
-                "Q_OWS needs the object's wrench space: evaluate it with an OwsEvaluator",
-            ),
-            QualityError::QhullUnavailable => f.write_str(
-                "the Qhull method needs pqhull built with the `qhull` feature (which needs libclang)",
-            ),
-            QualityError::TorqueFrameMismatch { grasp, space } => write!(
-                f,
-                "the grasp's torque frame (reference {:?}, scale {}) is not the object wrench \
-                 space's (reference {:?}, scale {})",
-                grasp.0, grasp.1, space.0, space.1
-            ),
-            QualityError::Ellipsoid(message) => write!(f, "no enclosing ellipsoid: {message}"),
-        }
-    }
-}
-
-impl std::error::Error for QualityError {}
 
 /// Evaluates one metric by one method over many grasps, reusing its buffers: the wrenches, the
 /// hull's arena ([`Hull::rebuild_with_strategy`]), the partial strategy's queue, GJK's corral and,

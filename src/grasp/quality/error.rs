@@ -1,0 +1,98 @@
+//! Why a grasp could not be evaluated.
+
+use super::{MAX_WRENCH_COORDINATE, MINKOWSKI_MATERIALISE_LIMIT, Method, Metric};
+use std::fmt;
+
+/// Why a grasp could not be evaluated.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum QualityError {
+    /// A wrench overflowed (a friction coefficient, a lever arm or the inverse torque scale too
+    /// large for `f64`).
+    NonFiniteWrench,
+    /// A wrench coordinate above [`MAX_WRENCH_COORDINATE`].
+    WrenchTooLarge {
+        /// The largest wrench coordinate (absolute value).
+        largest: f64,
+    },
+    /// The full or Qhull method would have to materialise more Minkowski points than
+    /// [`MINKOWSKI_MATERIALISE_LIMIT`] (`None`: more than `usize::MAX`).
+    MinkowskiTooLarge {
+        /// k^m (or (k+1)^m with the zero wrench).
+        points: Option<usize>,
+    },
+    /// Qhull failed (feature `qhull`).
+    Qhull(String),
+    /// [`Method::Qhull`] in a build without the `qhull` feature.
+    QhullUnavailable,
+    /// [`Metric::Ows`] given to [`Evaluator`](super::Evaluator): Q_OWS needs the object's wrench space, so it is
+    /// [`OwsEvaluator`](crate::grasp::ows::OwsEvaluator)'s.
+    OwsNeedsWrenchSpace,
+    /// The method does not compute this metric (see [`Method`]).
+    UnsupportedMethod {
+        /// The method asked for.
+        method: Method,
+        /// The metric asked for.
+        metric: Metric,
+    },
+    /// Q_OWS: the grasp's torque frame is not the object wrench space's (build the grasp with
+    /// [`ObjectWrenchSpace::frame`](crate::grasp::ows::ObjectWrenchSpace::frame)).
+    TorqueFrameMismatch {
+        /// The grasp's (torque reference, torque scale).
+        grasp: ([f64; 3], f64),
+        /// The space's.
+        space: ([f64; 3], f64),
+    },
+    /// Q_OWS by the ellipsoid method: no enclosing ellipsoid (the disturbances span fewer than six
+    /// dimensions).
+    Ellipsoid(String),
+}
+
+impl fmt::Display for QualityError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            QualityError::NonFiniteWrench => write!(
+                f,
+                "a wrench is not finite: the friction coefficient, a lever arm or 1/torque_scale \
+                 overflows f64"
+            ),
+            QualityError::WrenchTooLarge { largest } => write!(
+                f,
+                "a wrench coordinate is {largest:e}, above the {MAX_WRENCH_COORDINATE:e} the \
+                 metrics accept (their squared norms would overflow): use other units (positions, \
+                 torque_scale) or a smaller friction coefficient"
+            ),
+            QualityError::MinkowskiTooLarge { points } => {
+                let count = points.map_or("more than usize::MAX".to_string(), |p| p.to_string());
+                write!(
+                    f,
+                    "the Minkowski sum has {count} points, more than the {MINKOWSKI_MATERIALISE_LIMIT} \
+                     the full and qhull methods materialise; use the partial method"
+                )
+            }
+            QualityError::Qhull(message) => write!(f, "qhull failed: {message}"),
+            QualityError::UnsupportedMethod { method, metric } => write!(
+                f,
+                "the {} method does not compute {} (partial and full compute every metric; \
+                 qhull only q1 and qinf; partial-rays and ellipsoid only ows)",
+                method.name(),
+                metric.name()
+            ),
+            QualityError::OwsNeedsWrenchSpace => f.write_str(
+                "Q_OWS needs the object's wrench space: evaluate it with an OwsEvaluator",
+            ),
+            QualityError::QhullUnavailable => f.write_str(
+                "the Qhull method needs pqhull built with the `qhull` feature (which needs libclang)",
+            ),
+            QualityError::TorqueFrameMismatch { grasp, space } => write!(
+                f,
+                "the grasp's torque frame (reference {:?}, scale {}) is not the object wrench \
+                 space's (reference {:?}, scale {})",
+                grasp.0, grasp.1, space.0, space.1
+            ),
+            QualityError::Ellipsoid(message) => write!(f, "no enclosing ellipsoid: {message}"),
+        }
+    }
+}
+
+impl std::error::Error for QualityError {}
