@@ -1,0 +1,112 @@
+"""pqhull: exact convex hulls and partial hulls in 2 to 8 dimensions, and the grasp-quality
+metrics they make fast (Liu & Carpin's PQHGWS), with numpy arrays in and out.
+
+>>> import numpy as np, pqhull
+>>> square = np.array([[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0], [0.2, 0.1]])
+>>> hull = pqhull.ConvexHull(square)
+>>> hull.volume
+4.0
+>>> pqhull.distance_to_boundary(square, [0.5, 0.0]).signed_distance
+0.5
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from . import _pqhull
+from ._pqhull import (
+    Batch,
+    ConvexHull,
+    Distance,
+    Error,
+    GraspError,
+    HullError,
+    InputError,
+    Quality,
+    QualityError,
+)
+
+__all__ = [
+    "ConvexHull",
+    "distance_to_boundary",
+    "q1",
+    "qinf",
+    "evaluate",
+    "Batch",
+    "Distance",
+    "Quality",
+    "Error",
+    "HullError",
+    "GraspError",
+    "QualityError",
+    "InputError",
+]
+
+
+def _array(value, ndim, name):
+    """`value` as a C-contiguous float64 array of `ndim` dimensions, or an InputError."""
+    try:
+        array = np.ascontiguousarray(value, dtype=np.float64)
+    except (TypeError, ValueError) as e:
+        raise InputError(f"{name}: not an array of numbers ({e})") from None
+    if array.ndim != ndim:
+        raise InputError(f"{name} must have {ndim} dimensions, not shape {array.shape}")
+    return array
+
+
+def _optional(value, ndim, name):
+    return None if value is None else _array(value, ndim, name)
+
+
+def distance_to_boundary(points, query=None):
+    """The signed distance from `query` (default: the origin) to the boundary of the hull of
+    `points`: positive inside, negative outside, exactly signed; from a partial hull that stops
+    as soon as the nearest facet is certain. Returns a Distance (`signed_distance`, `facet`,
+    `nearest_point` and the work counters)."""
+    return _pqhull.distance_to_boundary(_array(points, 2, "points"), _optional(query, 1, "query"))
+
+
+def _frame(torque_reference):
+    return _optional(torque_reference, 1, "torque_reference")
+
+
+def q1(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
+       torque_scale=None, method="partial"):
+    """Ferrari-Canny Q1 of one grasp of m contacts: (m, 3) positions and inward normals,
+    optional (m, 3) tangents; exact on its wrenches. Returns a Quality (`value`,
+    `force_closure`, counters)."""
+    return _pqhull.q1(
+        _array(positions, 2, "positions"), _array(normals, 2, "normals"),
+        _optional(tangents, 2, "tangents"), friction=float(friction), cone_edges=int(cone_edges),
+        torque_reference=_frame(torque_reference),
+        torque_scale=None if torque_scale is None else float(torque_scale), method=method)
+
+
+def qinf(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
+         torque_scale=None, with_zero_wrench=False, method="partial"):
+    """Q-infinity (the Minkowski sum of the contacts' wrench sets) of one grasp; as q1."""
+    return _pqhull.qinf(
+        _array(positions, 2, "positions"), _array(normals, 2, "normals"),
+        _optional(tangents, 2, "tangents"), friction=float(friction), cone_edges=int(cone_edges),
+        torque_reference=_frame(torque_reference),
+        torque_scale=None if torque_scale is None else float(torque_scale),
+        with_zero_wrench=bool(with_zero_wrench), method=method)
+
+
+def evaluate(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
+             torque_scale=None, metric="q1", method="partial", with_zero_wrench=False,
+             threads=None):
+    """The metric ("q1" or "qinf") of N grasps of m contacts: (N, m, 3) positions and normals,
+    optional tangents; `friction` one value or one per grasp. Runs on all cores (or `threads`)
+    with the GIL released. Returns a Batch: `quality` (N,) and `force_closure` (N,) arrays, and
+    `errors`, a list of (row, message); a bad row is NaN and False there, the others are kept."""
+    mu = np.atleast_1d(np.asarray(friction, dtype=np.float64))
+    if mu.ndim != 1:
+        raise InputError(f"friction must be a number or a 1-D array, not shape {mu.shape}")
+    return _pqhull.evaluate(
+        _array(positions, 3, "positions"), _array(normals, 3, "normals"),
+        _optional(tangents, 3, "tangents"), friction=np.ascontiguousarray(mu),
+        cone_edges=int(cone_edges), torque_reference=_frame(torque_reference),
+        torque_scale=None if torque_scale is None else float(torque_scale), metric=metric,
+        method=method, with_zero_wrench=bool(with_zero_wrench), threads=threads)

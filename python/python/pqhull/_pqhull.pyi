@@ -1,0 +1,91 @@
+"""Type stubs of the extension module behind `pqhull` (see `pqhull/__init__.py`)."""
+
+from typing import Optional, Sequence
+
+import numpy as np
+import numpy.typing as npt
+
+class Error(ValueError): ...
+class HullError(Error): ...
+class GraspError(Error): ...
+class QualityError(Error): ...
+class InputError(Error): ...
+
+class ConvexHull:
+    def __init__(self, points: npt.ArrayLike) -> None: ...
+    @property
+    def points(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def vertices(self) -> npt.NDArray[np.uintp]: ...
+    @property
+    def simplices(self) -> npt.NDArray[np.uintp]: ...
+    @property
+    def neighbors(self) -> npt.NDArray[np.uintp]: ...
+    @property
+    def equations(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def volume(self) -> float: ...
+    @property
+    def points_processed(self) -> int: ...
+    @property
+    def facets_created(self) -> int: ...
+
+class Distance:
+    signed_distance: float
+    facet: list[int]
+    nearest_point: list[float]
+    points_processed: int
+    facets_created: int
+    expansions: int
+
+class Quality:
+    value: float
+    force_closure: bool
+    points_processed: int
+    facets_created: int
+
+class Batch:
+    quality: npt.NDArray[np.float64]
+    force_closure: npt.NDArray[np.bool_]
+    errors: list[tuple[int, str]]
+
+def distance_to_boundary(
+    points: npt.NDArray[np.float64], query: Optional[npt.NDArray[np.float64]] = None
+) -> Distance: ...
+def q1(
+    positions: npt.NDArray[np.float64],
+    normals: npt.NDArray[np.float64],
+    tangents: Optional[npt.NDArray[np.float64]] = None,
+    *,
+    friction: float,
+    cone_edges: int,
+    torque_reference: Optional[npt.NDArray[np.float64]] = None,
+    torque_scale: Optional[float] = None,
+    method: str = "partial",
+) -> Quality: ...
+def qinf(
+    positions: npt.NDArray[np.float64],
+    normals: npt.NDArray[np.float64],
+    tangents: Optional[npt.NDArray[np.float64]] = None,
+    *,
+    friction: float,
+    cone_edges: int,
+    torque_reference: Optional[npt.NDArray[np.float64]] = None,
+    torque_scale: Optional[float] = None,
+    with_zero_wrench: bool = False,
+    method: str = "partial",
+) -> Quality: ...
+def evaluate(
+    positions: npt.NDArray[np.float64],
+    normals: npt.NDArray[np.float64],
+    tangents: Optional[npt.NDArray[np.float64]] = None,
+    *,
+    friction: npt.NDArray[np.float64],
+    cone_edges: int,
+    torque_reference: Optional[npt.NDArray[np.float64]] = None,
+    torque_scale: Optional[float] = None,
+    metric: str = "q1",
+    method: str = "partial",
+    with_zero_wrench: bool = False,
+    threads: Optional[int] = None,
+) -> Batch: ...

@@ -1,0 +1,355 @@
+//! Grasps as arrays: `q1`, `qinf` on one grasp, and `evaluate` on a batch (GIL released).
+
+use crate::errors;
+use numpy::ndarray::ArrayView2;
+use numpy::{
+    PyArray1, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArrayMethods,
+    ToPyArray,
+};
+use pqhull::grasp::quality::{Evaluator, Method, Metric, evaluate_batch};
+use pqhull::grasp::{Contact, FrictionModel, Grasp};
+use pyo3::prelude::*;
+
+/// One grasp's quality.
+#[pyclass(module = "pqhull", frozen, get_all)]
+pub struct Quality {
+    /// The metric on the caller's wrenches: positive inside (force closure), negative outside.
+    value: f64,
+    /// Whether the grasp is force closure (decided on the certified value).
+    force_closure: bool,
+    /// Points added to the (partial) hull.
+    points_processed: usize,
+    /// Facets created.
+    facets_created: usize,
+}
+
+#[pymethods]
+impl Quality {
+    fn __repr__(&self) -> String {
+        format!(
+            "Quality(value={:e}, force_closure={}, points_processed={}, facets_created={})",
+            self.value,
+            if self.force_closure { "True" } else { "False" },
+            self.points_processed,
+            self.facets_created
+        )
+    }
+}
+
+/// A batch's results: `quality` and `force_closure` per row (NaN and False for a bad row), and
+/// `errors`, `(row, message)` for every bad row.
+#[pyclass(module = "pqhull", frozen, get_all)]
+pub struct Batch {
+    quality: Py<PyArray1<f64>>,
+    force_closure: Py<PyArray1<bool>>,
+    errors: Vec<(usize, String)>,
+}
+
+/// The torque frame and friction shared by every grasp of a call.
+struct Frame {
+    torque_reference: Option<[f64; 3]>,
+    torque_scale: Option<f64>,
+    cone_edges: usize,
+}
+
+/// One grasp from its contacts' (m, 3) positions, normals and optional tangents.
+fn grasp(
+    positions: ArrayView2<'_, f64>,
+    normals: ArrayView2<'_, f64>,
+    tangents: Option<ArrayView2<'_, f64>>,
+    friction: f64,
+    frame: &Frame,
+) -> Result<Grasp, String> {
+    let row = |a: &ArrayView2<'_, f64>, i: usize| -> [f64; 3] { [a[[i, 0]], a[[i, 1]], a[[i, 2]]] };
+    let model = FrictionModel::try_new(friction, frame.cone_edges).map_err(|e| e.to_string())?;
+    let contacts = (0..positions.nrows())
+        .map(|i| {
+            let tangent = tangents.as_ref().map(|t| row(t, i));
+            Contact::try_new(row(&positions, i), row(&normals, i), tangent)
+                .map_err(|e| format!("contact {i}: {e}"))
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let mut builder = Grasp::builder(contacts, model);
+    if let Some(c) = frame.torque_reference {
+        builder = builder.torque_reference(c);
+    }
+    if let Some(rho) = frame.torque_scale {
+        builder = builder.torque_scale(rho);
+    }
+    builder.build().map_err(|e| e.to_string())
+}
+
+/// `(m, 3)`, or an input error naming `what`.
+fn check_contacts(what: &str, shape: &[usize], m: Option<usize>) -> PyResult<()> {
+    let ok = shape.len() == 2 && shape[1] == 3 && m.is_none_or(|m| shape[0] == m);
+    if !ok {
+        return Err(errors::input(format!(
+            "{what} must have shape (m, 3){}, not {shape:?}",
+            m.map_or(String::new(), |m| format!(" with m = {m}"))
+        )));
+    }
+    Ok(())
+}
+
+fn metric_of(name: &str, with_zero_wrench: bool) -> PyResult<Metric> {
+    match name {
+        "q1" => Ok(Metric::Q1),
+        "qinf" => Ok(Metric::QInf { with_zero_wrench }),
+        other => Err(errors::input(format!(
+            "metric {other:?}: the Python package evaluates \"q1\" and \"qinf\""
+        ))),
+    }
+}
+
+fn method_of(name: &str) -> PyResult<Method> {
+    match name {
+        "partial" => Ok(Method::Partial),
+        "full" => Ok(Method::Full),
+        "qhull" => Ok(Method::Qhull),
+        other => Err(errors::input(format!(
+            "method {other:?}: one of \"partial\", \"full\", \"qhull\""
+        ))),
+    }
+}
+
+fn frame(
+    cone_edges: usize,
+    torque_reference: Option<PyReadonlyArray1<'_, f64>>,
+    torque_scale: Option<f64>,
+) -> PyResult<Frame> {
+    let torque_reference = match torque_reference {
+        None => None,
+        Some(c) => {
+            let c = c.as_slice().map_err(|e| errors::input(e.to_string()))?;
+            if c.len() != 3 {
+                return Err(errors::input(format!(
+                    "torque_reference must have 3 coordinates, not {}",
+                    c.len()
+                )));
+            }
+            Some([c[0], c[1], c[2]])
+        }
+    };
+    Ok(Frame {
+        torque_reference,
+        torque_scale,
+        cone_edges,
+    })
+}
+
+#[allow(clippy::too_many_arguments)] // the Python signature
+fn single(
+    py: Python<'_>,
+    positions: PyReadonlyArray2<'_, f64>,
+    normals: PyReadonlyArray2<'_, f64>,
+    tangents: Option<PyReadonlyArray2<'_, f64>>,
+    friction: f64,
+    cone_edges: usize,
+    torque_reference: Option<PyReadonlyArray1<'_, f64>>,
+    torque_scale: Option<f64>,
+    metric: Metric,
+    method: &str,
+) -> PyResult<Quality> {
+    check_contacts("positions", positions.shape(), None)?;
+    let m = positions.shape()[0];
+    check_contacts("normals", normals.shape(), Some(m))?;
+    if let Some(t) = &tangents {
+        check_contacts("tangents", t.shape(), Some(m))?;
+    }
+    let frame = frame(cone_edges, torque_reference, torque_scale)?;
+    let method = method_of(method)?;
+    let g = grasp(
+        positions.as_array(),
+        normals.as_array(),
+        tangents.as_ref().map(|t| t.as_array()),
+        friction,
+        &frame,
+    )
+    .map_err(errors::grasp)?;
+    let q = py
+        .detach(|| Evaluator::new(metric, method).evaluate(&g))
+        .map_err(errors::quality)?;
+    Ok(Quality {
+        value: q.value,
+        force_closure: q.force_closure,
+        points_processed: q.stats.points_processed,
+        facets_created: q.stats.facets_created,
+    })
+}
+
+/// q1(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
+/// torque_scale=None, method="partial"): Ferrari–Canny Q1 of one grasp, exact on its wrenches.
+#[pyfunction]
+#[pyo3(signature = (positions, normals, tangents=None, *, friction, cone_edges,
+                    torque_reference=None, torque_scale=None, method="partial"))]
+#[allow(clippy::too_many_arguments)] // the Python signature
+pub fn q1(
+    py: Python<'_>,
+    positions: PyReadonlyArray2<'_, f64>,
+    normals: PyReadonlyArray2<'_, f64>,
+    tangents: Option<PyReadonlyArray2<'_, f64>>,
+    friction: f64,
+    cone_edges: usize,
+    torque_reference: Option<PyReadonlyArray1<'_, f64>>,
+    torque_scale: Option<f64>,
+    method: &str,
+) -> PyResult<Quality> {
+    single(
+        py,
+        positions,
+        normals,
+        tangents,
+        friction,
+        cone_edges,
+        torque_reference,
+        torque_scale,
+        Metric::Q1,
+        method,
+    )
+}
+
+/// qinf(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
+/// torque_scale=None, with_zero_wrench=False, method="partial"): Q∞ of one grasp.
+#[pyfunction]
+#[pyo3(signature = (positions, normals, tangents=None, *, friction, cone_edges,
+                    torque_reference=None, torque_scale=None, with_zero_wrench=false,
+                    method="partial"))]
+#[allow(clippy::too_many_arguments)] // the Python signature
+pub fn qinf(
+    py: Python<'_>,
+    positions: PyReadonlyArray2<'_, f64>,
+    normals: PyReadonlyArray2<'_, f64>,
+    tangents: Option<PyReadonlyArray2<'_, f64>>,
+    friction: f64,
+    cone_edges: usize,
+    torque_reference: Option<PyReadonlyArray1<'_, f64>>,
+    torque_scale: Option<f64>,
+    with_zero_wrench: bool,
+    method: &str,
+) -> PyResult<Quality> {
+    single(
+        py,
+        positions,
+        normals,
+        tangents,
+        friction,
+        cone_edges,
+        torque_reference,
+        torque_scale,
+        Metric::QInf { with_zero_wrench },
+        method,
+    )
+}
+
+/// evaluate(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
+/// torque_scale=None, metric="q1", method="partial", with_zero_wrench=False, threads=None):
+/// the metric of N grasps of m contacts ((N, m, 3) arrays; `friction` one value or one per
+/// grasp) on all cores (or `threads`), the GIL released. A bad row gives NaN and an error entry.
+#[pyfunction]
+#[pyo3(signature = (positions, normals, tangents=None, *, friction, cone_edges,
+                    torque_reference=None, torque_scale=None, metric="q1", method="partial",
+                    with_zero_wrench=false, threads=None))]
+#[allow(clippy::too_many_arguments)] // the Python signature
+pub fn evaluate(
+    py: Python<'_>,
+    positions: PyReadonlyArray3<'_, f64>,
+    normals: PyReadonlyArray3<'_, f64>,
+    tangents: Option<PyReadonlyArray3<'_, f64>>,
+    friction: PyReadonlyArray1<'_, f64>,
+    cone_edges: usize,
+    torque_reference: Option<PyReadonlyArray1<'_, f64>>,
+    torque_scale: Option<f64>,
+    metric: &str,
+    method: &str,
+    with_zero_wrench: bool,
+    threads: Option<usize>,
+) -> PyResult<Batch> {
+    let shape = positions.shape().to_vec();
+    if shape.len() != 3 || shape[2] != 3 {
+        return Err(errors::input(format!(
+            "positions must have shape (N, m, 3), not {shape:?}"
+        )));
+    }
+    let (n, m) = (shape[0], shape[1]);
+    for (what, s) in [
+        ("normals", normals.shape()),
+        (
+            "tangents",
+            tangents.as_ref().map_or(&shape[..], |t| t.shape()),
+        ),
+    ] {
+        if s != shape.as_slice() {
+            return Err(errors::input(format!(
+                "{what} must have the shape of positions, {shape:?}, not {s:?}"
+            )));
+        }
+    }
+    let friction = friction
+        .as_slice()
+        .map_err(|e| errors::input(e.to_string()))?;
+    if friction.len() != 1 && friction.len() != n {
+        return Err(errors::input(format!(
+            "friction must be one value or one per grasp ({n}), not {}",
+            friction.len()
+        )));
+    }
+    let metric = metric_of(metric, with_zero_wrench)?;
+    let method = method_of(method)?;
+    let frame = frame(cone_edges, torque_reference, torque_scale)?;
+    if threads == Some(0) || threads.is_some_and(|t| t > 256) {
+        return Err(errors::input("threads must be from 1 to 256"));
+    }
+    let (p, nrm) = (positions.as_array(), normals.as_array());
+    let t = tangents.as_ref().map(|t| t.as_array());
+    // Build every grasp (a bad row keeps its message), then evaluate the good ones.
+    let built: Vec<Result<Grasp, String>> = (0..n)
+        .map(|i| {
+            let mu = friction[if friction.len() == 1 { 0 } else { i }];
+            grasp(
+                p.index_axis(numpy::ndarray::Axis(0), i),
+                nrm.index_axis(numpy::ndarray::Axis(0), i),
+                t.as_ref().map(|t| t.index_axis(numpy::ndarray::Axis(0), i)),
+                mu,
+                &frame,
+            )
+        })
+        .collect();
+    let _ = m;
+    let good: Vec<Grasp> = built
+        .iter()
+        .filter_map(|g| g.as_ref().ok().cloned())
+        .collect();
+    let results = py.detach(|| -> Result<_, String> {
+        match threads {
+            None => Ok(evaluate_batch(&good, metric, method)),
+            Some(k) => rayon::ThreadPoolBuilder::new()
+                .num_threads(k)
+                .build()
+                .map(|pool| pool.install(|| evaluate_batch(&good, metric, method)))
+                .map_err(|e| e.to_string()),
+        }
+    });
+    let results = results.map_err(errors::input)?;
+    let mut quality = vec![f64::NAN; n];
+    let mut force_closure = vec![false; n];
+    let mut errors_out = Vec::new();
+    let mut next = results.into_iter();
+    for (i, g) in built.iter().enumerate() {
+        match g {
+            Err(message) => errors_out.push((i, format!("row {i}: {message}"))),
+            Ok(_) => match next.next() {
+                Some(Ok(q)) => {
+                    quality[i] = q.value;
+                    force_closure[i] = q.force_closure;
+                }
+                Some(Err(e)) => errors_out.push((i, format!("row {i}: {e}"))),
+                None => errors_out.push((i, format!("row {i}: not evaluated"))),
+            },
+        }
+    }
+    Ok(Batch {
+        quality: quality.to_pyarray(py).unbind(),
+        force_closure: force_closure.to_pyarray(py).unbind(),
+        errors: errors_out,
+    })
+}

@@ -1,0 +1,27 @@
+//! `pqhull._pqhull`: the Python extension module behind the `pqhull` package (python/pqhull).
+//!
+//! Arrays come in as numpy `float64` arrays (read in place, no copy of the caller's data beyond
+//! the one into the hull's own scaled storage) and go out as new numpy arrays. Every error is a
+//! `pqhull.Error` subclass carrying the library's message; batch evaluation reports a bad row as
+//! NaN plus an error entry and keeps the other rows. Long computations release the GIL.
+
+mod errors;
+mod grasps;
+mod hull;
+
+use pyo3::prelude::*;
+
+/// The extension module.
+#[pymodule]
+fn _pqhull(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    errors::register(m)?;
+    m.add_class::<hull::ConvexHull>()?;
+    m.add_class::<hull::Distance>()?;
+    m.add_class::<grasps::Quality>()?;
+    m.add_class::<grasps::Batch>()?;
+    m.add_function(wrap_pyfunction!(hull::distance_to_boundary, m)?)?;
+    m.add_function(wrap_pyfunction!(grasps::q1, m)?)?;
+    m.add_function(wrap_pyfunction!(grasps::qinf, m)?)?;
+    m.add_function(wrap_pyfunction!(grasps::evaluate, m)?)?;
+    Ok(())
+}
