@@ -1,20 +1,23 @@
 //! Grasps as arrays: `q1`, `qinf` on one grasp, and `evaluate` on a batch (GIL released).
 
 use crate::errors;
+use crate::ows::ObjectWrenchSpace;
 use numpy::ndarray::ArrayView2;
 use numpy::{
     PyArray1, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArrayMethods,
     ToPyArray,
 };
-use pqhull::grasp::quality::{Evaluator, Method, Metric, evaluate_batch};
+use pqhull::grasp::ows::{ObjectWrenchSpace as Space, OwsEvaluator, evaluate_ows_batch};
+use pqhull::grasp::quality::{Evaluator, Method, Metric, QualityError, evaluate_batch};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
 use pyo3::prelude::*;
 
 /// One grasp's quality.
 #[pyclass(module = "pqhull", frozen, get_all)]
 pub struct Quality {
-    /// The metric on the caller's wrenches: positive inside (force closure), negative outside.
-    value: f64,
+    /// The metric on the caller's wrenches: positive inside (force closure), negative outside;
+    /// for Q_OWS, None when the grasp is not force closure (it has no value then).
+    value: Option<f64>,
     /// Whether the grasp is force closure (decided on the certified value).
     force_closure: bool,
     /// Points added to the (partial) hull.
@@ -27,8 +30,8 @@ pub struct Quality {
 impl Quality {
     fn __repr__(&self) -> String {
         format!(
-            "Quality(value={:e}, force_closure={}, points_processed={}, facets_created={})",
-            self.value,
+            "Quality(value={}, force_closure={}, points_processed={}, facets_created={})",
+            self.value.map_or("None".to_string(), |v| format!("{v:e}")),
             if self.force_closure { "True" } else { "False" },
             self.points_processed,
             self.facets_created
@@ -95,21 +98,48 @@ fn metric_of(name: &str, with_zero_wrench: bool) -> PyResult<Metric> {
     match name {
         "q1" => Ok(Metric::Q1),
         "qinf" => Ok(Metric::QInf { with_zero_wrench }),
+        "ows" => Ok(Metric::Ows),
         other => Err(errors::input(format!(
-            "metric {other:?}: the Python package evaluates \"q1\" and \"qinf\""
+            "metric {other:?}: one of \"q1\", \"qinf\", \"ows\""
         ))),
     }
 }
 
-fn method_of(name: &str) -> PyResult<Method> {
-    match name {
-        "partial" => Ok(Method::Partial),
-        "full" => Ok(Method::Full),
-        "qhull" => Ok(Method::Qhull),
-        other => Err(errors::input(format!(
-            "method {other:?}: one of \"partial\", \"full\", \"qhull\""
-        ))),
+fn method_of(name: &str, metric: Metric) -> PyResult<Method> {
+    let method = match name {
+        "partial" => Method::Partial,
+        "full" => Method::Full,
+        "qhull" => Method::Qhull,
+        "partial-rays" => Method::PartialRays,
+        "ellipsoid" => Method::Ellipsoid,
+        other => {
+            return Err(errors::input(format!(
+                "method {other:?}: one of \"partial\", \"full\", \"qhull\", \"partial-rays\", \
+                 \"ellipsoid\""
+            )));
+        }
+    };
+    if !method.supports(metric) {
+        return Err(errors::quality(QualityError::UnsupportedMethod {
+            method,
+            metric,
+        }));
     }
+    Ok(method)
+}
+
+/// `grasp` in `space`'s torque frame; an error when the caller gave a frame of their own.
+fn in_frame(space: &Space, grasp: Grasp, frame: &Frame) -> Result<Grasp, String> {
+    if space.torque_frame().is_some()
+        && (frame.torque_reference.is_some() || frame.torque_scale.is_some())
+    {
+        return Err(
+            "the grasp is evaluated in the object wrench space's torque frame: \
+                    give no torque_reference or torque_scale"
+                .into(),
+        );
+    }
+    space.frame(&grasp).map_err(|e| e.to_string())
 }
 
 fn frame(
@@ -149,6 +179,7 @@ fn single(
     torque_scale: Option<f64>,
     metric: Metric,
     method: &str,
+    space: Option<&Space>,
 ) -> PyResult<Quality> {
     check_contacts("positions", positions.shape(), None)?;
     let m = positions.shape()[0];
@@ -157,7 +188,7 @@ fn single(
         check_contacts("tangents", t.shape(), Some(m))?;
     }
     let frame = frame(cone_edges, torque_reference, torque_scale)?;
-    let method = method_of(method)?;
+    let method = method_of(method, metric)?;
     let g = grasp(
         positions.as_array(),
         normals.as_array(),
@@ -166,15 +197,31 @@ fn single(
         &frame,
     )
     .map_err(errors::grasp)?;
-    let q = py
-        .detach(|| Evaluator::new(metric, method).evaluate(&g))
-        .map_err(errors::quality)?;
-    Ok(Quality {
-        value: q.value,
-        force_closure: q.force_closure,
-        points_processed: q.stats.points_processed,
-        facets_created: q.stats.facets_created,
-    })
+    match space {
+        None => {
+            let q = py
+                .detach(|| Evaluator::new(metric, method).evaluate(&g))
+                .map_err(errors::quality)?;
+            Ok(Quality {
+                value: Some(q.value),
+                force_closure: q.force_closure,
+                points_processed: q.stats.points_processed,
+                facets_created: q.stats.facets_created,
+            })
+        }
+        Some(space) => {
+            let g = in_frame(space, g, &frame).map_err(errors::grasp)?;
+            let q = py
+                .detach(|| OwsEvaluator::new(method).evaluate(&g, space))
+                .map_err(errors::quality)?;
+            Ok(Quality {
+                value: q.value,
+                force_closure: q.force_closure,
+                points_processed: q.stats.points_processed,
+                facets_created: q.stats.facets_created,
+            })
+        }
+    }
 }
 
 /// q1(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
@@ -205,6 +252,7 @@ pub fn q1(
         torque_scale,
         Metric::Q1,
         method,
+        None,
     )
 }
 
@@ -238,6 +286,40 @@ pub fn qinf(
         torque_scale,
         Metric::QInf { with_zero_wrench },
         method,
+        None,
+    )
+}
+
+/// ows(positions, normals, tangents=None, *, space, friction, cone_edges, method="partial"):
+/// Q_OWS of one grasp against an ObjectWrenchSpace (None when not force closure).
+#[pyfunction]
+#[pyo3(signature = (positions, normals, tangents=None, *, space, friction, cone_edges,
+                    torque_reference=None, torque_scale=None, method="partial"))]
+#[allow(clippy::too_many_arguments)] // the Python signature
+pub fn ows(
+    py: Python<'_>,
+    positions: PyReadonlyArray2<'_, f64>,
+    normals: PyReadonlyArray2<'_, f64>,
+    tangents: Option<PyReadonlyArray2<'_, f64>>,
+    space: &ObjectWrenchSpace,
+    friction: f64,
+    cone_edges: usize,
+    torque_reference: Option<PyReadonlyArray1<'_, f64>>,
+    torque_scale: Option<f64>,
+    method: &str,
+) -> PyResult<Quality> {
+    single(
+        py,
+        positions,
+        normals,
+        tangents,
+        friction,
+        cone_edges,
+        torque_reference,
+        torque_scale,
+        Metric::Ows,
+        method,
+        Some(&space.inner),
     )
 }
 
@@ -248,7 +330,7 @@ pub fn qinf(
 #[pyfunction]
 #[pyo3(signature = (positions, normals, tangents=None, *, friction, cone_edges,
                     torque_reference=None, torque_scale=None, metric="q1", method="partial",
-                    with_zero_wrench=false, threads=None))]
+                    with_zero_wrench=false, space=None, threads=None))]
 #[allow(clippy::too_many_arguments)] // the Python signature
 pub fn evaluate(
     py: Python<'_>,
@@ -262,6 +344,7 @@ pub fn evaluate(
     metric: &str,
     method: &str,
     with_zero_wrench: bool,
+    space: Option<PyRef<'_, ObjectWrenchSpace>>,
     threads: Option<usize>,
 ) -> PyResult<Batch> {
     let shape = positions.shape().to_vec();
@@ -294,7 +377,13 @@ pub fn evaluate(
         )));
     }
     let metric = metric_of(metric, with_zero_wrench)?;
-    let method = method_of(method)?;
+    let method = method_of(method, metric)?;
+    let space = space.as_ref().map(|s| &s.inner);
+    if (metric == Metric::Ows) != space.is_some() {
+        return Err(errors::input(
+            "metric \"ows\" needs space= (an ObjectWrenchSpace), and only it takes one",
+        ));
+    }
     let frame = frame(cone_edges, torque_reference, torque_scale)?;
     if threads == Some(0) || threads.is_some_and(|t| t > 256) {
         return Err(errors::input("threads must be from 1 to 256"));
@@ -312,6 +401,10 @@ pub fn evaluate(
                 mu,
                 &frame,
             )
+            .and_then(|g| match space {
+                Some(space) => in_frame(space, g, &frame),
+                None => Ok(g),
+            })
         })
         .collect();
     let _ = m;
@@ -319,13 +412,26 @@ pub fn evaluate(
         .iter()
         .filter_map(|g| g.as_ref().ok().cloned())
         .collect();
+    // Each row as (value, force closure): Q_OWS has no value for a grasp not in force closure.
+    let run = || -> Vec<Result<(Option<f64>, bool), QualityError>> {
+        match space {
+            None => evaluate_batch(&good, metric, method)
+                .into_iter()
+                .map(|r| r.map(|q| (Some(q.value), q.force_closure)))
+                .collect(),
+            Some(space) => evaluate_ows_batch(&good, space, method)
+                .into_iter()
+                .map(|r| r.map(|q| (q.value, q.force_closure)))
+                .collect(),
+        }
+    };
     let results = py.detach(|| -> Result<_, String> {
         match threads {
-            None => Ok(evaluate_batch(&good, metric, method)),
+            None => Ok(run()),
             Some(k) => rayon::ThreadPoolBuilder::new()
                 .num_threads(k)
                 .build()
-                .map(|pool| pool.install(|| evaluate_batch(&good, metric, method)))
+                .map(|pool| pool.install(run))
                 .map_err(|e| e.to_string()),
         }
     });
@@ -338,9 +444,10 @@ pub fn evaluate(
         match g {
             Err(message) => errors_out.push((i, format!("row {i}: {message}"))),
             Ok(_) => match next.next() {
-                Some(Ok(q)) => {
-                    quality[i] = q.value;
-                    force_closure[i] = q.force_closure;
+                Some(Ok((value, closure))) => {
+                    // NaN without an error entry: Q_OWS of a grasp not in force closure.
+                    quality[i] = value.unwrap_or(f64::NAN);
+                    force_closure[i] = closure;
                 }
                 Some(Err(e)) => errors_out.push((i, format!("row {i}: {e}"))),
                 None => errors_out.push((i, format!("row {i}: not evaluated"))),

@@ -8,6 +8,7 @@
 mod errors;
 mod grasps;
 mod hull;
+mod ows;
 
 use pyo3::prelude::*;
 
@@ -19,9 +20,11 @@ fn _pqhull(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<hull::Distance>()?;
     m.add_class::<grasps::Quality>()?;
     m.add_class::<grasps::Batch>()?;
+    m.add_class::<ows::ObjectWrenchSpace>()?;
     m.add_function(wrap_pyfunction!(hull::distance_to_boundary, m)?)?;
     m.add_function(wrap_pyfunction!(grasps::q1, m)?)?;
     m.add_function(wrap_pyfunction!(grasps::qinf, m)?)?;
+    m.add_function(wrap_pyfunction!(grasps::ows, m)?)?;
     m.add_function(wrap_pyfunction!(grasps::evaluate, m)?)?;
     Ok(())
 }

@@ -122,3 +122,62 @@ def test_bad_input_raises_the_typed_error(call, match):
     positions, normals = random_grasps(3, seed=5)
     with pytest.raises(pqhull.Error, match=match):
         call(positions, normals)
+
+
+MESH = ROOT / "data" / "meshes" / "woody.obj"
+
+
+def test_ows_batch_equals_single_calls_and_the_cli():
+    space = pqhull.ObjectWrenchSpace.from_mesh(str(MESH), friction=0.5, cone_edges=6)
+    assert len(space) > 0 and space.torque_frame is not None
+    positions, normals = random_grasps(40, seed=6)
+    positions *= 0.1
+    batch = pqhull.evaluate(positions, normals, friction=0.5, cone_edges=8, metric="ows", space=space)
+    assert batch.errors == []
+    for i in range(40):
+        q = pqhull.ows(positions[i], normals[i], space=space, friction=0.5, cone_edges=8)
+        full = pqhull.ows(positions[i], normals[i], space=space, friction=0.5, cone_edges=8,
+                          method="full")
+        assert q.force_closure == batch.force_closure[i] == full.force_closure
+        if q.force_closure:
+            assert batch.quality[i] == q.value
+            assert q.value == pytest.approx(full.value, rel=1e-9)
+        else:
+            assert q.value is None and np.isnan(batch.quality[i])
+    assert batch.force_closure.any()
+    pqh = pqh_binary()
+    if pqh is None:
+        pytest.skip("no pqh binary: build it (cargo build --release) or set PQHULL_PQH")
+    lines = []
+    for p, n in zip(positions, normals):
+        contacts = [{"position": a.tolist(), "normal": b.tolist()} for a, b in zip(p, n)]
+        lines.append(json.dumps({"contacts": contacts, "friction": 0.5, "cone_edges": 8}))
+    out = subprocess.run([pqh, "grasp", "--quiet", "--metric", "ows", "--mesh", str(MESH),
+                          "--ows-friction", "0.5", "--ows-edges", "6"],
+                         input="\n".join(lines), text=True, capture_output=True, check=True).stdout
+    cli = [json.loads(line) for line in out.splitlines()]
+    assert [c["force_closure"] for c in cli] == batch.force_closure.tolist()
+    for c, v in zip(cli, batch.quality.tolist()):
+        assert (c["quality"] is None and np.isnan(v)) or c["quality"] == v
+
+
+def test_task_wrench_space_from_arrays_and_disturbances():
+    cube_v = np.array([[x, y, z] for x in (-0.1, 0.1) for y in (-0.1, 0.1) for z in (-0.1, 0.1)])
+    faces = [[0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
+             [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3]]
+    space = pqhull.ObjectWrenchSpace.from_arrays(cube_v, faces, friction=0.5, cone_edges=4)
+    assert len(space) > 0
+    single = pqhull.ObjectWrenchSpace.from_disturbances([[0.0, 0.0, -1.0, 0.0, 0.0, 0.0]])
+    assert single.torque_frame is None and len(single) == 1
+    positions, normals = random_grasps(10, seed=7)
+    a = pqhull.evaluate(positions, normals, friction=0.5, cone_edges=8, metric="ows", space=single)
+    b = pqhull.evaluate(positions, normals, friction=0.5, cone_edges=8, metric="ows", space=single,
+                        method="full")
+    np.testing.assert_allclose(a.quality, b.quality, rtol=1e-9)
+    with pytest.raises(pqhull.InputError, match="needs space"):
+        pqhull.evaluate(positions, normals, friction=0.5, cone_edges=8, metric="ows")
+    with pytest.raises(pqhull.QualityError, match="does not compute"):
+        pqhull.evaluate(positions, normals, friction=0.5, cone_edges=8, metric="ows",
+                        space=single, method="qhull")
+    with pytest.raises(pqhull.Error, match="shape"):
+        pqhull.ObjectWrenchSpace.from_disturbances(np.zeros((3, 5)))

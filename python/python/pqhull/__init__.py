@@ -23,6 +23,7 @@ from ._pqhull import (
     GraspError,
     HullError,
     InputError,
+    ObjectWrenchSpace,
     Quality,
     QualityError,
 )
@@ -32,6 +33,8 @@ __all__ = [
     "distance_to_boundary",
     "q1",
     "qinf",
+    "ows",
+    "ObjectWrenchSpace",
     "evaluate",
     "Batch",
     "Distance",
@@ -94,13 +97,26 @@ def qinf(positions, normals, tangents=None, *, friction, cone_edges, torque_refe
         with_zero_wrench=bool(with_zero_wrench), method=method)
 
 
+def ows(positions, normals, tangents=None, *, space, friction, cone_edges, torque_reference=None,
+        torque_scale=None, method="partial"):
+    """Q_OWS of one grasp against `space` (an ObjectWrenchSpace): how large a disturbance of the
+    space the grasp resists. `value` is None when the grasp is not force closure. With a space
+    built from a mesh the grasp is evaluated in the mesh's torque frame."""
+    return _pqhull.ows(
+        _array(positions, 2, "positions"), _array(normals, 2, "normals"),
+        _optional(tangents, 2, "tangents"), space=space, friction=float(friction),
+        cone_edges=int(cone_edges), torque_reference=_frame(torque_reference),
+        torque_scale=None if torque_scale is None else float(torque_scale), method=method)
+
+
 def evaluate(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
              torque_scale=None, metric="q1", method="partial", with_zero_wrench=False,
-             threads=None):
-    """The metric ("q1" or "qinf") of N grasps of m contacts: (N, m, 3) positions and normals,
+             space=None, threads=None):
+    """The metric ("q1", "qinf", or "ows" with `space`) of N grasps of m contacts: (N, m, 3) positions and normals,
     optional tangents; `friction` one value or one per grasp. Runs on all cores (or `threads`)
     with the GIL released. Returns a Batch: `quality` (N,) and `force_closure` (N,) arrays, and
-    `errors`, a list of (row, message); a bad row is NaN and False there, the others are kept."""
+    `errors`, a list of (row, message); a bad row is NaN and False there, the others are kept.
+    For "ows", a grasp not in force closure is NaN and False without an error entry."""
     mu = np.atleast_1d(np.asarray(friction, dtype=np.float64))
     if mu.ndim != 1:
         raise InputError(f"friction must be a number or a 1-D array, not shape {mu.shape}")
@@ -109,4 +125,4 @@ def evaluate(positions, normals, tangents=None, *, friction, cone_edges, torque_
         _optional(tangents, 3, "tangents"), friction=np.ascontiguousarray(mu),
         cone_edges=int(cone_edges), torque_reference=_frame(torque_reference),
         torque_scale=None if torque_scale is None else float(torque_scale), metric=metric,
-        method=method, with_zero_wrench=bool(with_zero_wrench), threads=threads)
+        method=method, with_zero_wrench=bool(with_zero_wrench), space=space, threads=threads)

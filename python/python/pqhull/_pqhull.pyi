@@ -39,10 +39,23 @@ class Distance:
     expansions: int
 
 class Quality:
-    value: float
+    value: Optional[float]
     force_closure: bool
     points_processed: int
     facets_created: int
+
+class ObjectWrenchSpace:
+    @staticmethod
+    def from_mesh(path: str, *, friction: float, cone_edges: int) -> ObjectWrenchSpace: ...
+    @staticmethod
+    def from_arrays(
+        vertices: npt.ArrayLike, faces: npt.ArrayLike, *, friction: float, cone_edges: int
+    ) -> ObjectWrenchSpace: ...
+    @staticmethod
+    def from_disturbances(wrenches: npt.ArrayLike) -> ObjectWrenchSpace: ...
+    @property
+    def torque_frame(self) -> Optional[tuple[list[float], float]]: ...
+    def __len__(self) -> int: ...
 
 class Batch:
     quality: npt.NDArray[np.float64]
@@ -75,6 +88,18 @@ def qinf(
     with_zero_wrench: bool = False,
     method: str = "partial",
 ) -> Quality: ...
+def ows(
+    positions: npt.NDArray[np.float64],
+    normals: npt.NDArray[np.float64],
+    tangents: Optional[npt.NDArray[np.float64]] = None,
+    *,
+    space: ObjectWrenchSpace,
+    friction: float,
+    cone_edges: int,
+    torque_reference: Optional[npt.NDArray[np.float64]] = None,
+    torque_scale: Optional[float] = None,
+    method: str = "partial",
+) -> Quality: ...
 def evaluate(
     positions: npt.NDArray[np.float64],
     normals: npt.NDArray[np.float64],
@@ -87,5 +112,6 @@ def evaluate(
     metric: str = "q1",
     method: str = "partial",
     with_zero_wrench: bool = False,
+    space: Optional[ObjectWrenchSpace] = None,
     threads: Optional[int] = None,
 ) -> Batch: ...

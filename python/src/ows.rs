@@ -1,0 +1,139 @@
+//! The object wrench space from Python: built from a mesh file, mesh arrays or a disturbance
+//! array (a task wrench space), and Q_OWS of grasps against it.
+
+use crate::errors;
+use crate::hull::float_array;
+use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
+use pqhull::grasp::FrictionModel;
+use pqhull::grasp::ows::ObjectWrenchSpace as Space;
+use pqhull::mesh::Mesh;
+use pyo3::prelude::*;
+
+/// An object wrench space (the seed paper's Eq. 6 on a mesh) or a task wrench space (given
+/// disturbances): the wrenches a grasp must resist, each `d` by `-r·d`.
+#[pyclass(module = "pqhull", name = "ObjectWrenchSpace", frozen)]
+pub struct ObjectWrenchSpace {
+    pub(crate) inner: Space,
+}
+
+fn friction(friction: f64, cone_edges: usize) -> PyResult<FrictionModel> {
+    FrictionModel::try_new(friction, cone_edges).map_err(|e| errors::grasp(e.to_string()))
+}
+
+fn from_mesh(py: Python<'_>, mesh: &Mesh, model: FrictionModel) -> PyResult<ObjectWrenchSpace> {
+    let inner = py
+        .detach(|| Space::from_mesh(mesh, model))
+        .map_err(|e| errors::grasp(e.to_string()))?;
+    Ok(ObjectWrenchSpace { inner })
+}
+
+#[pymethods]
+impl ObjectWrenchSpace {
+    /// ObjectWrenchSpace.from_mesh(path, *, friction, cone_edges): the object wrench space of an
+    /// OBJ or STL mesh, in the mesh's torque frame (centre of mass, largest vertex distance).
+    #[staticmethod]
+    #[pyo3(signature = (path, *, friction, cone_edges))]
+    fn from_mesh(
+        py: Python<'_>,
+        path: std::path::PathBuf,
+        friction: f64,
+        cone_edges: usize,
+    ) -> PyResult<Self> {
+        let model = self::friction(friction, cone_edges)?;
+        let mesh = Mesh::load(&path).map_err(|e| errors::input(e.to_string()))?;
+        self::from_mesh(py, &mesh, model)
+    }
+
+    /// ObjectWrenchSpace.from_arrays(vertices, faces, *, friction, cone_edges): as `from_mesh`, for
+    /// an (n, 3) vertex array and an (f, 3) array of vertex indices (counter-clockwise seen from
+    /// outside).
+    #[staticmethod]
+    #[pyo3(signature = (vertices, faces, *, friction, cone_edges))]
+    fn from_arrays(
+        py: Python<'_>,
+        vertices: &Bound<'_, PyAny>,
+        faces: &Bound<'_, PyAny>,
+        friction: f64,
+        cone_edges: usize,
+    ) -> PyResult<Self> {
+        let model = self::friction(friction, cone_edges)?;
+        let vertices = float_array(vertices, "vertices")?;
+        let vertices: PyReadonlyArray2<'_, f64> = vertices
+            .extract()
+            .map_err(|_| errors::input("vertices must have shape (n, 3)"))?;
+        let numpy = py.import("numpy")?;
+        let faces = numpy
+            .call_method1("ascontiguousarray", (faces, "int64"))
+            .map_err(|e| errors::input(format!("faces: not an array of integers ({e})")))?;
+        let faces: PyReadonlyArray2<'_, i64> = faces
+            .extract()
+            .map_err(|_| errors::input("faces must have shape (f, 3)"))?;
+        if vertices.shape()[1] != 3 || faces.shape()[1] != 3 {
+            return Err(errors::input(format!(
+                "vertices must have shape (n, 3) and faces (f, 3), not {:?} and {:?}",
+                vertices.shape(),
+                faces.shape()
+            )));
+        }
+        let v: Vec<[f64; 3]> = vertices
+            .as_array()
+            .rows()
+            .into_iter()
+            .map(|r| [r[0], r[1], r[2]])
+            .collect();
+        let f = faces
+            .as_array()
+            .rows()
+            .into_iter()
+            .enumerate()
+            .map(|(i, r)| {
+                let index = |x: i64| {
+                    u32::try_from(x)
+                        .map_err(|_| errors::input(format!("face {i}: index {x} out of range")))
+                };
+                Ok([index(r[0])?, index(r[1])?, index(r[2])?])
+            })
+            .collect::<PyResult<Vec<[u32; 3]>>>()?;
+        let mesh = Mesh::try_new(v, f).map_err(|e| errors::input(e.to_string()))?;
+        self::from_mesh(py, &mesh, model)
+    }
+
+    /// ObjectWrenchSpace.from_disturbances(wrenches): a task wrench space, (k, 6) wrenches in the
+    /// grasps' own torque units.
+    #[staticmethod]
+    fn from_disturbances(wrenches: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let wrenches = float_array(wrenches, "wrenches")?;
+        let wrenches: PyReadonlyArray2<'_, f64> = wrenches
+            .extract()
+            .map_err(|_| errors::input("wrenches must have shape (k, 6)"))?;
+        if wrenches.shape()[1] != 6 {
+            return Err(errors::input(format!(
+                "wrenches must have shape (k, 6), not {:?}",
+                wrenches.shape()
+            )));
+        }
+        let rows = wrenches
+            .as_array()
+            .rows()
+            .into_iter()
+            .map(|r| std::array::from_fn(|j| r[j]))
+            .collect();
+        let inner = Space::from_disturbances(rows).map_err(|e| errors::input(e.to_string()))?;
+        Ok(ObjectWrenchSpace { inner })
+    }
+
+    /// The torque frame `(reference, scale)` grasps are evaluated in, or None for a task wrench
+    /// space (the grasps' own frame).
+    #[getter]
+    fn torque_frame(&self) -> Option<([f64; 3], f64)> {
+        self.inner.torque_frame()
+    }
+
+    fn __len__(&self) -> usize {
+        self.inner.len()
+    }
+
+    fn __repr__(&self) -> String {
+        format!("ObjectWrenchSpace({} disturbances)", self.inner.len())
+    }
+}
