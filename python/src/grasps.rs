@@ -24,6 +24,8 @@ pub struct Quality {
     points_processed: usize,
     /// Facets created.
     facets_created: usize,
+    /// Time spent in the library (µs), to tell Python's per-call overhead from the work.
+    elapsed_us: f64,
 }
 
 #[pymethods]
@@ -46,6 +48,8 @@ pub struct Batch {
     quality: Py<PyArray1<f64>>,
     force_closure: Py<PyArray1<bool>>,
     errors: Vec<(usize, String)>,
+    /// Wall time of the library's batch evaluation alone (s): the rest of the call is Python's.
+    evaluation_s: f64,
 }
 
 /// The torque frame and friction shared by every grasp of a call.
@@ -207,6 +211,7 @@ fn single(
                 force_closure: q.force_closure,
                 points_processed: q.stats.points_processed,
                 facets_created: q.stats.facets_created,
+                elapsed_us: q.stats.elapsed.as_secs_f64() * 1e6,
             })
         }
         Some(space) => {
@@ -219,6 +224,7 @@ fn single(
                 force_closure: q.force_closure,
                 points_processed: q.stats.points_processed,
                 facets_created: q.stats.facets_created,
+                elapsed_us: q.stats.elapsed.as_secs_f64() * 1e6,
             })
         }
     }
@@ -425,6 +431,7 @@ pub fn evaluate(
                 .collect(),
         }
     };
+    let started = std::time::Instant::now();
     let results = py.detach(|| -> Result<_, String> {
         match threads {
             None => Ok(run()),
@@ -435,6 +442,7 @@ pub fn evaluate(
                 .map_err(|e| e.to_string()),
         }
     });
+    let evaluation_s = started.elapsed().as_secs_f64();
     let results = results.map_err(errors::input)?;
     let mut quality = vec![f64::NAN; n];
     let mut force_closure = vec![false; n];
@@ -458,5 +466,6 @@ pub fn evaluate(
         quality: quality.to_pyarray(py).unbind(),
         force_closure: force_closure.to_pyarray(py).unbind(),
         errors: errors_out,
+        evaluation_s,
     })
 }

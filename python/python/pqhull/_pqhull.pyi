@@ -43,6 +43,7 @@ class Quality:
     force_closure: bool
     points_processed: int
     facets_created: int
+    elapsed_us: float
 
 class ObjectWrenchSpace:
     @staticmethod
@@ -61,6 +62,7 @@ class Batch:
     quality: npt.NDArray[np.float64]
     force_closure: npt.NDArray[np.bool_]
     errors: list[tuple[int, str]]
+    evaluation_s: float
 
 def distance_to_boundary(
     points: npt.NDArray[np.float64], query: Optional[npt.NDArray[np.float64]] = None
