@@ -20,6 +20,10 @@ fn brute_force<const D: usize>(points: &[[f64; D]], u: [f64; D]) -> f64 {
 fn check<const D: usize>(family: &Family, n: usize, seed: u64) -> (usize, usize) {
     let points = generate::<D>(family, n, seed);
     let mut rng = Rng::new(seed);
+    let full_hull = pqhull::Hull::try_new(&points)
+        .unwrap()
+        .stats()
+        .points_processed;
     let (mut partial, mut full) = (0, 0);
     for _ in 0..5 {
         let u: [f64; D] = std::array::from_fn(|_| rng.normal());
@@ -31,10 +35,7 @@ fn check<const D: usize>(family: &Family, n: usize, seed: u64) -> (usize, usize)
         );
         assert_eq!(dot(u, points[found.point]), expected);
         partial += found.stats.points_processed;
-        full += pqhull::Hull::try_new(&points)
-            .unwrap()
-            .stats()
-            .points_processed;
+        full += full_hull;
     }
     (partial, full)
 }

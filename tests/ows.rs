@@ -294,10 +294,9 @@ fn torque_frame_must_match_the_space() {
     );
 }
 
-#[test]
-fn not_force_closure_has_no_value() {
-    // Two antipodal hard fingers: rank 5 at most, never force closure.
-    let pinch = Grasp::builder(
+/// Two antipodal hard fingers: rank 5 at most, never force closure.
+fn pinch() -> Grasp {
+    Grasp::builder(
         vec![
             Contact::try_new([-1.0, 0.0, 0.0], [1.0, 0.0, 0.0], None).unwrap(),
             Contact::try_new([1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], None).unwrap(),
@@ -305,7 +304,12 @@ fn not_force_closure_has_no_value() {
         FrictionModel::try_new(0.5, 8).unwrap(),
     )
     .build()
-    .unwrap();
+    .unwrap()
+}
+
+#[test]
+fn not_force_closure_has_no_value() {
+    let pinch = pinch();
     let space = ObjectWrenchSpace::from_disturbances(vec![[1.0, 0.0, 0.0, 0.0, 0.0, 0.0]]).unwrap();
     for method in [Method::Partial, Method::PartialRays, Method::Full] {
         let q = OwsEvaluator::new(method).evaluate(&pinch, &space).unwrap();
@@ -402,15 +406,7 @@ fn batch_results_are_in_input_order_and_match_one_by_one() {
 #[test]
 fn one_method_enum_refuses_what_a_metric_does_not_take() {
     use pqhull::grasp::quality::{Evaluator, Metric};
-    let pinch = Grasp::builder(
-        vec![
-            Contact::try_new([-1.0, 0.0, 0.0], [1.0, 0.0, 0.0], None).unwrap(),
-            Contact::try_new([1.0, 0.0, 0.0], [-1.0, 0.0, 0.0], None).unwrap(),
-        ],
-        FrictionModel::try_new(0.5, 8).unwrap(),
-    )
-    .build()
-    .unwrap();
+    let pinch = pinch();
     let space = ObjectWrenchSpace::from_disturbances(vec![[1.0, 0.0, 0.0, 0.0, 0.0, 0.0]]).unwrap();
     let refused = OwsEvaluator::new(Method::Qhull).evaluate(&pinch, &space);
     assert_eq!(

@@ -359,7 +359,7 @@ pub fn evaluate(
             "positions must have shape (N, m, 3), not {shape:?}"
         )));
     }
-    let (n, m) = (shape[0], shape[1]);
+    let n = shape[0];
     for (what, s) in [
         ("normals", normals.shape()),
         (
@@ -413,11 +413,10 @@ pub fn evaluate(
             })
         })
         .collect();
-    let _ = m;
-    let good: Vec<Grasp> = built
-        .iter()
-        .filter_map(|g| g.as_ref().ok().cloned())
-        .collect();
+    // The good grasps move into the batch; a bad row keeps only its message.
+    let mut good = Vec::with_capacity(n);
+    let built: Vec<Result<(), String>> =
+        built.into_iter().map(|g| g.map(|g| good.push(g))).collect();
     // Each row as (value, force closure): Q_OWS has no value for a grasp not in force closure.
     let run = || -> Vec<Result<(Option<f64>, bool), QualityError>> {
         match space {

@@ -39,22 +39,17 @@ fn rows<const D: usize>(points: &PyReadonlyArray2<'_, f64>) -> Vec<[f64; D]> {
 pub struct ConvexHull {
     points: Py<PyArray2<f64>>,
     dimension: usize,
+    built: Built,
+}
+
+/// What a hull build leaves for Python, flat.
+struct Built {
     vertices: Vec<usize>,
     /// Facet vertices, `dimension` per facet.
     simplices: Vec<usize>,
     /// Facet neighbours (positions), `dimension` per facet: `j` is opposite vertex `j`.
     neighbors: Vec<usize>,
     /// `normal · x + offset ≤ 0` inside: `dimension + 1` per facet.
-    equations: Vec<f64>,
-    volume: f64,
-    points_processed: usize,
-    facets_created: usize,
-}
-
-struct Built {
-    vertices: Vec<usize>,
-    simplices: Vec<usize>,
-    neighbors: Vec<usize>,
     equations: Vec<f64>,
     volume: f64,
     points_processed: usize,
@@ -140,13 +135,7 @@ impl ConvexHull {
         Ok(ConvexHull {
             points: points.as_array().to_pyarray(py).unbind(),
             dimension,
-            vertices: built.vertices,
-            simplices: built.simplices,
-            neighbors: built.neighbors,
-            equations: built.equations,
-            volume: built.volume,
-            points_processed: built.points_processed,
-            facets_created: built.facets_created,
+            built,
         })
     }
 
@@ -159,52 +148,52 @@ impl ConvexHull {
     /// Indices of the hull's vertices: counter-clockwise in 2-D, increasing otherwise.
     #[getter]
     fn vertices<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<usize>> {
-        self.vertices.to_pyarray(py)
+        self.built.vertices.to_pyarray(py)
     }
 
     /// The facets' vertex indices, (nfacet, d).
     #[getter]
     fn simplices<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<usize>>> {
-        table(py, &self.simplices, self.dimension)
+        table(py, &self.built.simplices, self.dimension)
     }
 
     /// `neighbors[i, j]`: the facet opposite vertex `j` of facet `i`, (nfacet, d).
     #[getter]
     fn neighbors<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<usize>>> {
-        table(py, &self.neighbors, self.dimension)
+        table(py, &self.built.neighbors, self.dimension)
     }
 
     /// `[normal, offset]` per facet, with `normal · x + offset ≤ 0` inside, (nfacet, d + 1).
     #[getter]
     fn equations<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
-        table(py, &self.equations, self.dimension + 1)
+        table(py, &self.built.equations, self.dimension + 1)
     }
 
     /// The hull's d-dimensional volume.
     #[getter]
     fn volume(&self) -> f64 {
-        self.volume
+        self.built.volume
     }
 
     /// Points added to the hull (the engine's work counter).
     #[getter]
     fn points_processed(&self) -> usize {
-        self.points_processed
+        self.built.points_processed
     }
 
     /// Facets created while building it.
     #[getter]
     fn facets_created(&self) -> usize {
-        self.facets_created
+        self.built.facets_created
     }
 
     fn __repr__(&self) -> String {
         format!(
             "ConvexHull(dimension={}, vertices={}, facets={}, volume={:e})",
             self.dimension,
-            self.vertices.len(),
-            self.simplices.len() / self.dimension,
-            self.volume
+            self.built.vertices.len(),
+            self.built.simplices.len() / self.dimension,
+            self.built.volume
         )
     }
 }

@@ -82,8 +82,9 @@ def test_the_gil_is_released():
         t.join()
     two = time.perf_counter() - started
     print(f"one call {one:.3f} s, two calls on two threads {two:.3f} s: {two / one:.2f}x")
-    if (os.cpu_count() or 1) >= 2:
-        assert two < 1.6 * one, f"two threads took {two / one:.2f}x one call"
+    if (os.cpu_count() or 1) < 2:
+        pytest.skip("one core: two threads cannot overlap")  # a skip CI fails on, not a pass
+    assert two < 1.6 * one, f"two threads took {two / one:.2f}x one call"
 
 
 def test_bad_rows_are_named_and_the_others_kept():

@@ -29,10 +29,7 @@ impl Grasp {
         contacts: usize,
         friction: FrictionModel,
     ) -> Grasp {
-        assert!(
-            half.iter().all(|h| h.is_finite() && *h > 0.0),
-            "random_on_box: half extents must be finite and positive, got {half:?}"
-        );
+        check_half_extents("random_on_box", half);
         let fingers = (0..contacts)
             .map(|_| {
                 let axis = rng.index(3);
@@ -83,10 +80,7 @@ impl Grasp {
             (1..=6).contains(&contacts),
             "random_on_distinct_faces: 1 to 6 contacts (a box has six faces), got {contacts}"
         );
-        assert!(
-            half.iter().all(|h| h.is_finite() && *h > 0.0),
-            "random_on_distinct_faces: half extents must be finite and positive, got {half:?}"
-        );
+        check_half_extents("random_on_distinct_faces", half);
         // Face 2a is x_a = −h_a, face 2a + 1 is x_a = +h_a.
         let mut faces: [usize; 6] = [0, 1, 2, 3, 4, 5];
         for i in 0..contacts {
@@ -154,4 +148,12 @@ impl Grasp {
             .collect::<Result<Vec<_>, _>>()?;
         Grasp::builder(fingers, friction).build()
     }
+}
+
+/// Panics unless every half extent of a box is finite and positive (the generators' `# Panics`).
+fn check_half_extents(generator: &str, half: [f64; 3]) {
+    assert!(
+        half.iter().all(|h| h.is_finite() && *h > 0.0),
+        "{generator}: half extents must be finite and positive, got {half:?}"
+    );
 }
