@@ -26,5 +26,6 @@ fn _pqhull(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(grasps::qinf, m)?)?;
     m.add_function(wrap_pyfunction!(grasps::ows, m)?)?;
     m.add_function(wrap_pyfunction!(grasps::evaluate, m)?)?;
+    m.add_function(wrap_pyfunction!(ows::load_mesh, m)?)?;
     Ok(())
 }

@@ -3,7 +3,7 @@
 
 use crate::errors;
 use crate::hull::float_array;
-use numpy::{PyReadonlyArray2, PyUntypedArrayMethods};
+use numpy::{PyArray1, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArrayMethods};
 use pqhull::grasp::FrictionModel;
 use pqhull::grasp::ows::ObjectWrenchSpace as Space;
 use pqhull::mesh::Mesh;
@@ -11,6 +11,9 @@ use pyo3::prelude::*;
 
 /// An object wrench space (the seed paper's Eq. 6 on a mesh) or a task wrench space (given
 /// disturbances): the wrenches a grasp must resist, each `d` by `-r·d`.
+///
+/// Pickles exactly (the disturbances as binary numbers, the rest as JSON), so it can be sent to
+/// other processes, e.g. through Ray's object store.
 #[pyclass(module = "pqhull", name = "ObjectWrenchSpace", frozen)]
 pub struct ObjectWrenchSpace {
     pub(crate) inner: Space,
@@ -18,6 +21,26 @@ pub struct ObjectWrenchSpace {
 
 fn friction(friction: f64, cone_edges: usize) -> PyResult<FrictionModel> {
     FrictionModel::try_new(friction, cone_edges).map_err(|e| errors::grasp(e.to_string()))
+}
+
+/// The rows of a (k, 6) array of wrenches.
+fn disturbance_rows(wrenches: &Bound<'_, PyAny>) -> PyResult<Vec<[f64; 6]>> {
+    let wrenches = float_array(wrenches, "wrenches")?;
+    let wrenches: PyReadonlyArray2<'_, f64> = wrenches
+        .extract()
+        .map_err(|_| errors::input("wrenches must have shape (k, 6)"))?;
+    if wrenches.shape()[1] != 6 {
+        return Err(errors::input(format!(
+            "wrenches must have shape (k, 6), not {:?}",
+            wrenches.shape()
+        )));
+    }
+    Ok(wrenches
+        .as_array()
+        .rows()
+        .into_iter()
+        .map(|r| std::array::from_fn(|j| r[j]))
+        .collect())
 }
 
 fn from_mesh(py: Python<'_>, mesh: &Mesh, model: FrictionModel) -> PyResult<ObjectWrenchSpace> {
@@ -102,22 +125,7 @@ impl ObjectWrenchSpace {
     /// grasps' own torque units.
     #[staticmethod]
     fn from_disturbances(wrenches: &Bound<'_, PyAny>) -> PyResult<Self> {
-        let wrenches = float_array(wrenches, "wrenches")?;
-        let wrenches: PyReadonlyArray2<'_, f64> = wrenches
-            .extract()
-            .map_err(|_| errors::input("wrenches must have shape (k, 6)"))?;
-        if wrenches.shape()[1] != 6 {
-            return Err(errors::input(format!(
-                "wrenches must have shape (k, 6), not {:?}",
-                wrenches.shape()
-            )));
-        }
-        let rows = wrenches
-            .as_array()
-            .rows()
-            .into_iter()
-            .map(|r| std::array::from_fn(|j| r[j]))
-            .collect();
+        let rows = disturbance_rows(wrenches)?;
         let inner = Space::from_disturbances(rows).map_err(|e| errors::input(e.to_string()))?;
         Ok(ObjectWrenchSpace { inner })
     }
@@ -129,6 +137,38 @@ impl ObjectWrenchSpace {
         self.inner.torque_frame()
     }
 
+    /// The (k, 6) disturbance wrenches, in the grasps' torque units.
+    #[getter]
+    fn disturbances<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyArray2<f64>>> {
+        let flat = self.inner.disturbances().as_flattened().to_vec();
+        PyArray1::from_vec(py, flat).reshape([self.inner.len(), 6])
+    }
+
+    /// Pickling: `_from_state(disturbances, description)`, where the description is the
+    /// library's JSON of the space without its disturbances.
+    fn __reduce__<'py>(
+        slf: &Bound<'py, Self>,
+    ) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyArray2<f64>>, String))> {
+        let py = slf.py();
+        let mut description = slf.get().inner.to_json();
+        if let Some(object) = description.as_object_mut() {
+            object.remove("disturbances");
+        }
+        let rebuild = py.get_type::<Self>().getattr("_from_state")?;
+        Ok((rebuild, (slf.get().disturbances(py)?, description.to_string())))
+    }
+
+    /// The inverse of `__reduce__`.
+    #[staticmethod]
+    fn _from_state(disturbances: &Bound<'_, PyAny>, description: &str) -> PyResult<Self> {
+        let rows = disturbance_rows(disturbances)?;
+        let description: serde_json::Value = serde_json::from_str(description)
+            .map_err(|e| errors::input(format!("object wrench space description: {e}")))?;
+        let inner =
+            Space::from_json_parts(rows, &description).map_err(|e| errors::input(e.to_string()))?;
+        Ok(ObjectWrenchSpace { inner })
+    }
+
     fn __len__(&self) -> usize {
         self.inner.len()
     }
@@ -136,4 +176,28 @@ impl ObjectWrenchSpace {
     fn __repr__(&self) -> String {
         format!("ObjectWrenchSpace({} disturbances)", self.inner.len())
     }
+}
+
+/// load_mesh(path): an OBJ or STL mesh as arrays `(vertices, faces)`: (n, 3) float64 positions
+/// and (f, 3) int64 vertex indices of its triangles, as the library reads them (vertices no face
+/// uses dropped, the rest in order of first use). `ObjectWrenchSpace.from_arrays` on them equals
+/// `from_mesh(path)`.
+#[pyfunction]
+pub fn load_mesh<'py>(
+    py: Python<'py>,
+    path: std::path::PathBuf,
+) -> PyResult<(Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<i64>>)> {
+    let mesh = py
+        .detach(|| Mesh::load(&path))
+        .map_err(|e| errors::input(e.to_string()))?;
+    let vertices = PyArray1::from_vec(py, mesh.vertices().as_flattened().to_vec())
+        .reshape([mesh.vertices().len(), 3])?;
+    let faces: Vec<i64> = mesh
+        .triangles()
+        .as_flattened()
+        .iter()
+        .map(|&i| i64::from(i))
+        .collect();
+    let faces = PyArray1::from_vec(py, faces).reshape([mesh.triangles().len(), 3])?;
+    Ok((vertices, faces))
 }

@@ -26,6 +26,7 @@ from ._pqhull import (
     ObjectWrenchSpace,
     Quality,
     QualityError,
+    load_mesh,
 )
 
 __all__ = [
@@ -35,6 +36,7 @@ __all__ = [
     "qinf",
     "ows",
     "ObjectWrenchSpace",
+    "load_mesh",
     "evaluate",
     "Batch",
     "Distance",

@@ -490,6 +490,18 @@ impl ObjectWrenchSpace {
             }
             disturbances.push(w);
         }
+        Self::from_json_parts(disturbances, value)
+    }
+
+    /// As [`from_json`](Self::from_json), with the disturbances given apart (as binary numbers,
+    /// e.g. by a pickle or an array file) and the rest read from `value`, whose `"disturbances"`
+    /// key, if any, is ignored: what [`to_json`](Self::to_json) writes without its
+    /// `"disturbances"`.
+    ///
+    /// # Errors
+    /// As [`from_json`](Self::from_json).
+    pub fn from_json_parts(disturbances: Vec<[f64; 6]>, value: &Value) -> Result<Self, OwsError> {
+        let bad = |what: &str| OwsError::Json(what.to_string());
         let mut space = Self::from_disturbances(disturbances)?;
         let origin = value.get("origin").ok_or_else(|| bad("no \"origin\""))?;
         let number = |key: &str| {
