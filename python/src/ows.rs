@@ -155,7 +155,10 @@ impl ObjectWrenchSpace {
             object.remove("disturbances");
         }
         let rebuild = py.get_type::<Self>().getattr("_from_state")?;
-        Ok((rebuild, (slf.get().disturbances(py)?, description.to_string())))
+        Ok((
+            rebuild,
+            (slf.get().disturbances(py)?, description.to_string()),
+        ))
     }
 
     /// The inverse of `__reduce__`.

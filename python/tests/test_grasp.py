@@ -182,3 +182,32 @@ def test_task_wrench_space_from_arrays_and_disturbances():
                         space=single, method="qhull")
     with pytest.raises(pqhull.Error, match="shape"):
         pqhull.ObjectWrenchSpace.from_disturbances(np.zeros((3, 5)))
+
+
+def test_spaces_pickle_exactly_and_load_mesh_matches_from_mesh():
+    import pickle
+
+    vertices, faces = pqhull.load_mesh(MESH)
+    assert vertices.shape[1] == 3 and faces.shape[1] == 3 and faces.dtype == np.int64
+    from_file = pqhull.ObjectWrenchSpace.from_mesh(MESH, friction=0.5, cone_edges=6)
+    from_arrays = pqhull.ObjectWrenchSpace.from_arrays(vertices, faces, friction=0.5,
+                                                       cone_edges=6)
+    assert np.array_equal(from_file.disturbances, from_arrays.disturbances)
+    assert from_file.torque_frame == from_arrays.torque_frame
+    task = pqhull.ObjectWrenchSpace.from_disturbances(
+        np.random.default_rng(10).standard_normal((30, 6)))
+    positions, normals = random_grasps(60, seed=11)
+    positions *= 0.1
+    for space in (from_file, task):
+        copy = pickle.loads(pickle.dumps(space))
+        assert copy.torque_frame == space.torque_frame and len(copy) == len(space)
+        assert np.array_equal(copy.disturbances, space.disturbances)
+        a = pqhull.evaluate(positions, normals, friction=0.5, cone_edges=8, metric="ows",
+                            space=space)
+        b = pqhull.evaluate(positions, normals, friction=0.5, cone_edges=8, metric="ows",
+                            space=copy)
+        assert np.array_equal(a.quality, b.quality, equal_nan=True) and a.force_closure.any()
+    with pytest.raises(pqhull.InputError, match="description"):
+        pqhull.ObjectWrenchSpace._from_state(np.eye(6), "{not json")
+    with pytest.raises(pqhull.InputError, match="no such file|No such file|cannot"):
+        pqhull.load_mesh(ROOT / "no_such_mesh.obj")

@@ -6,106 +6,30 @@ same arrays: bit for bit, errors included.
 Needs root and iproute2's `ip` (to make the namespace) and Ray (`pip install ray`); without them
 the tests are skipped, which CI counts as a failure."""
 
-import importlib.util
 import os
 import pathlib
-import secrets
-import shutil
 import signal
-import subprocess
 import sys
-import tempfile
 import textwrap
 import time
 
 import numpy as np
 import pytest
 
+import loopback_cluster
 import pqhull
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 MESH = ROOT / "data" / "meshes" / "woody.obj"
-PORT = 6379  # the namespace is ours alone: no clash with anything outside it
-
-
-class Cluster:
-    def __init__(self, namespace, home):
-        self.namespace = namespace
-        self.address = f"127.0.0.1:{PORT}"
-        # Ray's token authentication, with a token of the test's own, and a home of its own so
-        # that nothing is read from or left in the user's ~/.ray.
-        self.env = dict(os.environ, RAY_USAGE_STATS_ENABLED="0", HOME=home, RAY_TMPDIR=home,
-                        RAY_AUTH_MODE="token", RAY_AUTH_TOKEN=secrets.token_hex(32))
-
-    def run(self, *command, check=True, timeout=300, **kwargs):
-        """`command` inside the namespace."""
-        return subprocess.run(["ip", "netns", "exec", self.namespace, *map(str, command)],
-                              env=self.env, capture_output=True, text=True, check=check,
-                              timeout=timeout, **kwargs)
-
-    def popen(self, *command):
-        return subprocess.Popen(["ip", "netns", "exec", self.namespace, *map(str, command)],
-                                env=self.env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                                text=True)
-
-    def pids(self):
-        out = subprocess.run(["ip", "netns", "pids", self.namespace], capture_output=True,
-                             text=True).stdout
-        return {int(p) for p in out.split()}
-
-    def evaluate(self, *args, check=True):
-        """`python -m pqhull.ray evaluate` against the cluster."""
-        return self.run(sys.executable, "-m", "pqhull.ray", "evaluate", "--address",
-                        self.address, "--node-ip-address", "127.0.0.1", *args, check=check)
-
-
-def _fail(what, result):
-    raise AssertionError(f"{what} failed ({result.returncode}):\n{result.stdout}\n{result.stderr}")
 
 
 @pytest.fixture(scope="module")
 def cluster():
-    if importlib.util.find_spec("ray") is None:
-        pytest.skip("Ray is not installed (pip install ray; CI installs it)")
-    if os.geteuid() != 0 or shutil.which("ip") is None:
-        pytest.skip("needs root and iproute2's `ip` to make a network namespace")
-    namespace = f"pqhull-ray-{os.getpid()}"
-    subprocess.run(["ip", "netns", "add", namespace], check=True)
-    temp = tempfile.mkdtemp(prefix="pqray", dir="/tmp")  # short: Ray's sockets live under it
-    c = Cluster(namespace, temp)
-    ray_cli = pathlib.Path(sys.executable).with_name("ray")
-    try:
-        c.run("ip", "link", "set", "lo", "up")
-        common = ["--node-ip-address=127.0.0.1", "--num-cpus=1", "--disable-usage-stats"]
-        head = c.run(ray_cli, "start", "--head", f"--port={PORT}", "--include-dashboard=false",
-                     f"--temp-dir={temp}", *common, check=False)
-        if head.returncode != 0:
-            _fail("ray start --head", head)
-        worker = c.run(ray_cli, "start", f"--address={c.address}", *common, check=False)
-        if worker.returncode != 0:
-            _fail("ray start --address", worker)
-        nodes = c.run(sys.executable, "-c", textwrap.dedent(f"""
-            import ray, time
-            ray.init(address="{c.address}", _node_ip_address="127.0.0.1", logging_level="ERROR")
-            for _ in range(100):
-                alive = [n for n in ray.nodes() if n["Alive"]]
-                if len(alive) == 2:
-                    break
-                time.sleep(0.1)
-            print(len(alive), int(ray.cluster_resources().get("CPU", 0)))
-            """))
-        assert nodes.stdout.split() == ["2", "2"], nodes.stdout + nodes.stderr
+    reason = loopback_cluster.unavailable()
+    if reason is not None:
+        pytest.skip(reason)
+    with loopback_cluster.loopback_cluster(nodes=2) as c:
         yield c
-    finally:
-        for sig in (signal.SIGTERM, signal.SIGKILL):
-            for pid in c.pids():
-                try:
-                    os.kill(pid, sig)
-                except ProcessLookupError:
-                    pass
-            time.sleep(1.0)
-        subprocess.run(["ip", "netns", "delete", namespace])
-        shutil.rmtree(temp, ignore_errors=True)
 
 
 def grasps(n, m, seed):

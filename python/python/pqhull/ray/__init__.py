@@ -23,7 +23,6 @@ from __future__ import annotations
 import dataclasses
 import os
 import pathlib
-import time
 from typing import Callable, Iterable, Optional, Sequence, Union
 
 import numpy as np
@@ -234,7 +233,8 @@ def evaluate_dataset(
     joins a running cluster. ``max_in_flight`` bounds the chunks submitted but not collected
     (default: twice the cluster's CPUs, plus two), so that a large dataset is not copied into
     the object store at once. ``max_retries``: how often Ray re-runs a chunk whose worker
-    died. ``progress(done, total)`` is called with grasp counts after every chunk.
+    died. ``progress(done, total)`` is called with grasp counts once connected, before the first
+    chunk is submitted, and after every chunk.
 
     Raises :class:`pqhull.InputError` naming the set for arrays that cannot be evaluated as a
     whole; a bad row is NaN plus an error entry in its set's result, as in
@@ -285,6 +285,8 @@ def _run(sets, options, chunk_size, max_in_flight, max_retries, progress):
                                friction, s.cone_edges, frame, spaces[i], options)
 
     pending, done = {}, 0
+    if progress is not None:
+        progress(0, total)
     while True:
         for chunk in chunks:
             pending[submit(*chunk)] = chunk

@@ -32,10 +32,14 @@ class _Progress:
 
     def __init__(self, quiet, interval=1.0):
         self.quiet, self.interval = quiet, interval
-        self.started = self.last = time.perf_counter()
+        self.started = self.last = self.finished = None
 
     def __call__(self, done, total):
         now = time.perf_counter()
+        if self.started is None:  # the first call: connected, nothing submitted yet
+            self.started = self.last = now
+        if done == total:
+            self.finished = now
         if self.quiet or (done < total and now - self.last < self.interval):
             return
         self.last = now
@@ -87,13 +91,13 @@ def main(argv=None):
         ("ows_friction", args.ows_friction), ("ows_edges", args.ows_edges)) if value is not None}
     try:
         sets = [pqray.load_grasp_set(path, **defaults) for path in _inputs(args.inputs)]
-        started = time.perf_counter()
+        progress = _Progress(args.quiet)
         results = pqray.evaluate_dataset(
             sets, metric=args.metric, method=args.method,
             with_zero_wrench=args.with_zero_wrench, chunk_size=args.chunk_size,
             address=args.address, node_ip_address=args.node_ip_address,
-            max_retries=args.max_retries, progress=_Progress(args.quiet))
-        elapsed = time.perf_counter() - started
+            max_retries=args.max_retries, progress=progress)
+        elapsed = (progress.finished or 0.0) - (progress.started or 0.0)
     except pqhull.Error as e:
         print(f"pqhull.ray: {e}", file=sys.stderr)
         return 2
@@ -101,8 +105,9 @@ def main(argv=None):
     if not args.quiet:
         grasps = sum(len(r.quality) for r in results)
         errors = sum(len(r.errors) for r in results)
+        rate = grasps / elapsed if elapsed > 0 else 0.0
         print(f"pqhull.ray: {grasps:,} grasps of {len(results)} objects in {elapsed:.2f} s "
-              f"({grasps / elapsed:,.0f} grasps/s), {errors} bad rows; wrote {args.output}",
+              f"({rate:,.0f} grasps/s; connecting and disconnecting not counted), {errors} bad rows; wrote {args.output}",
               file=sys.stderr)
     return 0
 
