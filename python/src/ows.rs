@@ -23,6 +23,9 @@ fn friction(friction: f64, cone_edges: usize) -> PyResult<FrictionModel> {
     FrictionModel::try_new(friction, cone_edges).map_err(|e| errors::grasp(e.to_string()))
 }
 
+/// A two-dimensional numpy array handed to Python.
+type Table<'py, T> = Bound<'py, PyArray2<T>>;
+
 /// The rows of a (k, 6) array of wrenches.
 fn disturbance_rows(wrenches: &Bound<'_, PyAny>) -> PyResult<Vec<[f64; 6]>> {
     let wrenches = float_array(wrenches, "wrenches")?;
@@ -148,7 +151,7 @@ impl ObjectWrenchSpace {
     /// library's JSON of the space without its disturbances.
     fn __reduce__<'py>(
         slf: &Bound<'py, Self>,
-    ) -> PyResult<(Bound<'py, PyAny>, (Bound<'py, PyArray2<f64>>, String))> {
+    ) -> PyResult<(Bound<'py, PyAny>, (Table<'py, f64>, String))> {
         let py = slf.py();
         let mut description = slf.get().inner.to_json();
         if let Some(object) = description.as_object_mut() {
@@ -189,7 +192,7 @@ impl ObjectWrenchSpace {
 pub fn load_mesh<'py>(
     py: Python<'py>,
     path: std::path::PathBuf,
-) -> PyResult<(Bound<'py, PyArray2<f64>>, Bound<'py, PyArray2<i64>>)> {
+) -> PyResult<(Table<'py, f64>, Table<'py, i64>)> {
     let mesh = py
         .detach(|| Mesh::load(&path))
         .map_err(|e| errors::input(e.to_string()))?;
