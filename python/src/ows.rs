@@ -26,6 +26,9 @@ fn friction(friction: f64, cone_edges: usize) -> PyResult<FrictionModel> {
 /// A two-dimensional numpy array handed to Python.
 type Table<'py, T> = Bound<'py, PyArray2<T>>;
 
+/// What `__reduce__` gives pickle: the function that rebuilds, and its arguments.
+type Reduced<'py> = (Bound<'py, PyAny>, (Table<'py, f64>, String));
+
 /// The rows of a (k, 6) array of wrenches.
 fn disturbance_rows(wrenches: &Bound<'_, PyAny>) -> PyResult<Vec<[f64; 6]>> {
     let wrenches = float_array(wrenches, "wrenches")?;
@@ -149,9 +152,7 @@ impl ObjectWrenchSpace {
 
     /// Pickling: `_from_state(disturbances, description)`, where the description is the
     /// library's JSON of the space without its disturbances.
-    fn __reduce__<'py>(
-        slf: &Bound<'py, Self>,
-    ) -> PyResult<(Bound<'py, PyAny>, (Table<'py, f64>, String))> {
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Reduced<'py>> {
         let py = slf.py();
         let mut description = slf.get().inner.to_json();
         if let Some(object) = description.as_object_mut() {
