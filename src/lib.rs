@@ -35,6 +35,8 @@ pub mod plan;
 pub mod points_file;
 pub mod predicates;
 pub mod rbox;
+#[cfg(feature = "mesh")]
+pub mod reproduce;
 pub mod strategy;
 pub mod viz;
 

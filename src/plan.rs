@@ -4,7 +4,9 @@
 //! [`Mesh::sample_surface`]), builds the grasp in the object's torque frame (centre of mass and
 //! characteristic length ρ) and evaluates one metric. The best force-closure grasp is kept. Time
 //! is split between quality evaluation and everything else (sampling, building the grasp), which
-//! is what the seed paper's Table 1 compares between the partial and the full-hull methods.
+//! is the quantity the seed paper's Table 1 compares between the partial and the full-hull methods.
+//! This sampler is the paper's random sampler of Fig. 12, not the planner behind its Table 1
+//! (`pqh reproduce fig12` runs the comparison; docs/paper.md).
 //!
 //! ```
 //! use pqhull::grasp::FrictionModel;
@@ -294,6 +296,68 @@ fn torque_frame(mesh: &Mesh, space: Option<&ObjectWrenchSpace>) -> ([f64; 3], f6
         })
 }
 
+/// The grasps a plan samples, in order: `contacts` contacts each, uniformly by area on the
+/// surface with inward face normals, in the object's torque frame (`space`'s when given, else the
+/// mesh's centre of mass and characteristic length). Endless; the same `seed` gives the same
+/// grasps for every metric and method ([`samples`]).
+pub struct Samples<'a> {
+    sampler: SurfaceSampler<'a>,
+    rng: Rng,
+    contacts: usize,
+    friction: FrictionModel,
+    frame: ([f64; 3], f64),
+}
+
+impl Iterator for Samples<'_> {
+    type Item = Result<Grasp, GraspError>;
+
+    fn next(&mut self) -> Option<Self::Item> {
+        let contacts: Result<Vec<Contact>, GraspError> = (0..self.contacts)
+            .map(|_| {
+                let s = self.sampler.sample(&mut self.rng);
+                Contact::try_new(s.position, s.inward_normal, None)
+            })
+            .collect();
+        Some(contacts.and_then(|contacts| {
+            Grasp::builder(contacts, self.friction)
+                .torque_reference(self.frame.0)
+                .torque_scale(self.frame.1)
+                .build()
+        }))
+    }
+}
+
+/// The grasps [`plan`] samples with this seed (see [`Samples`]).
+///
+/// ```
+/// use pqhull::grasp::FrictionModel;
+/// use pqhull::mesh::Mesh;
+/// use pqhull::plan::samples;
+///
+/// let object = Mesh::uv_sphere(0.3, 8, 16)?;
+/// let friction = FrictionModel::try_new(0.5, 8)?;
+/// let a: Vec<_> = samples(&object, None, 4, friction, 7).take(3).collect::<Result<_, _>>()?;
+/// let b: Vec<_> = samples(&object, None, 4, friction, 7).take(3).collect::<Result<_, _>>()?;
+/// assert_eq!(a, b);
+/// assert_eq!(a[0].contacts().len(), 4);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn samples<'a>(
+    mesh: &'a Mesh,
+    space: Option<&ObjectWrenchSpace>,
+    contacts: usize,
+    friction: FrictionModel,
+    seed: u64,
+) -> Samples<'a> {
+    Samples {
+        sampler: SurfaceSampler::new(mesh),
+        rng: Rng::new(seed),
+        contacts,
+        friction,
+        frame: torque_frame(mesh, space),
+    }
+}
+
 /// Samples `config.samples` grasps on `mesh` and keeps the best by `config.metric`, computed by
 /// `method`. `space` is the object's wrench space, required for [`Metric::Ows`] (and, when
 /// given, it fixes the torque frame).
@@ -352,9 +416,7 @@ pub fn plan_with_progress(
         ),
         metric => Scorer::Gws(Box::new(Evaluator::new(metric, method))),
     };
-    let (reference, scale) = torque_frame(mesh, space);
-    let sampler = SurfaceSampler::new(mesh);
-    let mut rng = Rng::new(config.seed);
+    let mut grasps = samples(mesh, space, config.contacts, config.friction, config.seed);
     let mut report = PlanReport {
         best: None,
         samples: config.samples,
@@ -363,17 +425,8 @@ pub fn plan_with_progress(
         other_time: Duration::ZERO,
         facets_created: 0,
     };
-    let mut contacts = Vec::with_capacity(config.contacts);
     for sample in 0..config.samples {
-        contacts.clear();
-        for _ in 0..config.contacts {
-            let s = sampler.sample(&mut rng);
-            contacts.push(Contact::try_new(s.position, s.inward_normal, None)?);
-        }
-        let grasp = Grasp::builder(contacts.clone(), config.friction)
-            .torque_reference(reference)
-            .torque_scale(scale)
-            .build()?;
+        let grasp = grasps.next().expect("an endless sequence")?;
         let timer = Instant::now();
         let (force_closure, value, facets) = scorer.score(&grasp)?;
         report.quality_time += timer.elapsed();

@@ -26,7 +26,7 @@ use std::collections::BinaryHeap;
 ///   dot product; within about 1e−10 of the input's size of the boundary, where that rounding
 ///   would dominate, it is the exact determinant divided by the exact cofactors' norm (and the
 ///   facets about as near are settled too, so a query exactly on the boundary gets exactly 0).
-/// * **query outside**: the distance to a facet's plane (the seed paper's Definition 8) is only a
+/// * **query outside**: the distance to a facet's plane (the facet-offset rule) is only a
 ///   lower bound on the distance to the hull — equal only when the foot of the perpendicular lands
 ///   inside the facet. Instead the strategy takes the point `x` of `P` nearest `q` (Wolfe's
 ///   algorithm over the vertices of the facets `q` sees, decided exactly, with an accurate

@@ -19,6 +19,7 @@ mod methods;
 mod plan_cmd;
 mod plan_view;
 mod progress;
+mod reproduce_cmd;
 mod trace_cmd;
 
 use clap::{Args, CommandFactory, FromArgMatches, Parser, Subcommand};
@@ -85,6 +86,9 @@ enum Command {
     /// Full vs partial hull on built-in seeded point sets: agreement and speed-up
     #[command(long_about = compare_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
     Compare(compare_cmd::CompareArgs),
+    /// The seed paper's figures re-run: per-grasp CSV, SVG plots, its numbers beside ours
+    #[command(long_about = reproduce_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
+    Reproduce(reproduce_cmd::ReproduceArgs),
 }
 
 #[derive(Debug, Args)]
@@ -193,6 +197,7 @@ fn main() -> ExitCode {
         Command::Hull(args) => hull_cmd::run(&args),
         Command::Demo(args) => demo_cmd::run(&args),
         Command::Compare(args) => compare_cmd::run(&args),
+        Command::Reproduce(args) => reproduce_cmd::run(&args),
         Command::Grasp(args) => grasp_cmd::run(&args),
         Command::Bench(BenchArgs {
             which: Which::Gws(args),

@@ -19,7 +19,8 @@ contacts uniformly by area on the surface (inward face normals), in the object's
 (centre of mass, characteristic length), and the best force-closure grasp by --metric is kept.
 The plan runs twice on the same samples, with partial hulls and with full hulls (for ows: the
 brute-force baseline), and reports the time spent in quality evaluation against the rest (the
-seed paper's Table 1) and whether both found the same best grasp. When neither run found a
+quantity of the seed paper's Table 1; this sampler is its Fig. 12's, not Table 1's planner) and
+whether both found the same best grasp. When neither run found a
 force-closure grasp among the samples both evaluated, there is nothing to compare: no ratio and
 no verdict are printed (JSON: \"comparison\": \"nothing_to_compare\", \"same_best\" and
 \"quality_speedup\" null, and a \"comparison_note\" saying why).

@@ -1,0 +1,123 @@
+//! `pqh reproduce`: the seed paper's figures, re-run, plotted and set beside its numbers.
+
+use crate::error::CliError;
+use clap::{Args, ValueEnum};
+use pqhull::reproduce::{self, FigureId, Size, plot};
+use std::io::Write;
+use std::path::PathBuf;
+
+pub const LONG_ABOUT: &str = "\
+Re-runs the experiments of Liu & Carpin's figures on this machine: Fig. 6 (PQHGWS against
+QuickHull on random bar grasps: points processed, hyperplanes, time), Fig. 7 (those ratios as the
+cone edges grow), Fig. 8 (PQHOWS against brute force and the ellipsoid method), Fig. 9 (the
+ellipsoid's error), Fig. 10 (the Q1-best against the OWS-best grasp) and Fig. 12 with Table 1's
+quantity (random-sampling planning with each metric, partial against full hull).
+
+For each figure it writes, into --output-dir: <fig>.csv (one row per grasp or sample: every number
+the plot shows; an empty cell was not measured), <fig>.svg (the plot, its caption giving the
+paper's figure beside this run's), and summary.md (every figure's side-by-side table and how the
+experiment differs from the paper's). Methods: 'pqhgws' and 'pqhows' are the published
+algorithms alone; 'pqhull' is this crate's default (a GJK pre-check, snapped wrenches certified on
+the caller's); 'quickhull' and 'brute' are full hulls; 'qhull' runs with the qhull feature.
+
+--size smoke takes seconds (CI), default a few minutes on two cores, full the paper's grasp counts
+for every baseline (tens of minutes).";
+
+/// How large the experiments are.
+#[derive(Clone, Copy, Debug, ValueEnum)]
+pub enum SizeArg {
+    /// A few grasps per method (seconds)
+    Smoke,
+    /// The paper's counts for the fast methods, subsets for the full-hull baselines (minutes)
+    Default,
+    /// The paper's counts for every method (tens of minutes)
+    Full,
+}
+
+#[derive(Debug, Args)]
+pub struct ReproduceArgs {
+    /// Figures to run (fig6 fig7 fig8 fig9 fig10 fig12, or 6 … 12; table1 is fig12); all when none
+    #[arg(value_name = "FIGURE")]
+    figures: Vec<String>,
+    /// Where the CSV files, plots and summary.md go (created if missing)
+    #[arg(long, short = 'o', default_value = "pqh-reproduce")]
+    output_dir: PathBuf,
+    /// How large the experiments are
+    #[arg(long, value_enum, default_value_t = SizeArg::Default)]
+    size: SizeArg,
+    /// The paper's sizes for every method (same as --size full)
+    #[arg(long, conflicts_with = "size")]
+    full: bool,
+    /// Seed of the grasps
+    #[arg(long, default_value_t = 1)]
+    seed: u64,
+}
+
+pub fn run(args: &ReproduceArgs) -> Result<(), CliError> {
+    let mut figures = Vec::new();
+    for name in &args.figures {
+        let id = FigureId::parse(name).ok_or_else(|| {
+            CliError::Usage(format!(
+                "unknown figure '{name}'; the figures are fig6, fig7, fig8, fig9, fig10, fig12 (table1)"
+            ))
+        })?;
+        if !figures.contains(&id) {
+            figures.push(id);
+        }
+    }
+    if figures.is_empty() {
+        figures = FigureId::ALL.to_vec();
+    }
+    let size = match (args.full, args.size) {
+        (true, _) | (_, SizeArg::Full) => Size::Full,
+        (_, SizeArg::Default) => Size::Default,
+        (_, SizeArg::Smoke) => Size::Smoke,
+    };
+    let dir = &args.output_dir;
+    std::fs::create_dir_all(dir)
+        .map_err(|e| CliError::Usage(format!("{}: cannot create: {e}", dir.display())))?;
+    let mut summary = format!(
+        "# pqh reproduce --size {}\n\nSeed {}; qhull feature {}.\n\n",
+        size.name(),
+        args.seed,
+        if cfg!(feature = "qhull") { "on" } else { "off" }
+    );
+    let stderr = std::io::stderr();
+    for id in figures {
+        let mut bars = crate::progress::Phases::default();
+        let figure = reproduce::run(id, size, args.seed, &mut |label, done, total| {
+            bars.update(&format!("{id}: {label}"), done, total)
+        })
+        .map_err(|e| CliError::Geometry(format!("{id}: {e}")))?;
+        drop(bars);
+        let written = figure.write_tables(dir).map_err(output)?;
+        let svg = plot::figure_svg(&figure).map_err(output)?;
+        let path = dir.join(format!("{id}.svg"));
+        std::fs::write(&path, svg)
+            .map_err(|e| CliError::Usage(format!("{}: cannot write: {e}", path.display())))?;
+        summary.push_str(&figure.summary_markdown());
+        summary.push('\n');
+        let mut err = stderr.lock();
+        let _ = writeln!(
+            err,
+            "pqh: note: {id}: wrote {} and {}",
+            written
+                .iter()
+                .map(|p| p.display().to_string())
+                .collect::<Vec<_>>()
+                .join(", "),
+            path.display()
+        );
+    }
+    let path = dir.join("summary.md");
+    std::fs::write(&path, &summary)
+        .map_err(|e| CliError::Usage(format!("{}: cannot write: {e}", path.display())))?;
+    let stdout = std::io::stdout();
+    let mut out = stdout.lock();
+    out.write_all(summary.as_bytes())?;
+    Ok(())
+}
+
+fn output(e: reproduce::ReproduceError) -> CliError {
+    CliError::Usage(e.to_string())
+}
