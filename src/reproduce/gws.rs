@@ -18,9 +18,10 @@ use super::{
 };
 use crate::bench::stats::{mean, micros};
 use crate::bench::workloads::{BAR_FRICTION, BAR_HALF_EXTENTS, bar_grasps};
-use crate::grasp::quality::{Evaluator, Method, Metric};
+use crate::geometry::largest_norm;
+use crate::grasp::quality::{Evaluator, Method, Metric, is_force_closure};
 use crate::grasp::{FrictionModel, Grasp};
-use crate::{ClosestToOrigin, Hull};
+use crate::{ClosestToOrigin, Hull, HullError};
 use std::time::Instant;
 
 /// Contacts per grasp.
@@ -45,6 +46,8 @@ fn counts(size: Size) -> (usize, usize) {
 /// where the grasp is not force closure by that method).
 #[derive(Clone, Debug, Default)]
 struct Run {
+    /// Grasps whose wrenches the method could not hull (fewer than six dimensions).
+    flat: usize,
     points: Vec<f64>,
     facets: Vec<f64>,
     time_us: Vec<f64>,
@@ -64,54 +67,79 @@ impl Run {
     }
 }
 
-/// The paper's QuickHull on `w`: (points, facets, µs, Q1 or NaN when not force closure).
-fn quickhull(w: &[[f64; 6]]) -> Result<(f64, f64, f64, f64), String> {
+/// One grasp's measurement: (points, facets, µs, Q1 or NaN when not force closure); `None` when
+/// the method cannot build a hull of the wrenches (they span fewer than six dimensions: the
+/// published algorithms stop there; pqhull's default evaluates such grasps, Q1 ≤ 0).
+type Measurement = Option<(f64, f64, f64, f64)>;
+
+/// A hull error: `None` for a flat wrench set, else the message.
+fn flat(e: HullError) -> Result<Measurement, String> {
+    match e {
+        HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. } => Ok(None),
+        e => Err(e.to_string()),
+    }
+}
+
+/// `q1` when it is force closure under the library's band ([`is_force_closure`] for the
+/// wrenches' scale), else NaN: the published algorithms have no band, but a grasp degenerate in
+/// exact arithmetic computes to Q1 ≈ ±1e−17 and must get the same verdict from every method.
+fn banded(q1: f64, w: &[[f64; 6]]) -> f64 {
+    if is_force_closure(q1, largest_norm(w)) {
+        q1
+    } else {
+        f64::NAN
+    }
+}
+
+/// The paper's QuickHull on `w`.
+fn quickhull(w: &[[f64; 6]]) -> Result<Measurement, String> {
     let started = Instant::now();
-    let hull = Hull::try_new(w).map_err(|e| e.to_string())?;
+    let hull = match Hull::try_new(w) {
+        Ok(hull) => hull,
+        Err(e) => return flat(e),
+    };
     let nearest = hull
         .facets()
         .map(|(id, _)| -hull.signed_distance(id, &[0.0; 6]))
         .fold(f64::INFINITY, f64::min);
     let elapsed = micros(started.elapsed());
     let stats = hull.stats();
-    let value = if nearest > 0.0 { nearest } else { f64::NAN };
-    Ok((
+    let value = banded(nearest, w);
+    Ok(Some((
         stats.points_processed as f64,
         stats.facets_created as f64,
         elapsed,
         value,
-    ))
+    )))
 }
 
-/// PQHGWS as published on `w`: (points, facets, µs, Q1 or NaN when not force closure).
-fn pqhgws(w: &[[f64; 6]]) -> Result<(f64, f64, f64, f64), String> {
+/// PQHGWS as published on `w`.
+fn pqhgws(w: &[[f64; 6]]) -> Result<Measurement, String> {
     let started = Instant::now();
-    let (_, result) =
-        Hull::try_with_strategy(w, ClosestToOrigin::new()).map_err(|e| e.to_string())?;
-    let elapsed = micros(started.elapsed());
-    let value = if result.signed_distance > 0.0 {
-        result.signed_distance
-    } else {
-        f64::NAN
+    let result = match Hull::try_with_strategy(w, ClosestToOrigin::new()) {
+        Ok((_, result)) => result,
+        Err(e) => return flat(e),
     };
-    Ok((
+    let elapsed = micros(started.elapsed());
+    let value = banded(result.signed_distance, w);
+    Ok(Some((
         result.stats.points_processed as f64,
         result.stats.facets_created as f64,
         elapsed,
         value,
-    ))
+    )))
 }
 
-/// The evaluator's Q1 by `method`: (points, facets, µs, Q1 or NaN when not force closure).
-fn evaluated(evaluator: &mut Evaluator, grasp: &Grasp) -> Result<(f64, f64, f64, f64), String> {
+/// The evaluator's Q1 by its method.
+fn evaluated(evaluator: &mut Evaluator, grasp: &Grasp) -> Result<Measurement, String> {
     let q = evaluator.evaluate(grasp).map_err(|e| e.to_string())?;
     let value = if q.force_closure { q.value } else { f64::NAN };
-    Ok((
+    Ok(Some((
         q.stats.points_processed as f64,
         q.stats.facets_created as f64,
         micros(q.stats.elapsed),
         value,
-    ))
+    )))
 }
 
 /// Every method on `set`; the baselines on the first `baseline` grasps. `progress` hears of each
@@ -150,7 +178,15 @@ fn measure(
                 _ => evaluated(&mut qhull, grasp),
             }
             .map_err(|e| ReproduceError::Experiment(format!("{name}, k = {k}, grasp {i}: {e}")))?;
-            run.record(measured.0, measured.1, measured.2, measured.3);
+            match measured {
+                Some((points, facets, time_us, value)) => {
+                    run.record(points, facets, time_us, value)
+                }
+                None => {
+                    run.skipped();
+                    run.flat += 1;
+                }
+            }
             progress(&label, i + 1, n);
         }
     }
@@ -226,7 +262,7 @@ fn differences(baseline: usize, grasps: usize) -> Vec<String> {
             2.0 * BAR_HALF_EXTENTS[2]
         ),
         "QuickHull is this crate's own engine run to completion (same predicates, same machine), not the paper's implementation; Qhull is the independent reference.".to_string(),
-        "Every method here decides orientations exactly (the paper's used floating point).".to_string(),
+        "Every method here decides orientations exactly (the paper's used floating point), and every verdict uses this crate's force-closure band (Q1 ≥ 1e−12 × the wrench scale): a grasp degenerate in exact arithmetic computes to Q1 ≈ ±1e−17, and is on the boundary, not force closure.".to_string(),
         "`pqhull` is the default method: a GJK pre-check (most grasps that are not force closure end there, without a hull) and a partial hull on snapped wrenches certified on the caller's; `pqhgws` is the published algorithm alone.".to_string(),
         "Ratios are ratios of means over the grasps both methods ran; times are wall clock on this machine (see docs/paper.md for which).".to_string(),
     ]
@@ -285,6 +321,14 @@ pub fn fig6(size: Size, seed: u64, progress: Progress<'_>) -> Result<Figure, Rep
             "time, Qhull / pqhull default",
             "— (the paper did not run Qhull)",
             times(ratio_of_means(&qhull.time_us, &ours.time_us)),
+        ),
+        Comparison::new(
+            "grasps whose wrenches span fewer than 6 dimensions",
+            "— (the published algorithms need a full-dimensional set)",
+            format!(
+                "{} of {grasps}: PQHGWS as published and QuickHull cannot hull them (left out of their ratios); pqhull's default gives their Q1 ≤ 0",
+                plain.flat
+            ),
         ),
         Comparison::new(
             "Q1 agreement",

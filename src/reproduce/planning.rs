@@ -8,7 +8,7 @@
 use super::{
     Comparison, Figure, FigureId, PAPER_NOT_QUOTED, Progress, ReproduceError, Size, Table,
 };
-use crate::bench::stats::micros;
+use crate::bench::stats::{median, micros};
 use crate::grasp::FrictionModel;
 use crate::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
 use crate::grasp::quality::{Evaluator, Method, Metric};
@@ -96,61 +96,83 @@ fn differences(samples: usize) -> Vec<String> {
 /// # Errors
 /// [`ReproduceError::Experiment`] when an evaluation fails.
 pub fn fig10(size: Size, seed: u64, progress: Progress<'_>) -> Result<Figure, ReproduceError> {
-    let n = match size {
-        Size::Smoke => 20,
-        Size::Default => 300,
-        Size::Full => 1000,
+    let (sets, n) = match size {
+        Size::Smoke => (2, 20),
+        Size::Default => (10, 300),
+        Size::Full => (20, 1000),
     };
-    let q1 = score(n, seed, Metric::Q1, Method::Partial, &mut *progress)?;
-    let ows = score(n, seed, Metric::Ows, Method::Partial, progress)?;
-    let (b1, bo) = (best(&q1.value), best(&ows.value));
-    let same = match (b1, bo) {
-        (Some(a), Some(b)) if a == b => "the same grasp".to_string(),
-        (Some(a), Some(b)) => format!("different grasps (samples {a} and {b})"),
-        _ => "no force-closure sample".to_string(),
+    let rank = |values: &[f64], i: usize| {
+        1 + values
+            .iter()
+            .filter(|v| !v.is_nan() && **v > values[i])
+            .count()
     };
-    let rank = |values: &[f64], of: Option<usize>| -> String {
-        of.map_or("—".to_string(), |i| {
-            let better = values
-                .iter()
-                .filter(|v| !v.is_nan() && **v > values[i])
-                .count();
-            format!("{}", better + 1)
-        })
-    };
+    let mut table = Table::new("fig10");
+    let mut columns: [Vec<f64>; 6] = Default::default();
+    let (mut differ, mut compared, mut closure) = (0, 0, 0);
+    let (mut ows_ranks, mut q1_ranks) = (Vec::new(), Vec::new());
+    for set in 0..sets {
+        let set_seed = seed.wrapping_add(set as u64);
+        let q1 = score(n, set_seed, Metric::Q1, Method::Partial, &mut *progress)?;
+        let ows = score(n, set_seed, Metric::Ows, Method::Partial, &mut *progress)?;
+        let (b1, bo) = (best(&q1.value), best(&ows.value));
+        if let (Some(a), Some(b)) = (b1, bo) {
+            compared += 1;
+            differ += usize::from(a != b);
+            ows_ranks.push(rank(&ows.value, a) as f64);
+            q1_ranks.push(rank(&q1.value, b) as f64);
+        }
+        closure += q1.value.iter().filter(|v| !v.is_nan()).count();
+        let mark = |b: Option<usize>| (0..n).map(move |i| f64::from(u8::from(b == Some(i))));
+        columns[0].extend(std::iter::repeat_n(set_seed as f64, n));
+        columns[1].extend((0..n).map(|i| i as f64));
+        columns[2].extend(q1.value);
+        columns[3].extend(ows.value);
+        columns[4].extend(mark(b1));
+        columns[5].extend(mark(bo));
+    }
+    for (name, values) in ["seed", "sample", "q1", "ows", "q1_best", "ows_best"]
+        .iter()
+        .zip(columns)
+    {
+        table = table.numbers(name, values);
+    }
     let comparisons = vec![
-        Comparison::new("Q1-best and OWS-best", "different grasps", same),
         Comparison::new(
-            "Q_OWS rank of the Q1-best grasp",
-            PAPER_NOT_QUOTED,
-            rank(&ows.value, b1),
+            "the Q1-best and the OWS-best grasp of a sample set differ",
+            "yes (the figure's example)",
+            format!("in {differ} of {compared} sample sets"),
         ),
         Comparison::new(
-            "Q1 rank of the OWS-best grasp",
+            "Q_OWS rank of the Q1-best grasp, median over the sets",
             PAPER_NOT_QUOTED,
-            rank(&q1.value, bo),
+            format!("{}", median(&mut ows_ranks)),
+        ),
+        Comparison::new(
+            "Q1 rank of the OWS-best grasp, median over the sets",
+            PAPER_NOT_QUOTED,
+            format!("{}", median(&mut q1_ranks)),
         ),
         Comparison::new(
             "force-closure samples",
             PAPER_NOT_QUOTED,
-            format!("{} of {n}", q1.value.iter().filter(|v| !v.is_nan()).count()),
+            format!("{closure} of {}", sets * n),
         ),
     ];
-    let mark = |b: Option<usize>| -> Vec<f64> {
-        (0..n).map(|i| f64::from(u8::from(b == Some(i)))).collect()
-    };
-    let table = Table::new("fig10")
-        .numbers("sample", (0..n).map(|i| i as f64).collect())
-        .numbers("q1", q1.value)
-        .numbers("ows", ows.value)
-        .numbers("q1_best", mark(b1))
-        .numbers("ows_best", mark(bo));
+    let mut differences = differences(n);
+    differences.insert(
+        1,
+        format!(
+            "{sets} sample sets (seeds {seed} to {}); each set's best grasps are marked.",
+            seed.wrapping_add(sets as u64 - 1)
+        ),
+    );
     Ok(Figure {
         id: FigureId::Fig10,
-        title: format!("Q1 against Q_OWS of {n} sampled grasps"),
+        title: format!("Q1 against Q_OWS: {sets} sets of {n} sampled grasps"),
         tables: vec![table],
         comparisons,
-        differences: differences(n),
+        differences,
     })
 }
 
