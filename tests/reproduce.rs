@@ -311,3 +311,28 @@ fn tempfile_dir() -> std::path::PathBuf {
     std::fs::create_dir_all(&dir).unwrap();
     dir
 }
+
+#[test]
+fn docs_paper_shows_every_figure_and_the_tables_its_command_wrote() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let doc = std::fs::read_to_string(root.join("docs/paper.md")).unwrap();
+    let summary = std::fs::read_to_string(root.join("docs/paper/summary.md")).unwrap();
+    for line in summary
+        .lines()
+        .filter(|l| l.starts_with("| ") && !l.starts_with("| quantity"))
+    {
+        assert!(
+            doc.contains(line),
+            "docs/paper.md lacks the row the command wrote: {line}"
+        );
+    }
+    for figure in ["fig6", "fig7", "fig8", "fig9", "fig10", "fig12"] {
+        assert!(
+            doc.contains(&format!("(paper/{figure}.svg)")),
+            "docs/paper.md shows no {figure}"
+        );
+        let svg = std::fs::read_to_string(root.join(format!("docs/paper/{figure}.svg"))).unwrap();
+        assert_well_formed(&svg, figure);
+        assert!(root.join(format!("docs/paper/{figure}.csv")).exists());
+    }
+}
