@@ -9,10 +9,8 @@ use plotters::coord::Shift;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::prelude::*;
 
-/// Width and height of a plot, pixels.
-pub const SIZE: (u32, u32) = (1400, 620);
-/// Height of the caption band.
-const CAPTION: u32 = 170;
+/// Width of a plot and height of its panels, pixels (the caption band comes on top).
+pub const SIZE: (u32, u32) = (1400, 450);
 
 /// The colours of the series, in order.
 const COLOURS: [RGBColor; 6] = [
@@ -196,9 +194,11 @@ where
 pub fn svg(title: &str, lines: &[String], panels: &[Panel]) -> Result<String, ReproduceError> {
     let mut out = String::new();
     {
-        let root = SVGBackend::with_string(&mut out, SIZE).into_drawing_area();
+        let caption = 50 + 17 * lines.len() as u32;
+        let size = (SIZE.0, SIZE.1 + caption);
+        let root = SVGBackend::with_string(&mut out, size).into_drawing_area();
         root.fill(&WHITE).map_err(failed)?;
-        let (top, bottom) = root.split_vertically(CAPTION);
+        let (top, bottom) = root.split_vertically(caption);
         top.draw(&Text::new(title, (20, 12), ("sans-serif", 22).into_font()))
             .map_err(failed)?;
         for (i, line) in lines.iter().enumerate() {
@@ -242,7 +242,6 @@ fn caption(figure: &Figure) -> Vec<String> {
     figure
         .comparisons
         .iter()
-        .take(8)
         .map(|c| format!("{} — paper: {} · pqhull: {}", c.quantity, c.paper, c.pqhull))
         .collect()
 }
