@@ -21,4 +21,5 @@ needs_qhull! {
     raw_reference: "tests/raw_reference.rs (6 metric checks against Qhull on the raw wrenches)",
     cli_raw_reference: "tests/cli_raw_reference.rs (pqh grasp against Qhull)",
     grasp_quality_qhull_comparisons: "the Method::Qhull comparisons inside tests/grasp_quality.rs",
+    metrics_resistance_and_volume_equal_qhull: "tests/metrics.rs (wrench resistance and GWS volume against Qhull)",
 }

@@ -63,6 +63,7 @@ mod error;
 mod flatness;
 mod friction;
 pub mod json;
+pub mod metrics;
 pub mod ows;
 pub mod quality;
 mod random;
