@@ -64,16 +64,17 @@ fn the_cone_bracket_contains_a_256_edge_estimate_and_shrinks_like_one_minus_cos_
 }
 
 #[test]
-#[ignore = "extended: 300 grasps at k = 256 (about a minute); CI runs it"]
+#[ignore = "extended: 200 grasps at k = 256 (about 2 min); CI runs it"]
 fn the_cone_bracket_on_hundreds_of_grasps() {
-    bracket_contains_the_256_edge_estimate_and_shrinks(300);
+    bracket_contains_the_256_edge_estimate_and_shrinks(200);
 }
 
 #[test]
 fn without_friction_the_bracket_is_closed() {
     let g = &bar_grasps(5, 1, 4, FrictionModel::try_new(0.0, 8).unwrap())[0];
     let b = cone_bracket(g, Method::Partial).unwrap();
-    assert_eq!(b.low(), b.high());
+    assert_eq!(b.inscribed.value, b.circumscribed.value);
+    assert!(b.low() < b.inscribed.value && b.inscribed.value < b.high());
 }
 
 /// Brute force: the largest t with −t·w in the hull of `points` (which holds the origin), from
@@ -131,7 +132,7 @@ fn resistance_and_volume_equal_qhull() {
     let mut compared = 0;
     for (i, (g, w)) in resist_cases().into_iter().enumerate() {
         let hull = qhull_full_hull(&g.wrenches()).unwrap();
-        let volume = gws_volume(&g).unwrap();
+        let (volume, _) = gws_volume(&g).unwrap();
         assert!(
             (volume - hull.volume).abs() <= 1e-9 * hull.volume,
             "grasp {i}: {volume} vs {}",
@@ -260,7 +261,7 @@ fn degenerate_grasps_give_clear_values() {
     assert!(g.isotropy() <= 1e-14);
     // Flat in exact arithmetic; the computed wrenches' rounding leaves a sliver of volume of its
     // order (the wrench scale is about 1.1, its sixth power about 2).
-    let volume = gws_volume(&pinch).unwrap();
+    let (volume, _) = gws_volume(&pinch).unwrap();
     assert!((0.0..1e-15).contains(&volume), "{volume}");
     // One contact: three singular values, the other three exactly 0.
     let one = Grasp::builder(pinch.contacts()[..1].to_vec(), friction)

@@ -38,9 +38,10 @@ use super::ows::{ObjectWrenchSpace, OwsError, OwsEvaluator, OwsQuality};
 use super::quality::{Evaluator, Method, Metric, Quality, QualityError};
 use super::{FrictionModel, Grasp, GraspError};
 use crate::geometry::vector::cross;
-use crate::hull::{Hull, HullError};
+use crate::hull::{Hull, HullError, Stats};
 use std::f64::consts::PI;
 use std::fmt;
+use std::time::Instant;
 
 /// Why a metric could not be computed.
 #[derive(Clone, Debug, PartialEq)]
@@ -99,15 +100,22 @@ pub struct ConeBracket {
     pub circumscribed: Quality,
 }
 
+/// The accuracy the evaluator promises for `q` ([`Quality::value`]: 1e−12 relative, or
+/// 1e−14 of the wrench scale near zero).
+fn accuracy(q: &Quality) -> f64 {
+    (1e-12 * q.value.abs()).max(1e-14 * q.scale)
+}
+
 impl ConeBracket {
-    /// The lower bound on Q1 of the circular cones.
+    /// The lower bound on Q1 of the circular cones: the inscribed pyramids' Q1 less its
+    /// evaluation's accuracy, so that the bracket holds however near zero the values are.
     pub fn low(&self) -> f64 {
-        self.inscribed.value
+        self.inscribed.value - accuracy(&self.inscribed)
     }
 
-    /// The upper bound.
+    /// The upper bound: the circumscribed pyramids' Q1 plus its evaluation's accuracy.
     pub fn high(&self) -> f64 {
-        self.circumscribed.value
+        self.circumscribed.value + accuracy(&self.circumscribed)
     }
 }
 
@@ -168,12 +176,26 @@ pub fn resist(grasp: &Grasp, wrench: [f64; 6], method: Method) -> Result<OwsQual
 /// pinch in `tests/metrics.rs`), which is the exact answer for those wrenches, up to the
 /// floating-point volume sum.
 ///
+/// Returns the volume and the full hull's work.
+///
 /// # Errors
 /// [`MetricError::Hull`] for non-finite wrenches (a torque scale far too small).
-pub fn gws_volume(grasp: &Grasp) -> Result<f64, MetricError> {
+pub fn gws_volume(grasp: &Grasp) -> Result<(f64, Stats), MetricError> {
+    let started = Instant::now();
     match Hull::try_new(&grasp.wrenches()) {
-        Ok(hull) => Ok(hull.volume()),
-        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => Ok(0.0),
+        Ok(hull) => {
+            let volume = hull.volume();
+            let mut stats = hull.stats();
+            stats.elapsed = started.elapsed();
+            Ok((volume, stats))
+        }
+        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
+            let stats = Stats {
+                elapsed: started.elapsed(),
+                ..Stats::default()
+            };
+            Ok((0.0, stats))
+        }
         Err(e) => Err(MetricError::Hull(e)),
     }
 }

@@ -2,13 +2,17 @@
 //! order.
 
 use crate::error::CliError;
+use crate::input::parse_point;
 use crate::limits::{FULL_QINF_POINTS, MAX_THREADS};
-use crate::methods::{MethodArg, MetricArg, method_for};
-use clap::Args;
+use crate::methods::{GraspMetricArg, MethodArg, MetricArg, method_for};
+use clap::{Args, ValueEnum};
 use pqhull::Stats;
 use pqhull::grasp::json::{error_line, parse_grasp, quality_line, split_grasps};
+use pqhull::grasp::metrics::{
+    ConeBracket, MetricError, cone_bracket, grasp_matrix_metrics, gws_volume, resist,
+};
 use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsQuality};
-use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, QualityError};
+use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality};
 use pqhull::grasp::{FrictionModel, Grasp};
 use pqhull::mesh::Mesh;
 use serde_json::Value;
@@ -49,8 +53,16 @@ pub struct GraspArgs {
     /// Grasps file (JSON, JSON array or JSON Lines); '-' or nothing reads standard input
     pub file: Option<PathBuf>,
     /// Metric
-    #[arg(long, value_enum, default_value_t = MetricArg::Q1)]
-    pub metric: MetricArg,
+    #[arg(long, value_enum, default_value_t = GraspMetricArg::Q1)]
+    pub metric: GraspMetricArg,
+    /// Q1: add "bracket": [low, high], Q1 of the pyramids inscribed in and circumscribed about
+    /// the circular friction cones (Q1 of the true cones lies between)
+    #[arg(long)]
+    pub cone_bracket: bool,
+    /// resist: the wrench to resist, fx,fy,fz,tx,ty,tz in the grasps' torque units (a row of
+    /// --disturbances)
+    #[arg(long, allow_hyphen_values = true)]
+    pub wrench: Option<String>,
     /// Method
     #[arg(long, value_enum, default_value_t = MethodArg::Partial)]
     pub method: MethodArg,
@@ -100,18 +112,11 @@ fn split(text: &str) -> Vec<Result<Value, String>> {
         .collect()
 }
 
-/// The output line of grasp `index`: its verdict, value and work, or the error that stopped it.
-fn result_line<T>(
-    index: usize,
-    result: &Result<T, QualityError>,
-    fields: impl Fn(&T) -> (bool, Option<f64>, Stats),
-) -> Value {
-    match result {
-        Ok(q) => {
-            let (force_closure, quality, stats) = fields(q);
-            quality_line(index, force_closure, quality, &stats)
-        }
-        Err(e) => error_line(index, &e.to_string()),
+/// The output line of grasp `index` from its verdict, value and work.
+fn line_of<T>(fields: impl Fn(&T) -> (bool, Option<f64>, Stats)) -> impl Fn(usize, &T) -> Value {
+    move |index, q| {
+        let (force_closure, quality, stats) = fields(q);
+        quality_line(index, force_closure, quality, &stats)
     }
 }
 
@@ -141,12 +146,12 @@ fn refuse_large_minkowski_sums(
     }
 }
 
-fn evaluate_lines<E, T: Send>(
+fn evaluate_lines<E, T: Send, Er: std::fmt::Display + Send>(
     entries: &[Result<Grasp, String>],
     threads: Option<usize>,
     new_evaluator: impl Fn() -> E + Sync + Send,
-    evaluate: impl Fn(&mut E, &Grasp) -> Result<T, QualityError> + Sync + Send,
-    fields: impl Fn(&T) -> (bool, Option<f64>, Stats),
+    evaluate: impl Fn(&mut E, &Grasp) -> Result<T, Er> + Sync + Send,
+    line: impl Fn(usize, &T) -> Value,
 ) -> Result<Vec<Value>, CliError> {
     let bar = crate::progress::bar(entries.len(), "grasps");
     let results = with_threads(threads, || {
@@ -167,7 +172,8 @@ fn evaluate_lines<E, T: Send>(
         .enumerate()
         .map(|(index, (entry, result))| match (entry, result) {
             (Err(message), _) => error_line(index, message),
-            (Ok(_), Some(result)) => result_line(index, result, &fields),
+            (Ok(_), Some(Ok(result))) => line(index, result),
+            (Ok(_), Some(Err(e))) => error_line(index, &e.to_string()),
             (Ok(_), None) => unreachable!("every parsed grasp is evaluated"),
         })
         .collect())
@@ -277,12 +283,95 @@ fn run_ows(
         args.threads,
         || OwsEvaluator::new(method),
         |ev, g| ev.evaluate(g, &space),
-        |q: &OwsQuality| (q.force_closure, q.value, q.stats),
+        line_of(|q: &OwsQuality| (q.force_closure, q.value, q.stats)),
     )
 }
 
+/// `--cone-bracket`: Q1's line with `"bracket": [low, high]`.
+fn bracket_line(index: usize, b: &ConeBracket) -> Value {
+    let q = &b.inscribed;
+    let mut line = quality_line(index, q.force_closure, Some(q.value), &q.stats);
+    line["bracket"] = serde_json::json!([b.low(), b.high()]);
+    line
+}
+
+/// The lines of the metrics only `pqh grasp` computes: the value, force closure decided by Q1 by
+/// the partial hull (so the line has the shape of every other), and the metric's own work.
+fn run_other(args: &GraspArgs, entries: &[Result<Grasp, String>]) -> Result<Vec<Value>, CliError> {
+    let metric = args.metric;
+    if metric != GraspMetricArg::Resist && args.method != MethodArg::Partial {
+        return Err(CliError::Usage(format!(
+            "--method does not apply to --metric {}",
+            metric
+                .to_possible_value()
+                .map_or(String::new(), |v| v.get_name().to_string())
+        )));
+    }
+    let with_verdict =
+        |g: &Grasp, value: f64, stats: Stats| -> Result<(bool, f64, Stats), MetricError> {
+            let q = pqhull::grasp::quality::q1(g).map_err(MetricError::Quality)?;
+            Ok((q.force_closure, value, stats))
+        };
+    let line = line_of(|r: &(bool, f64, Stats)| (r.0, Some(r.1), r.2));
+    match metric {
+        GraspMetricArg::Resist => {
+            let text = args.wrench.as_deref().ok_or_else(|| {
+                CliError::Usage("--metric resist needs --wrench fx,fy,fz,tx,ty,tz".into())
+            })?;
+            let w = parse_point("--wrench", text)?;
+            let w: [f64; 6] = w.as_slice().try_into().map_err(|_| {
+                CliError::Usage(format!("--wrench needs 6 numbers, not {}", w.len()))
+            })?;
+            let method = method_for(args.method, Metric::Ows)?;
+            evaluate_lines(
+                entries,
+                args.threads,
+                || (),
+                |(), g| resist(g, w, method),
+                line_of(|q: &OwsQuality| (q.force_closure, q.value, q.stats)),
+            )
+        }
+        GraspMetricArg::Volume => evaluate_lines(
+            entries,
+            args.threads,
+            || (),
+            |(), g| {
+                let (volume, stats) = gws_volume(g)?;
+                with_verdict(g, volume, stats)
+            },
+            line,
+        ),
+        _ => evaluate_lines(
+            entries,
+            args.threads,
+            || (),
+            |(), g| {
+                let started = std::time::Instant::now();
+                let m = grasp_matrix_metrics(g)?;
+                let value = if metric == GraspMetricArg::SigmaMin {
+                    m.sigma_min()
+                } else {
+                    m.isotropy()
+                };
+                let stats = Stats {
+                    elapsed: started.elapsed(),
+                    ..Stats::default()
+                };
+                with_verdict(g, value, stats)
+            },
+            line,
+        ),
+    }
+}
+
 pub fn run(args: &GraspArgs) -> Result<(), CliError> {
-    if !matches!(args.metric, MetricArg::Ows)
+    if args.cone_bracket && args.metric != GraspMetricArg::Q1 {
+        return Err(CliError::Usage("--cone-bracket is for --metric q1".into()));
+    }
+    if args.wrench.is_some() && args.metric != GraspMetricArg::Resist {
+        return Err(CliError::Usage("--wrench is for --metric resist".into()));
+    }
+    if !matches!(args.metric, GraspMetricArg::Ows)
         && (args.mesh.is_some() || args.disturbances.is_some())
     {
         return Err(CliError::Usage(
@@ -290,7 +379,7 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
         ));
     }
     // Options that would be silently ignored are errors instead.
-    if args.zero_wrench && !matches!(args.metric, MetricArg::Qinf) {
+    if args.zero_wrench && !matches!(args.metric, GraspMetricArg::Qinf) {
         return Err(CliError::Usage("--zero-wrench is for --metric qinf".into()));
     }
     if (args.ows_friction.is_some() || args.ows_edges.is_some()) && args.mesh.is_none() {
@@ -314,10 +403,20 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
         })
         .collect();
     let readable = entries.iter().filter(|e| e.is_ok()).count();
-    let lines = match args.metric {
-        MetricArg::Ows => run_ows(args, entries, &values)?,
-        MetricArg::Q1 | MetricArg::Qinf => {
-            let metric = args.metric.metric(args.zero_wrench);
+    let lines = match args.metric.planner_metric() {
+        Some(MetricArg::Ows) => run_ows(args, entries, &values)?,
+        Some(MetricArg::Q1) if args.cone_bracket => {
+            let method = method_for(args.method, Metric::Q1)?;
+            evaluate_lines(
+                &entries,
+                args.threads,
+                || (),
+                |(), g| cone_bracket(g, method),
+                bracket_line,
+            )?
+        }
+        Some(base) => {
+            let metric = base.metric(args.zero_wrench);
             let method = method_for(args.method, metric)?;
             if metric != Metric::Q1 && method != Method::Partial && !args.force {
                 refuse_large_minkowski_sums(&entries, args.zero_wrench)?;
@@ -327,9 +426,10 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
                 args.threads,
                 || Evaluator::new(metric, method),
                 |ev, g| ev.evaluate(g),
-                |q: &Quality| (q.force_closure, Some(q.value), q.stats),
+                line_of(|q: &Quality| (q.force_closure, Some(q.value), q.stats)),
             )?
         }
+        None => run_other(args, &entries)?,
     };
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());

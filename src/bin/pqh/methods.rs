@@ -29,6 +29,40 @@ impl MetricArg {
     }
 }
 
+/// The `--metric` values of `pqh grasp`: the planner's three, and the metrics of
+/// `pqhull::grasp::metrics` that only `pqh grasp` computes so far.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum GraspMetricArg {
+    /// Ferrari–Canny Q1 over the union of contact wrenches (--cone-bracket adds its bracket for
+    /// circular cones)
+    Q1,
+    /// Q∞ over the Minkowski sum (implicit for the partial method)
+    Qinf,
+    /// Object wrench space metric (needs --mesh or --disturbances)
+    Ows,
+    /// The largest multiple t of one wrench such that the grasp resists -t·wrench (--wrench; Q_OWS
+    /// with that single disturbance)
+    Resist,
+    /// Volume of the grasp wrench space (the full hull: a volume needs every facet)
+    Volume,
+    /// Smallest singular value of the grasp matrix
+    SigmaMin,
+    /// Isotropy index of the grasp matrix: smallest over largest singular value
+    Isotropy,
+}
+
+impl GraspMetricArg {
+    /// The planner's metric of the same name, if it is one.
+    pub fn planner_metric(self) -> Option<MetricArg> {
+        match self {
+            GraspMetricArg::Q1 => Some(MetricArg::Q1),
+            GraspMetricArg::Qinf => Some(MetricArg::Qinf),
+            GraspMetricArg::Ows => Some(MetricArg::Ows),
+            _ => None,
+        }
+    }
+}
+
 /// The `--method` values (which metric takes which: `Method::supports`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum MethodArg {
