@@ -17,16 +17,28 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let edges: usize = args.next().map_or(Ok(8), |a| a.parse())?;
     let set = bar_grasps(1, grasps, 4, FrictionModel::try_new(BAR_FRICTION, edges)?);
     let gravity = [0.0, 0.0, -1.0, 0.0, 0.0, 0.0];
-    type Run<'a> = Box<dyn Fn(&pqhull::grasp::Grasp) -> Result<(), Box<dyn std::error::Error>> + 'a>;
+    type Run<'a> =
+        Box<dyn Fn(&pqhull::grasp::Grasp) -> Result<(), Box<dyn std::error::Error>> + 'a>;
     let metrics: Vec<(&str, Run)> = vec![
-        ("q1 (partial)", Box::new(|g| q1(g).map(drop).map_err(Into::into))),
+        (
+            "q1 (partial)",
+            Box::new(|g| q1(g).map(drop).map_err(Into::into)),
+        ),
         (
             "cone bracket (two Q1)",
-            Box::new(|g| cone_bracket(g, Method::Partial).map(drop).map_err(Into::into)),
+            Box::new(|g| {
+                cone_bracket(g, Method::Partial)
+                    .map(drop)
+                    .map_err(Into::into)
+            }),
         ),
         (
             "resist gravity (partial)",
-            Box::new(|g| resist(g, gravity, Method::Partial).map(drop).map_err(Into::into)),
+            Box::new(|g| {
+                resist(g, gravity, Method::Partial)
+                    .map(drop)
+                    .map_err(Into::into)
+            }),
         ),
         (
             "gws volume (full hull)",
@@ -38,7 +50,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         ),
     ];
     println!("{grasps} bar grasps, 4 contacts x {edges} edges, mu = {BAR_FRICTION}");
-    println!("{:<28} {:>12} {:>12} {:>10}", "metric", "median us", "mean us", "x q1");
+    println!(
+        "{:<28} {:>12} {:>12} {:>10}",
+        "metric", "median us", "mean us", "x q1"
+    );
     let mut q1_median = f64::NAN;
     for (name, run) in &metrics {
         let mut times = Vec::with_capacity(set.len());

@@ -53,7 +53,7 @@ pub struct Batch {
 }
 
 /// The torque frame and friction shared by every grasp of a call.
-struct Frame {
+pub(crate) struct Frame {
     torque_reference: Option<[f64; 3]>,
     torque_scale: Option<f64>,
     cone_edges: usize,
@@ -171,6 +171,52 @@ fn frame(
     })
 }
 
+/// One grasp from the single-grasp functions' arguments, and its frame.
+pub(crate) fn one_grasp(
+    positions: PyReadonlyArray2<'_, f64>,
+    normals: PyReadonlyArray2<'_, f64>,
+    tangents: Option<PyReadonlyArray2<'_, f64>>,
+    friction: f64,
+    cone_edges: usize,
+    torque_reference: Option<PyReadonlyArray1<'_, f64>>,
+    torque_scale: Option<f64>,
+) -> PyResult<(Grasp, Frame)> {
+    check_contacts("positions", positions.shape(), None)?;
+    let m = positions.shape()[0];
+    check_contacts("normals", normals.shape(), Some(m))?;
+    if let Some(t) = &tangents {
+        check_contacts("tangents", t.shape(), Some(m))?;
+    }
+    let frame = frame(cone_edges, torque_reference, torque_scale)?;
+    let g = grasp(
+        positions.as_array(),
+        normals.as_array(),
+        tangents.as_ref().map(|t| t.as_array()),
+        friction,
+        &frame,
+    )
+    .map_err(errors::grasp)?;
+    Ok((g, frame))
+}
+
+/// A method by its Python name, checked against `metric`.
+pub(crate) fn method_for(name: &str, metric: Metric) -> PyResult<Method> {
+    method_of(name, metric)
+}
+
+impl Quality {
+    /// The Python value of an OWS-like result (no value when not force closure).
+    pub(crate) fn of_ows(q: &pqhull::grasp::ows::OwsQuality) -> Self {
+        Quality {
+            value: q.value,
+            force_closure: q.force_closure,
+            points_processed: q.stats.points_processed,
+            facets_created: q.stats.facets_created,
+            elapsed_us: q.stats.elapsed.as_secs_f64() * 1e6,
+        }
+    }
+}
+
 #[allow(clippy::too_many_arguments)] // the Python signature
 fn single(
     py: Python<'_>,
@@ -185,22 +231,16 @@ fn single(
     method: &str,
     space: Option<&Space>,
 ) -> PyResult<Quality> {
-    check_contacts("positions", positions.shape(), None)?;
-    let m = positions.shape()[0];
-    check_contacts("normals", normals.shape(), Some(m))?;
-    if let Some(t) = &tangents {
-        check_contacts("tangents", t.shape(), Some(m))?;
-    }
-    let frame = frame(cone_edges, torque_reference, torque_scale)?;
     let method = method_of(method, metric)?;
-    let g = grasp(
-        positions.as_array(),
-        normals.as_array(),
-        tangents.as_ref().map(|t| t.as_array()),
+    let (g, frame) = one_grasp(
+        positions,
+        normals,
+        tangents,
         friction,
-        &frame,
-    )
-    .map_err(errors::grasp)?;
+        cone_edges,
+        torque_reference,
+        torque_scale,
+    )?;
     match space {
         None => {
             let q = py
@@ -219,13 +259,7 @@ fn single(
             let q = py
                 .detach(|| OwsEvaluator::new(method).evaluate(&g, space))
                 .map_err(errors::quality)?;
-            Ok(Quality {
-                value: q.value,
-                force_closure: q.force_closure,
-                points_processed: q.stats.points_processed,
-                facets_created: q.stats.facets_created,
-                elapsed_us: q.stats.elapsed.as_secs_f64() * 1e6,
-            })
+            Ok(Quality::of_ows(&q))
         }
     }
 }

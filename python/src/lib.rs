@@ -8,6 +8,7 @@
 mod errors;
 mod grasps;
 mod hull;
+mod metrics;
 mod ows;
 
 use pyo3::prelude::*;
@@ -27,5 +28,9 @@ fn _pqhull(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(grasps::ows, m)?)?;
     m.add_function(wrap_pyfunction!(grasps::evaluate, m)?)?;
     m.add_function(wrap_pyfunction!(ows::load_mesh, m)?)?;
+    m.add_function(wrap_pyfunction!(metrics::cone_bracket, m)?)?;
+    m.add_function(wrap_pyfunction!(metrics::resist, m)?)?;
+    m.add_function(wrap_pyfunction!(metrics::gws_volume, m)?)?;
+    m.add_function(wrap_pyfunction!(metrics::grasp_matrix_metrics, m)?)?;
     Ok(())
 }

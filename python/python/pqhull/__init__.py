@@ -38,6 +38,10 @@ __all__ = [
     "ObjectWrenchSpace",
     "load_mesh",
     "evaluate",
+    "cone_bracket",
+    "resist",
+    "gws_volume",
+    "grasp_matrix_metrics",
     "Batch",
     "Distance",
     "Quality",
@@ -128,3 +132,52 @@ def evaluate(positions, normals, tangents=None, *, friction, cone_edges, torque_
         cone_edges=int(cone_edges), torque_reference=_frame(torque_reference),
         torque_scale=None if torque_scale is None else float(torque_scale), metric=metric,
         method=method, with_zero_wrench=bool(with_zero_wrench), space=space, threads=threads)
+
+
+def _one(positions, normals, tangents):
+    return (_array(positions, 2, "positions"), _array(normals, 2, "normals"),
+            _optional(tangents, 2, "tangents"))
+
+
+def _frame_args(torque_reference, torque_scale):
+    return dict(torque_reference=_frame(torque_reference),
+                torque_scale=None if torque_scale is None else float(torque_scale))
+
+
+def cone_bracket(positions, normals, tangents=None, *, friction, cone_edges,
+                 torque_reference=None, torque_scale=None, method="partial"):
+    """(low, high): Q1 of the true circular friction cones lies between them. low is Q1 with
+    the k-edge pyramids inscribed in the cones, high with the pyramids circumscribed about them
+    (rim scaled by 1/cos(pi/k)), each widened by its evaluation's accuracy."""
+    return _pqhull.cone_bracket(*_one(positions, normals, tangents), friction=float(friction),
+                                cone_edges=int(cone_edges),
+                                **_frame_args(torque_reference, torque_scale), method=method)
+
+
+def resist(positions, normals, tangents=None, *, wrench, friction, cone_edges,
+           torque_reference=None, torque_scale=None, method="partial"):
+    """The largest t such that the grasp resists -t*wrench (6 numbers in the grasp's torque
+    units, e.g. gravity at the centre of mass): Q_OWS with that single disturbance, by the
+    partial hull. A Quality; `value` is None when the grasp is not force closure."""
+    return _pqhull.resist(*_one(positions, normals, tangents), wrench=_array(wrench, 1, "wrench"),
+                          friction=float(friction), cone_edges=int(cone_edges),
+                          **_frame_args(torque_reference, torque_scale), method=method)
+
+
+def gws_volume(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
+               torque_scale=None):
+    """The volume of the grasp wrench space (the full hull of the Q1 wrenches: a volume needs
+    every facet). 0 for wrenches spanning fewer than six dimensions."""
+    return _pqhull.gws_volume(*_one(positions, normals, tangents), friction=float(friction),
+                              cone_edges=int(cone_edges),
+                              **_frame_args(torque_reference, torque_scale))
+
+
+def grasp_matrix_metrics(positions, normals, tangents=None, *, friction, cone_edges,
+                         torque_reference=None, torque_scale=None):
+    """(singular_values, sigma_min, isotropy) of the grasp matrix (6 x 3m, contact forces to
+    wrenches in the grasp's torque frame): its six singular values largest first, the smallest,
+    and smallest / largest."""
+    return _pqhull.grasp_matrix_metrics(*_one(positions, normals, tangents),
+                                        friction=float(friction), cone_edges=int(cone_edges),
+                                        **_frame_args(torque_reference, torque_scale))

@@ -122,3 +122,29 @@ def evaluate(
     space: Optional[ObjectWrenchSpace] = None,
     threads: Optional[int] = None,
 ) -> Batch: ...
+
+def cone_bracket(
+    positions: npt.NDArray[np.float64], normals: npt.NDArray[np.float64],
+    tangents: Optional[npt.NDArray[np.float64]] = None, *, friction: float, cone_edges: int,
+    torque_reference: Optional[npt.NDArray[np.float64]] = None,
+    torque_scale: Optional[float] = None, method: str = "partial",
+) -> tuple[float, float]: ...
+def resist(
+    positions: npt.NDArray[np.float64], normals: npt.NDArray[np.float64],
+    tangents: Optional[npt.NDArray[np.float64]] = None, *, wrench: npt.NDArray[np.float64],
+    friction: float, cone_edges: int,
+    torque_reference: Optional[npt.NDArray[np.float64]] = None,
+    torque_scale: Optional[float] = None, method: str = "partial",
+) -> Quality: ...
+def gws_volume(
+    positions: npt.NDArray[np.float64], normals: npt.NDArray[np.float64],
+    tangents: Optional[npt.NDArray[np.float64]] = None, *, friction: float, cone_edges: int,
+    torque_reference: Optional[npt.NDArray[np.float64]] = None,
+    torque_scale: Optional[float] = None,
+) -> float: ...
+def grasp_matrix_metrics(
+    positions: npt.NDArray[np.float64], normals: npt.NDArray[np.float64],
+    tangents: Optional[npt.NDArray[np.float64]] = None, *, friction: float, cone_edges: int,
+    torque_reference: Optional[npt.NDArray[np.float64]] = None,
+    torque_scale: Optional[float] = None,
+) -> tuple[npt.NDArray[np.float64], float, float]: ...

@@ -1,0 +1,157 @@
+//! The other metrics from Python (`pqhull::grasp::metrics`), one grasp at a time: the cone
+//! bracket, wrench resistance, the GWS volume and the grasp matrix's singular values.
+
+use crate::errors;
+use crate::grasps::{Quality, method_for, one_grasp};
+use numpy::{PyArray1, PyReadonlyArray1, PyReadonlyArray2, ToPyArray};
+use pqhull::grasp::metrics::{self, MetricError};
+use pqhull::grasp::quality::Metric;
+use pyo3::prelude::*;
+
+fn error(e: MetricError) -> PyErr {
+    match e {
+        MetricError::Quality(e) => errors::quality(e),
+        MetricError::Grasp(_) => errors::grasp(e.to_string()),
+        e => errors::input(e.to_string()),
+    }
+}
+
+/// cone_bracket(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
+/// torque_scale=None, method="partial") -> (low, high): Q1 of the true circular friction cones
+/// lies between them (the pyramids inscribed in and circumscribed about the cones, each widened
+/// by its evaluation's accuracy).
+#[pyfunction]
+#[pyo3(signature = (positions, normals, tangents=None, *, friction, cone_edges,
+                    torque_reference=None, torque_scale=None, method="partial"))]
+#[allow(clippy::too_many_arguments)] // the Python signature
+pub fn cone_bracket(
+    py: Python<'_>,
+    positions: PyReadonlyArray2<'_, f64>,
+    normals: PyReadonlyArray2<'_, f64>,
+    tangents: Option<PyReadonlyArray2<'_, f64>>,
+    friction: f64,
+    cone_edges: usize,
+    torque_reference: Option<PyReadonlyArray1<'_, f64>>,
+    torque_scale: Option<f64>,
+    method: &str,
+) -> PyResult<(f64, f64)> {
+    let method = method_for(method, Metric::Q1)?;
+    let (g, _) = one_grasp(
+        positions,
+        normals,
+        tangents,
+        friction,
+        cone_edges,
+        torque_reference,
+        torque_scale,
+    )?;
+    let b = py
+        .detach(|| metrics::cone_bracket(&g, method))
+        .map_err(error)?;
+    Ok((b.low(), b.high()))
+}
+
+/// resist(positions, normals, tangents=None, *, wrench, friction, cone_edges,
+/// torque_reference=None, torque_scale=None, method="partial") -> Quality: the largest t with
+/// -t*wrench in the grasp wrench space (Q_OWS with that one disturbance; value None when the grasp
+/// is not force closure). `wrench` is 6 numbers in the grasp's torque units.
+#[pyfunction]
+#[pyo3(signature = (positions, normals, tangents=None, *, wrench, friction, cone_edges,
+                    torque_reference=None, torque_scale=None, method="partial"))]
+#[allow(clippy::too_many_arguments)] // the Python signature
+pub fn resist(
+    py: Python<'_>,
+    positions: PyReadonlyArray2<'_, f64>,
+    normals: PyReadonlyArray2<'_, f64>,
+    tangents: Option<PyReadonlyArray2<'_, f64>>,
+    wrench: PyReadonlyArray1<'_, f64>,
+    friction: f64,
+    cone_edges: usize,
+    torque_reference: Option<PyReadonlyArray1<'_, f64>>,
+    torque_scale: Option<f64>,
+    method: &str,
+) -> PyResult<Quality> {
+    let method = method_for(method, Metric::Ows)?;
+    let w = wrench
+        .as_slice()
+        .map_err(|e| errors::input(e.to_string()))?;
+    let w: [f64; 6] = w
+        .try_into()
+        .map_err(|_| errors::input(format!("wrench must have 6 numbers, not {}", w.len())))?;
+    let (g, _) = one_grasp(
+        positions,
+        normals,
+        tangents,
+        friction,
+        cone_edges,
+        torque_reference,
+        torque_scale,
+    )?;
+    let q = py
+        .detach(|| metrics::resist(&g, w, method))
+        .map_err(error)?;
+    Ok(Quality::of_ows(&q))
+}
+
+/// gws_volume(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
+/// torque_scale=None) -> float: the volume of the grasp wrench space (its full hull).
+#[pyfunction]
+#[pyo3(signature = (positions, normals, tangents=None, *, friction, cone_edges,
+                    torque_reference=None, torque_scale=None))]
+#[allow(clippy::too_many_arguments)] // the Python signature
+pub fn gws_volume(
+    py: Python<'_>,
+    positions: PyReadonlyArray2<'_, f64>,
+    normals: PyReadonlyArray2<'_, f64>,
+    tangents: Option<PyReadonlyArray2<'_, f64>>,
+    friction: f64,
+    cone_edges: usize,
+    torque_reference: Option<PyReadonlyArray1<'_, f64>>,
+    torque_scale: Option<f64>,
+) -> PyResult<f64> {
+    let (g, _) = one_grasp(
+        positions,
+        normals,
+        tangents,
+        friction,
+        cone_edges,
+        torque_reference,
+        torque_scale,
+    )?;
+    let (volume, _) = py.detach(|| metrics::gws_volume(&g)).map_err(error)?;
+    Ok(volume)
+}
+
+/// grasp_matrix_metrics(positions, normals, tangents=None, *, friction, cone_edges,
+/// torque_reference=None, torque_scale=None) -> (singular_values, sigma_min, isotropy): the
+/// grasp matrix's six singular values (largest first), the smallest, and their ratio.
+#[pyfunction]
+#[pyo3(signature = (positions, normals, tangents=None, *, friction, cone_edges,
+                    torque_reference=None, torque_scale=None))]
+#[allow(clippy::too_many_arguments)] // the Python signature
+pub fn grasp_matrix_metrics<'py>(
+    py: Python<'py>,
+    positions: PyReadonlyArray2<'_, f64>,
+    normals: PyReadonlyArray2<'_, f64>,
+    tangents: Option<PyReadonlyArray2<'_, f64>>,
+    friction: f64,
+    cone_edges: usize,
+    torque_reference: Option<PyReadonlyArray1<'_, f64>>,
+    torque_scale: Option<f64>,
+) -> PyResult<(Bound<'py, PyArray1<f64>>, f64, f64)> {
+    let (g, _) = one_grasp(
+        positions,
+        normals,
+        tangents,
+        friction,
+        cone_edges,
+        torque_reference,
+        torque_scale,
+    )?;
+    let m = metrics::grasp_matrix_metrics(&g).map_err(error)?;
+    Ok((
+        m.singular_values.to_pyarray(py),
+        m.sigma_min(),
+        m.isotropy(),
+    ))
+}

@@ -1,0 +1,89 @@
+"""The other metrics from Python against references written here with numpy and scipy: the GWS
+volume against scipy's ConvexHull of the wrenches built here, resistance against the ray's exit
+through scipy's facets, the grasp matrix's singular values against numpy's SVD, and the cone
+bracket around Q1 with 256 edges."""
+
+import numpy as np
+import pytest
+from scipy.spatial import ConvexHull
+
+import pqhull
+
+MU, K = 0.6, 8
+
+
+def grasp(seed, m=4):
+    """m contacts on the unit sphere pushing inward, with explicit unit tangents."""
+    rng = np.random.default_rng(seed)
+    n = rng.standard_normal((m, 3))
+    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    p = -n * rng.uniform(0.5, 1.0, (m, 1))
+    t = np.cross(n, rng.standard_normal(3))
+    t /= np.linalg.norm(t, axis=1, keepdims=True)
+    return p, n, t
+
+
+def wrenches(p, n, t, mu=MU, k=K):
+    """The documented wrench set: f_j = n + mu (cos(2 pi j/k) t + sin(2 pi j/k) (n x t)),
+    w = [f; p x f] (torque reference the origin, scale 1)."""
+    out = []
+    for pi, ni, ti in zip(p, n, t):
+        bi = np.cross(ni, ti)
+        for j in range(k):
+            a = 2 * np.pi * j / k
+            f = ni + mu * (np.cos(a) * ti + np.sin(a) * bi)
+            out.append(np.concatenate([f, np.cross(pi, f)]))
+    return np.array(out)
+
+
+def force_closure_grasps(count):
+    found = []
+    seed = 0
+    while len(found) < count:
+        p, n, t = grasp(seed)
+        if pqhull.q1(p, n, t, friction=MU, cone_edges=K).force_closure:
+            found.append((p, n, t))
+        seed += 1
+    return found
+
+
+def test_volume_equals_scipy_on_the_wrenches_built_here():
+    for i, (p, n, t) in enumerate(force_closure_grasps(15)):
+        ours = pqhull.gws_volume(p, n, t, friction=MU, cone_edges=K)
+        scipy = ConvexHull(wrenches(p, n, t)).volume
+        assert ours == pytest.approx(scipy, rel=1e-9), i
+
+
+def test_resistance_equals_the_ray_exit_through_scipys_facets():
+    rng = np.random.default_rng(3)
+    for i, (p, n, t) in enumerate(force_closure_grasps(15)):
+        w = rng.standard_normal(6)
+        q = pqhull.resist(p, n, t, wrench=w, friction=MU, cone_edges=K)
+        eq = ConvexHull(wrenches(p, n, t)).equations  # normal . x + offset <= 0 inside
+        along = eq[:, :6] @ (-w)
+        exit_t = np.min(-eq[along > 0, 6] / along[along > 0])
+        assert q.force_closure and q.value == pytest.approx(exit_t, rel=1e-9), i
+    with pytest.raises(pqhull.Error, match="zero"):
+        pqhull.resist(p, n, t, wrench=np.zeros(6), friction=MU, cone_edges=K)
+    with pytest.raises(pqhull.InputError, match="6 numbers"):
+        pqhull.resist(p, n, t, wrench=np.ones(5), friction=MU, cone_edges=K)
+
+
+def test_singular_values_equal_numpys_svd():
+    for seed in range(10):
+        p, n, t = grasp(seed, m=3)
+        g = np.hstack([np.vstack([np.eye(3), np.cross(pi, np.eye(3))]) for pi in p])
+        expected = np.linalg.svd(g, compute_uv=False)
+        s, sigma_min, isotropy = pqhull.grasp_matrix_metrics(p, n, t, friction=MU, cone_edges=K)
+        np.testing.assert_allclose(s, expected, rtol=1e-12, atol=1e-14 * expected[0])
+        assert sigma_min == s[5] and isotropy == pytest.approx(expected[5] / expected[0])
+    two = pqhull.grasp_matrix_metrics(p[:2], n[:2], t[:2], friction=MU, cone_edges=K)
+    assert two[1] <= 1e-14 * two[0][0]
+
+
+def test_the_bracket_holds_q1_with_256_edges():
+    for seed in range(20):
+        p, n, t = grasp(seed)
+        low, high = pqhull.cone_bracket(p, n, t, friction=MU, cone_edges=K)
+        fine = pqhull.q1(p, n, t, friction=MU, cone_edges=256).value
+        assert low <= fine <= high, seed
