@@ -104,8 +104,82 @@ fn metric_of(name: &str, with_zero_wrench: bool) -> PyResult<Metric> {
         "qinf" => Ok(Metric::QInf { with_zero_wrench }),
         "ows" => Ok(Metric::Ows),
         other => Err(errors::input(format!(
-            "metric {other:?}: one of \"q1\", \"qinf\", \"ows\""
+            "metric {other:?}: one of \"q1\", \"qinf\", \"ows\", \"resist\", \"volume\", \
+             \"sigma-min\", \"isotropy\""
         ))),
+    }
+}
+
+/// The batch's metric: the evaluator's, or one of `pqhull::grasp::metrics`.
+#[derive(Clone, Copy)]
+enum Kind {
+    Evaluator(Metric),
+    Resist([f64; 6]),
+    Volume,
+    SigmaMin,
+    Isotropy,
+}
+
+impl Kind {
+    /// One grasp's (value, force closure); the grasp-matrix and volume metrics take force
+    /// closure from Q1 by the partial hull, as `pqh grasp` does.
+    fn score(self, g: &Grasp, method: Method) -> Result<(Option<f64>, bool), String> {
+        use pqhull::grasp::metrics;
+        let verdict = |value: f64| -> Result<(Option<f64>, bool), String> {
+            let q = pqhull::grasp::quality::q1(g).map_err(|e| e.to_string())?;
+            Ok((Some(value), q.force_closure))
+        };
+        match self {
+            Kind::Evaluator(_) => unreachable!("evaluated by the library's batch"),
+            Kind::Resist(w) => metrics::resist(g, w, method)
+                .map(|q| (q.value, q.force_closure))
+                .map_err(|e| e.to_string()),
+            Kind::Volume => verdict(metrics::gws_volume(g).map_err(|e| e.to_string())?.0),
+            Kind::SigmaMin | Kind::Isotropy => {
+                let m = metrics::grasp_matrix_metrics(g).map_err(|e| e.to_string())?;
+                verdict(if matches!(self, Kind::SigmaMin) {
+                    m.sigma_min()
+                } else {
+                    m.isotropy()
+                })
+            }
+        }
+    }
+}
+
+/// The batch's metric from its name, its method, and the wrench `resist` takes.
+fn kind_of(
+    name: &str,
+    method: &str,
+    with_zero_wrench: bool,
+    wrench: Option<&[f64]>,
+) -> PyResult<(Kind, Method)> {
+    if wrench.is_some() && name != "resist" {
+        return Err(errors::input("wrench= is for metric \"resist\""));
+    }
+    let other = |kind: Kind| {
+        if method != "partial" {
+            return Err(errors::input(format!(
+                "metric {name:?} takes no method (it has one way to be computed)"
+            )));
+        }
+        Ok((kind, Method::Partial))
+    };
+    match name {
+        "resist" => {
+            let w = wrench.ok_or_else(|| errors::input("metric \"resist\" needs wrench="))?;
+            let w: [f64; 6] = w.try_into().map_err(|_| {
+                errors::input(format!("wrench must have 6 numbers, not {}", w.len()))
+            })?;
+            Ok((Kind::Resist(w), method_of(method, Metric::Ows)?))
+        }
+        "volume" => other(Kind::Volume),
+        "sigma-min" => other(Kind::SigmaMin),
+        "isotropy" => other(Kind::Isotropy),
+        name => {
+            let metric = metric_of(name, with_zero_wrench)?;
+            Ok((Kind::Evaluator(metric), method_of(method, metric)?))
+        }
     }
 }
 
@@ -370,7 +444,7 @@ pub fn ows(
 #[pyfunction]
 #[pyo3(signature = (positions, normals, tangents=None, *, friction, cone_edges,
                     torque_reference=None, torque_scale=None, metric="q1", method="partial",
-                    with_zero_wrench=false, space=None, threads=None))]
+                    with_zero_wrench=false, space=None, threads=None, wrench=None))]
 #[allow(clippy::too_many_arguments)] // the Python signature
 pub fn evaluate(
     py: Python<'_>,
@@ -386,6 +460,7 @@ pub fn evaluate(
     with_zero_wrench: bool,
     space: Option<PyRef<'_, ObjectWrenchSpace>>,
     threads: Option<usize>,
+    wrench: Option<PyReadonlyArray1<'_, f64>>,
 ) -> PyResult<Batch> {
     let shape = positions.shape().to_vec();
     if shape.len() != 3 || shape[2] != 3 {
@@ -416,8 +491,15 @@ pub fn evaluate(
             friction.len()
         )));
     }
-    let metric = metric_of(metric, with_zero_wrench)?;
-    let method = method_of(method, metric)?;
+    let wrench = match &wrench {
+        Some(w) => Some(w.as_slice().map_err(|e| errors::input(e.to_string()))?),
+        None => None,
+    };
+    let (kind, method) = kind_of(metric, method, with_zero_wrench, wrench)?;
+    let metric = match kind {
+        Kind::Evaluator(metric) => metric,
+        _ => Metric::Q1, // not an OWS metric: takes no space
+    };
     let space = space.as_ref().map(|s| &s.inner);
     if (metric == Metric::Ows) != space.is_some() {
         return Err(errors::input(
@@ -452,16 +534,24 @@ pub fn evaluate(
     let built: Vec<Result<(), String>> =
         built.into_iter().map(|g| g.map(|g| good.push(g))).collect();
     // Each row as (value, force closure): Q_OWS has no value for a grasp not in force closure.
-    let run = || -> Vec<Result<(Option<f64>, bool), QualityError>> {
-        match space {
-            None => evaluate_batch(&good, metric, method)
+    let run = || -> Vec<Result<(Option<f64>, bool), String>> {
+        use rayon::prelude::*;
+        match (kind, space) {
+            (Kind::Evaluator(_), None) => evaluate_batch(&good, metric, method)
                 .into_iter()
-                .map(|r| r.map(|q| (Some(q.value), q.force_closure)))
+                .map(|r| {
+                    r.map(|q| (Some(q.value), q.force_closure))
+                        .map_err(|e| e.to_string())
+                })
                 .collect(),
-            Some(space) => evaluate_ows_batch(&good, space, method)
+            (Kind::Evaluator(_), Some(space)) => evaluate_ows_batch(&good, space, method)
                 .into_iter()
-                .map(|r| r.map(|q| (q.value, q.force_closure)))
+                .map(|r| {
+                    r.map(|q| (q.value, q.force_closure))
+                        .map_err(|e| e.to_string())
+                })
                 .collect(),
+            (kind, _) => good.par_iter().map(|g| kind.score(g, method)).collect(),
         }
     };
     let started = std::time::Instant::now();

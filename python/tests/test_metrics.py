@@ -87,3 +87,31 @@ def test_the_bracket_holds_q1_with_256_edges():
         low, high = pqhull.cone_bracket(p, n, t, friction=MU, cone_edges=K)
         fine = pqhull.q1(p, n, t, friction=MU, cone_edges=256).value
         assert low <= fine <= high, seed
+
+
+def test_the_batch_equals_single_calls_for_every_new_metric():
+    found = force_closure_grasps(8)
+    p = np.stack([g[0] for g in found] + [grasp(100)[0]])
+    n = np.stack([g[1] for g in found] + [grasp(100)[1]])
+    t = np.stack([g[2] for g in found] + [grasp(100)[2]])
+    w = np.array([0.1, -0.3, -1.0, 0.02, 0.0, 0.05])
+    resist = pqhull.evaluate(p, n, t, friction=MU, cone_edges=K, metric="resist", wrench=w)
+    volume = pqhull.evaluate(p, n, t, friction=MU, cone_edges=K, metric="volume")
+    smin = pqhull.evaluate(p, n, t, friction=MU, cone_edges=K, metric="sigma-min")
+    iso = pqhull.evaluate(p, n, t, friction=MU, cone_edges=K, metric="isotropy")
+    for i in range(len(p)):
+        r = pqhull.resist(p[i], n[i], t[i], wrench=w, friction=MU, cone_edges=K)
+        assert resist.force_closure[i] == r.force_closure
+        assert (r.value is None and np.isnan(resist.quality[i])) or resist.quality[i] == r.value
+        assert volume.quality[i] == pqhull.gws_volume(p[i], n[i], t[i], friction=MU, cone_edges=K)
+        _, sigma_min, isotropy = pqhull.grasp_matrix_metrics(p[i], n[i], t[i], friction=MU,
+                                                             cone_edges=K)
+        assert smin.quality[i] == sigma_min and iso.quality[i] == isotropy
+        q1 = pqhull.q1(p[i], n[i], t[i], friction=MU, cone_edges=K)
+        assert volume.force_closure[i] == iso.force_closure[i] == q1.force_closure
+    with pytest.raises(pqhull.InputError, match="needs wrench"):
+        pqhull.evaluate(p, n, t, friction=MU, cone_edges=K, metric="resist")
+    with pytest.raises(pqhull.InputError, match="only for|is for"):
+        pqhull.evaluate(p, n, t, friction=MU, cone_edges=K, metric="q1", wrench=w)
+    with pytest.raises(pqhull.InputError, match="takes no method"):
+        pqhull.evaluate(p, n, t, friction=MU, cone_edges=K, metric="volume", method="full")

@@ -117,12 +117,14 @@ def ows(positions, normals, tangents=None, *, space, friction, cone_edges, torqu
 
 def evaluate(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
              torque_scale=None, metric="q1", method="partial", with_zero_wrench=False,
-             space=None, threads=None):
-    """The metric ("q1", "qinf", or "ows" with `space`) of N grasps of m contacts: (N, m, 3) positions and normals,
-    optional tangents; `friction` one value or one per grasp. Runs on all cores (or `threads`)
-    with the GIL released. Returns a Batch: `quality` (N,) and `force_closure` (N,) arrays, and
-    `errors`, a list of (row, message); a bad row is NaN and False there, the others are kept.
-    For "ows", a grasp not in force closure is NaN and False without an error entry."""
+             space=None, threads=None, wrench=None):
+    """The metric of N grasps of m contacts: (N, m, 3) positions and normals, optional tangents;
+    `friction` one value or one per grasp. Metrics: "q1", "qinf", "ows" (with `space`),
+    "resist" (with `wrench`, 6 numbers), "volume", "sigma-min", "isotropy" (the last three take
+    no method, and their force_closure is Q1's). Runs on all cores (or `threads`) with the GIL
+    released. Returns a Batch: `quality` (N,) and `force_closure` (N,) arrays, and `errors`, a
+    list of (row, message); a bad row is NaN and False there, the others are kept. For "ows" and
+    "resist", a grasp not in force closure is NaN and False without an error entry."""
     mu = np.atleast_1d(np.asarray(friction, dtype=np.float64))
     if mu.ndim != 1:
         raise InputError(f"friction must be a number or a 1-D array, not shape {mu.shape}")
@@ -131,7 +133,8 @@ def evaluate(positions, normals, tangents=None, *, friction, cone_edges, torque_
         _optional(tangents, 3, "tangents"), friction=np.ascontiguousarray(mu),
         cone_edges=int(cone_edges), torque_reference=_frame(torque_reference),
         torque_scale=None if torque_scale is None else float(torque_scale), metric=metric,
-        method=method, with_zero_wrench=bool(with_zero_wrench), space=space, threads=threads)
+        method=method, with_zero_wrench=bool(with_zero_wrench), space=space, threads=threads,
+        wrench=_optional(wrench, 1, "wrench"))
 
 
 def _one(positions, normals, tangents):

@@ -121,6 +121,7 @@ def evaluate(
     with_zero_wrench: bool = False,
     space: Optional[ObjectWrenchSpace] = None,
     threads: Optional[int] = None,
+    wrench: Optional[npt.NDArray[np.float64]] = None,
 ) -> Batch: ...
 
 def cone_bracket(
