@@ -20,17 +20,17 @@ experiment differs from the paper's). Methods: 'pqhgws' and 'pqhows' are the pub
 algorithms alone; 'pqhull' is this crate's default (a GJK pre-check, snapped wrenches certified on
 the caller's); 'quickhull' and 'brute' are full hulls; 'qhull' runs with the qhull feature.
 
---size smoke takes seconds (CI), default a few minutes on two cores, full the paper's grasp counts
-for every baseline (tens of minutes).";
+--size smoke takes seconds (CI), default about a minute and a half on two cores, full the paper's
+grasp counts for the baselines of Figs. 6 and 8 and k up to 64 in Fig. 7 (about 15 minutes).";
 
 /// How large the experiments are.
 #[derive(Clone, Copy, Debug, ValueEnum)]
 pub enum SizeArg {
     /// A few grasps per method (seconds)
     Smoke,
-    /// The paper's counts for the fast methods, subsets for the full-hull baselines (minutes)
+    /// The paper's counts for the fast methods, subsets for the full-hull baselines (about a minute and a half)
     Default,
-    /// The paper's counts for every method (tens of minutes)
+    /// The paper's counts for every method of Figs. 6 and 8, k up to 64 in Fig. 7 (about 15 min)
     Full,
 }
 
@@ -45,7 +45,7 @@ pub struct ReproduceArgs {
     /// How large the experiments are
     #[arg(long, value_enum, default_value_t = SizeArg::Default)]
     size: SizeArg,
-    /// The paper's sizes for every method (same as --size full)
+    /// The same as --size full
     #[arg(long, conflicts_with = "size")]
     full: bool,
     /// Seed of the grasps
