@@ -14,12 +14,16 @@ pub const TANGENT_PARALLEL_TOLERANCE: f64 = 1e-6;
 ///
 /// Built with [`Contact::try_new`], which validates and normalises its input, so every `Contact`
 /// satisfies: all coordinates finite, |n| = 1, |t| = 1 and t ⟂ n (to rounding).
+///
+/// A contact is a hard finger unless given a torsion ([`Contact::with_torsion`]): a soft finger,
+/// which also resists torsion about its normal.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Contact {
     position: [f64; 3],
     normal: [f64; 3],
     tangent: [f64; 3],
     tangent_given: bool,
+    torsion: f64,
 }
 
 impl Contact {
@@ -79,7 +83,47 @@ impl Contact {
             normal,
             tangent,
             tangent_given,
+            torsion: 0.0,
         })
+    }
+
+    /// This contact as a soft finger with torsion γ ≥ 0, a length: the torsional friction
+    /// coefficient times the contact patch's radius (the linearised soft-finger model of
+    /// GraspIt! and of Ciocarlie, Lackner and Allen, "Soft finger model with adaptive contact
+    /// geometry for grasping and manipulation tasks", 2007). With torsion, each friction-cone
+    /// edge f_j pairs with the two torsional moments ±γ n: the contact contributes the 2k
+    /// wrenches [f_j; ((p − c) × f_j ± γ n) / ρ] (see [`Grasp::wrenches`](super::Grasp::wrenches)).
+    /// γ = 0 is the hard finger.
+    ///
+    /// ```
+    /// use pqhull::grasp::Contact;
+    /// let c = Contact::try_new([0.0; 3], [0.0, 0.0, 1.0], None)?.with_torsion(0.01)?;
+    /// assert_eq!(c.torsion(), 0.01);
+    /// assert!(Contact::try_new([0.0; 3], [0.0, 0.0, 1.0], None)?.with_torsion(-1.0).is_err());
+    /// # Ok::<(), pqhull::grasp::GraspError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`GraspError::InvalidTorsion`] for a negative, NaN or infinite γ.
+    pub fn with_torsion(mut self, torsion: f64) -> Result<Contact, GraspError> {
+        if !torsion.is_finite() || torsion < 0.0 {
+            return Err(GraspError::InvalidTorsion {
+                contact: None,
+                torsion,
+            });
+        }
+        self.torsion = torsion;
+        Ok(self)
+    }
+
+    /// The torsion γ (0 for a hard finger).
+    pub fn torsion(&self) -> f64 {
+        self.torsion
+    }
+
+    /// Whether this is a soft finger (γ > 0).
+    pub fn is_soft(&self) -> bool {
+        self.torsion > 0.0
     }
 
     /// The tangent used when none is given, for a unit `normal`: (n × e_a) / |n × e_a| where e_a

@@ -45,6 +45,13 @@ pub enum GraspError {
         /// Index of the contact, if known.
         contact: Option<usize>,
     },
+    /// A soft contact's torsion γ is negative, NaN or infinite.
+    InvalidTorsion {
+        /// Index of the contact, if known.
+        contact: Option<usize>,
+        /// The torsion given.
+        torsion: f64,
+    },
     /// The friction coefficient μ is negative, NaN or infinite.
     InvalidFriction {
         /// The coefficient given.
@@ -107,7 +114,8 @@ impl GraspError {
             | GraspError::ZeroNormal { contact }
             | GraspError::NonFiniteTangent { contact }
             | GraspError::ZeroTangent { contact }
-            | GraspError::TangentParallelToNormal { contact } => contact,
+            | GraspError::TangentParallelToNormal { contact }
+            | GraspError::InvalidTorsion { contact, .. } => contact,
             _ => None,
         }
     }
@@ -122,6 +130,7 @@ impl GraspError {
                 | GraspError::NonFiniteTangent { .. }
                 | GraspError::ZeroTangent { .. }
                 | GraspError::TangentParallelToNormal { .. }
+                | GraspError::InvalidTorsion { .. }
         )
     }
 
@@ -132,7 +141,8 @@ impl GraspError {
             | GraspError::ZeroNormal { contact }
             | GraspError::NonFiniteTangent { contact }
             | GraspError::ZeroTangent { contact }
-            | GraspError::TangentParallelToNormal { contact } => Some(contact),
+            | GraspError::TangentParallelToNormal { contact }
+            | GraspError::InvalidTorsion { contact, .. } => Some(contact),
             _ => None,
         }
     }
@@ -161,6 +171,10 @@ impl fmt::Display for GraspError {
             GraspError::TangentParallelToNormal { .. } => {
                 write!(f, "the tangent is parallel to the normal")
             }
+            GraspError::InvalidTorsion { torsion, .. } => write!(
+                f,
+                "torsion {torsion} is invalid (must be finite and at least 0)"
+            ),
             GraspError::InvalidFriction { friction } => write!(
                 f,
                 "friction coefficient {friction} is invalid (must be finite and at least 0)"

@@ -3,12 +3,14 @@
 //! A grasp is one JSON object
 //!
 //! ```text
-//! {"contacts": [{"position": [x, y, z], "normal": [x, y, z], "tangent": [x, y, z]?}, ...],
+//! {"contacts": [{"position": [x, y, z], "normal": [x, y, z], "tangent": [x, y, z]?,
+//!                "torsion": gamma?}, ...],
 //!  "friction": mu, "cone_edges": k, "torque_reference": [x, y, z]?, "torque_scale": rho?}
 //! ```
 //!
 //! with inward normals (the direction the finger pushes) and `?` marking optional fields (see
-//! [`Contact::try_new`], [`FrictionModel::try_new`] and [`GraspBuilder`](super::GraspBuilder) for
+//! [`Contact::try_new`], [`Contact::with_torsion`] for `"torsion"`, a soft finger's torsional
+//! friction times its patch radius, absent or 0 for a hard finger, [`FrictionModel::try_new`] and [`GraspBuilder`](super::GraspBuilder) for
 //! what each accepts). `cone_edges` is a whole number (`8.0` counts).
 //!
 //! A document holds one grasp, a JSON array of grasps, or JSON Lines (one grasp per line).
@@ -409,7 +411,16 @@ pub fn parse_grasp(value: &Value) -> Result<Grasp, GraspJsonError> {
             Some(t) => Some(vec3(t, &format!("contact {i} tangent"))?),
             None => None,
         };
-        parsed.push(Contact::try_new(position, normal, tangent).map_err(|e| e.at_contact(i))?);
+        let mut contact =
+            Contact::try_new(position, normal, tangent).map_err(|e| e.at_contact(i))?;
+        if let Some(t) = c.get("torsion") {
+            let torsion = t.as_f64().ok_or_else(|| GraspJsonError::NotANumber {
+                field: format!("contact {i} torsion"),
+                value: t.to_string(),
+            })?;
+            contact = contact.with_torsion(torsion).map_err(|e| e.at_contact(i))?;
+        }
+        parsed.push(contact);
     }
     let friction = object
         .get("friction")

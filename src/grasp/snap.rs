@@ -19,17 +19,26 @@
 //! grow like (ties)^r.
 
 use super::Grasp;
-use crate::geometry::vector::sub;
+use crate::geometry::vector::{add, scale as scaled_by, sub};
+
+/// a − b for wrenches.
+fn sub6(a: [f64; 6], b: [f64; 6]) -> [f64; 6] {
+    std::array::from_fn(|c| a[c] - b[c])
+}
 use std::f64::consts::PI;
 
 /// Bits kept by the snapping (see the module docs for why 24).
 const BITS: i32 = 24;
 
-/// The snapped generators of every distinct contact: `[u, v, s]` per contact, and the snapped
-/// (cos, sin) of every edge angle. "Contact" below means a distinct one (see the module docs).
+/// The snapped generators of every pyramid: `[u, v, s]` per pyramid, and the snapped (cos, sin)
+/// of every edge angle. A hard contact is one pyramid; a soft contact (torsion γ) two, with
+/// u ± [0; γ n / ρ] and the same v, s: each exactly planar. "Contact" below means a distinct one
+/// (see the module docs); for a grasp of hard contacts, pyramid i is contact i.
 #[derive(Clone, Debug, Default)]
 pub(in crate::grasp) struct SnappedCones {
     pub(in crate::grasp) generators: Vec<[[f64; 6]; 3]>,
+    /// Per contact, its first pyramid; one more entry, the pyramid count, closes the last.
+    pyramid_start: Vec<usize>,
     pub(in crate::grasp) angles: Vec<(f64, f64)>,
     /// The caller's wrenches, as [`Grasp::wrenches`] computes them (contact-major, each distinct
     /// contact once): the points every reported value is certified on.
@@ -55,15 +64,24 @@ impl SnappedCones {
         let k = grasp.friction.cone_edges();
         self.merge_repeats(grasp);
         self.generators.clear();
+        self.pyramid_start.clear();
         for contact in self.first.iter().map(|&i| &grasp.contacts[i]) {
+            self.pyramid_start.push(self.generators.len());
             let r = sub(contact.position(), grasp.torque_reference);
             let scaled = |v: [f64; 3]| v.map(|x| x * mu);
-            self.generators.push([
-                grasp.wrench(r, contact.normal()),
-                grasp.wrench(r, scaled(contact.tangent())),
-                grasp.wrench(r, scaled(contact.bitangent())),
-            ]);
+            let u = grasp.wrench(r, contact.normal());
+            let v = grasp.wrench(r, scaled(contact.tangent()));
+            let s = grasp.wrench(r, scaled(contact.bitangent()));
+            if contact.is_soft() {
+                let twist = grasp
+                    .wrench_with_torque([0.0; 3], scaled_by(contact.normal(), contact.torsion()));
+                self.generators.push([add(u, twist), v, s]);
+                self.generators.push([sub6(u, twist), v, s]);
+            } else {
+                self.generators.push([u, v, s]);
+            }
         }
+        self.pyramid_start.push(self.generators.len());
         let mut grid = [1.0f64; 6];
         for (c, g) in grid.iter_mut().enumerate() {
             let largest = self
@@ -91,8 +109,9 @@ impl SnappedCones {
             (snap(cos, unit), snap(sin, unit))
         }));
         self.raw.clear();
-        self.raw.resize(self.first.len() * k, [0.0; 6]);
-        for (&i, out) in self.first.iter().zip(self.raw.chunks_exact_mut(k)) {
+        self.raw.resize(self.generators.len() * k, [0.0; 6]);
+        for (c, &i) in self.first.iter().enumerate() {
+            let out = &mut self.raw[self.pyramid_start[c] * k..self.pyramid_start[c + 1] * k];
             grasp.contact_wrenches(i, out);
         }
         self.delta.clear();
@@ -154,9 +173,15 @@ impl SnappedCones {
         }
     }
 
-    /// The number of distinct contacts.
+    /// The number of pyramids: the distinct contacts, a soft one counting twice. (The Q∞ sum
+    /// takes grasps of hard contacts only, where the two are the same.)
     pub(in crate::grasp) fn contacts(&self) -> usize {
         self.generators.len()
+    }
+
+    /// The pyramids of distinct contact `c`.
+    fn pyramids_of(&self, c: usize) -> std::ops::Range<usize> {
+        self.pyramid_start[c]..self.pyramid_start[c + 1]
     }
 
     /// The number of cone edges per contact.
@@ -193,7 +218,9 @@ impl Grasp {
         cones.fill(self);
         out.clear();
         for &d in &cones.representative {
-            out.extend((0..cones.edges()).map(|j| cones.wrench(d as usize, j)));
+            for p in cones.pyramids_of(d as usize) {
+                out.extend((0..cones.edges()).map(|j| cones.wrench(p, j)));
+            }
         }
     }
 }

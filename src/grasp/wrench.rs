@@ -1,7 +1,7 @@
 //! Contact wrenches: the point sets behind Q1 (union) and Q∞ (Minkowski sum).
 
 use super::Grasp;
-use crate::geometry::vector::{cross, sub};
+use crate::geometry::vector::{add, cross, scale, sub};
 
 impl Grasp {
     /// The k edge forces f_ij of contact `i`'s friction pyramid, j = 0, 1, …, k − 1:
@@ -14,16 +14,28 @@ impl Grasp {
         self.friction.edges(&self.contacts[i])
     }
 
-    /// The number of wrenches in the union, m·k (saturating at `usize::MAX`, which no real grasp
-    /// reaches).
+    /// The number of wrenches in the union: k per hard contact, 2k per soft one (saturating at
+    /// `usize::MAX`, which no real grasp reaches).
     pub fn wrench_count(&self) -> usize {
-        self.contacts
-            .len()
-            .saturating_mul(self.friction.cone_edges())
+        (0..self.contacts.len()).fold(0usize, |n, i| {
+            n.saturating_add(self.contact_wrench_count(i))
+        })
+    }
+
+    /// The number of wrenches of contact `i`: k, or 2k for a soft contact.
+    ///
+    /// # Panics
+    /// When `i ≥ m`.
+    pub fn contact_wrench_count(&self, i: usize) -> usize {
+        let k = self.friction.cone_edges();
+        if self.contacts[i].is_soft() { 2 * k } else { k }
     }
 
     /// The union of all contact wrenches w_ij = [f_ij ; (p_i − c) × f_ij / ρ] — the Q1 point set —
-    /// in contact-major order: index i·k + j holds edge j of contact i.
+    /// in contact-major order: for hard contacts, index i·k + j holds edge j of contact i. A soft
+    /// contact (torsion γ, [`Contact::with_torsion`](super::Contact::with_torsion)) contributes
+    /// 2k wrenches, [f_ij ; ((p_i − c) × f_ij + γ n_i) / ρ] for j = 0 … k − 1, then the same with
+    /// −γ n_i.
     ///
     /// Allocates the result; in a loop over many grasps use [`Grasp::wrenches_into`] (or
     /// [`Grasp::contact_wrenches`]) with a reused buffer instead.
@@ -40,29 +52,42 @@ impl Grasp {
         out.clear();
         out.reserve(self.wrench_count());
         for i in 0..self.contacts.len() {
-            let r = self.lever_arm(i);
-            out.extend(self.cone_edges(i).map(|f| self.wrench(r, f)));
+            let start = out.len();
+            out.resize(start + self.contact_wrench_count(i), [0.0; 6]);
+            self.contact_wrenches(i, &mut out[start..]);
         }
     }
 
-    /// The k wrenches w_i0 … w_i(k−1) of contact `i`, written into `out` (`out[j]` = w_ij).
-    /// Allocates nothing: the building block for the Q∞ Minkowski sum, whose support point is the
-    /// sum of each contact's own.
+    /// The wrenches of contact `i` ([`contact_wrench_count`](Self::contact_wrench_count) of
+    /// them, in [`Grasp::wrenches`]' order), written into `out`. Allocates nothing: the building
+    /// block for the Q∞ Minkowski sum, whose support point is the sum of each contact's own.
     ///
     /// # Panics
     ///
-    /// When `i ≥ m` or `out.len() != k`.
+    /// When `i ≥ m` or `out.len()` is not the contact's wrench count.
     pub fn contact_wrenches(&self, i: usize, out: &mut [[f64; 6]]) {
-        let k = self.friction.cone_edges();
+        let count = self.contact_wrench_count(i);
         assert_eq!(
             out.len(),
-            k,
-            "contact_wrenches: the buffer holds {} wrenches, the friction model has {k} cone edges",
+            count,
+            "contact_wrenches: the buffer holds {} wrenches, contact {i} has {count}",
             out.len()
         );
         let r = self.lever_arm(i);
-        for (slot, f) in out.iter_mut().zip(self.cone_edges(i)) {
-            *slot = self.wrench(r, f);
+        let contact = &self.contacts[i];
+        if contact.is_soft() {
+            let k = self.friction.cone_edges();
+            let twist = scale(contact.normal(), contact.torsion());
+            let (plus, minus) = out.split_at_mut(k);
+            for ((a, b), f) in plus.iter_mut().zip(minus).zip(self.cone_edges(i)) {
+                let tau = cross(r, f);
+                *a = self.wrench_with_torque(f, add(tau, twist));
+                *b = self.wrench_with_torque(f, sub(tau, twist));
+            }
+        } else {
+            for (slot, f) in out.iter_mut().zip(self.cone_edges(i)) {
+                *slot = self.wrench(r, f);
+            }
         }
     }
 
@@ -80,7 +105,11 @@ impl Grasp {
 
     /// w = [f ; r × f / ρ] with r = p − c.
     pub(in crate::grasp) fn wrench(&self, r: [f64; 3], f: [f64; 3]) -> [f64; 6] {
-        let tau = cross(r, f);
+        self.wrench_with_torque(f, cross(r, f))
+    }
+
+    /// w = [f ; τ / ρ].
+    pub(in crate::grasp) fn wrench_with_torque(&self, f: [f64; 3], tau: [f64; 3]) -> [f64; 6] {
         let rho = self.torque_scale;
         [f[0], f[1], f[2], tau[0] / rho, tau[1] / rho, tau[2] / rho]
     }

@@ -22,9 +22,12 @@ use std::path::PathBuf;
 pub const LONG_ABOUT: &str = "\
 Evaluates grasp quality. Input (a file, or standard input for '-' or no path): one grasp, a JSON
 array of grasps, or JSON Lines. A grasp is
-  {\"contacts\":[{\"position\":[x,y,z],\"normal\":[x,y,z],\"tangent\":[x,y,z]?}, ...],
+  {\"contacts\":[{\"position\":[x,y,z],\"normal\":[x,y,z],\"tangent\":[x,y,z]?,\"torsion\":g?}, ...],
    \"friction\":mu, \"cone_edges\":k, \"torque_reference\":[x,y,z]?, \"torque_scale\":rho?}
-with inward unit normals (the direction the finger pushes). Output: one JSON line per grasp, in
+with inward unit normals (the direction the finger pushes). A contact with \"torsion\" g > 0 is a
+soft finger (g: torsional friction times patch radius, a length): each cone edge f then gives the
+two wrenches [f; ((p - c) x f +/- g n)/rho]; Q1, Q_OWS and the other metrics take them, Q-infinity
+does not yet. Output: one JSON line per grasp, in
 input order: index, force_closure, quality, stats {points_processed, facets_created, elapsed_us}.
 A malformed grasp gets {\"index\":i,\"error\":\"...\"} and the others are still evaluated.
 

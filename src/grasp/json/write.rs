@@ -25,6 +25,9 @@ pub fn write_contact(contact: &Contact) -> Value {
     if contact.tangent_given() {
         value["tangent"] = json!(contact.tangent());
     }
+    if contact.is_soft() {
+        value["torsion"] = json!(contact.torsion());
+    }
     value
 }
 

@@ -43,6 +43,9 @@ pub enum QualityError {
         /// The space's.
         space: ([f64; 3], f64),
     },
+    /// Q∞ of a grasp with a soft contact: the Minkowski sum of a soft contact's two pyramids is
+    /// not implemented (Q1 and Q_OWS take soft contacts).
+    SoftContactsInQInf,
     /// Q_OWS by the ellipsoid method: no enclosing ellipsoid (the disturbances span fewer than six
     /// dimensions).
     Ellipsoid(String),
@@ -51,6 +54,11 @@ pub enum QualityError {
 impl fmt::Display for QualityError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            QualityError::SoftContactsInQInf => write!(
+                f,
+                "Q∞ of soft contacts (a contact with torsion) is not implemented; Q1 and Q_OWS \
+                 take them"
+            ),
             QualityError::NonFiniteWrench => write!(
                 f,
                 "a wrench is not finite: the friction coefficient, a lever arm or 1/torque_scale \

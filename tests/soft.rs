@@ -1,0 +1,200 @@
+//! Soft-finger contacts: torsion γ adds ±γ n to every edge's torque. Checked against the explicit
+//! soft wrench set (Qhull with the feature, our full hull always), the hard model as γ → 0 (the
+//! value moves by at most γ/ρ), monotonicity, two soft contacts in force closure, and the JSON
+//! field.
+
+use pqhull::bench::workloads::{BAR_FRICTION, bar_grasps};
+use pqhull::grasp::json::{parse_grasp, write_grasp};
+use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
+use pqhull::grasp::quality::{Evaluator, Method, Metric, QualityError, q1, q1_of_wrenches};
+use pqhull::grasp::{Contact, FrictionModel, Grasp, GraspError};
+
+fn soft(grasp: &Grasp, torsion: f64) -> Grasp {
+    let contacts = grasp
+        .contacts()
+        .iter()
+        .map(|c| c.with_torsion(torsion).unwrap())
+        .collect();
+    Grasp::builder(contacts, grasp.friction())
+        .torque_reference(grasp.torque_reference())
+        .torque_scale(grasp.torque_scale())
+        .build()
+        .unwrap()
+}
+
+fn grasps() -> Vec<Grasp> {
+    bar_grasps(21, 80, 4, FrictionModel::try_new(BAR_FRICTION, 6).unwrap())
+}
+
+#[test]
+fn soft_wrenches_are_the_documented_formula() {
+    let g = soft(&grasps()[0], 0.05);
+    let w = g.wrenches();
+    let k = 6;
+    assert_eq!(w.len(), 4 * 2 * k);
+    let hard = grasps()[0].wrenches();
+    let rho = g.torque_scale();
+    for (i, c) in g.contacts().iter().enumerate() {
+        for j in 0..k {
+            let (plus, minus, h) = (w[i * 2 * k + j], w[i * 2 * k + k + j], hard[i * k + j]);
+            for a in 0..3 {
+                assert_eq!(plus[a], h[a]);
+                assert_eq!(minus[a], h[a]);
+                let twist = 0.05 * c.normal()[a] / rho;
+                assert!((plus[3 + a] - h[3 + a] - twist).abs() < 1e-15);
+                assert!((minus[3 + a] - h[3 + a] + twist).abs() < 1e-15);
+            }
+        }
+    }
+}
+
+#[test]
+fn soft_q1_equals_the_hull_of_the_explicit_soft_wrenches() {
+    let mut closure = 0;
+    for (i, hard) in grasps().iter().enumerate() {
+        let g = soft(hard, 0.02);
+        let ours = q1(&g).unwrap();
+        let reference = q1_of_wrenches(&g.wrenches(), Method::Full).unwrap();
+        assert_eq!(ours.force_closure, reference.force_closure, "grasp {i}");
+        let tol = 1e-12 * reference.value.abs() + 1e-14 * reference.scale;
+        assert!(
+            (ours.value - reference.value).abs() <= 2.0 * tol,
+            "grasp {i}: {} vs {}",
+            ours.value,
+            reference.value
+        );
+        closure += usize::from(ours.force_closure);
+        #[cfg(feature = "qhull")]
+        if ours.force_closure {
+            let qhull = pqhull::qhull_baseline::qhull_origin_distance(&g.wrenches()).unwrap();
+            assert!(
+                (ours.value - qhull).abs() <= 1e-9 * qhull,
+                "grasp {i}: {} vs Qhull {qhull}",
+                ours.value
+            );
+        }
+    }
+    assert!(closure > 10, "only {closure} force-closure soft grasps");
+}
+
+#[test]
+fn the_soft_value_tends_to_the_hard_one_and_never_falls_below_it() {
+    for (i, hard) in grasps().iter().enumerate() {
+        let h = q1(hard).unwrap();
+        assert_eq!(
+            q1(&soft(hard, 0.0)).unwrap().value,
+            h.value,
+            "grasp {i}: γ = 0 is hard"
+        );
+        for gamma in [1e-2, 1e-4, 1e-7] {
+            let s = q1(&soft(hard, gamma)).unwrap();
+            // Each hard wrench is the midpoint of its two soft ones: the soft hull contains the
+            // hard one. And each soft wrench is within γ/ρ of a hard one.
+            let slack = 1e-12 * h.value.abs() + 1e-14 * h.scale;
+            assert!(
+                s.value >= h.value - slack,
+                "grasp {i}, γ = {gamma}: {} < {}",
+                s.value,
+                h.value
+            );
+            let bound = gamma / hard.torque_scale() * (1.0 + 1e-9) + 2.0 * slack;
+            assert!(
+                s.value - h.value <= bound,
+                "grasp {i}, γ = {gamma}: moved {}",
+                s.value - h.value
+            );
+        }
+    }
+}
+
+#[test]
+fn two_soft_fingers_can_hold_what_two_hard_ones_cannot() {
+    let friction = FrictionModel::try_new(0.5, 8).unwrap();
+    let pinch = |torsion: f64| {
+        let contacts = vec![
+            Contact::try_new([-0.5, 0.0, 0.0], [1.0, 0.0, 0.0], None)
+                .unwrap()
+                .with_torsion(torsion)
+                .unwrap(),
+            Contact::try_new([0.5, 0.0, 0.0], [-1.0, 0.0, 0.0], None)
+                .unwrap()
+                .with_torsion(torsion)
+                .unwrap(),
+        ];
+        Grasp::builder(contacts, friction).build().unwrap()
+    };
+    let hard = q1(&pinch(0.0)).unwrap();
+    assert!(
+        !hard.force_closure,
+        "two hard fingers cannot resist torsion about their axis"
+    );
+    let soft = q1(&pinch(0.05)).unwrap();
+    assert!(soft.force_closure && soft.value > 0.0, "{soft:?}");
+}
+
+#[test]
+fn soft_ows_partial_equals_brute_force_and_qinf_is_refused() {
+    let space = ObjectWrenchSpace::from_disturbances(
+        (0..40)
+            .map(|i| {
+                let a = i as f64 * 0.7;
+                [
+                    a.sin(),
+                    a.cos(),
+                    (2.0 * a).sin(),
+                    0.3 * a.cos(),
+                    0.2 * (3.0 * a).sin(),
+                    0.1,
+                ]
+            })
+            .collect(),
+    )
+    .unwrap();
+    let mut compared = 0;
+    for hard in grasps().iter().take(40) {
+        let g = soft(hard, 0.03);
+        let p = OwsEvaluator::new(Method::Partial)
+            .evaluate(&g, &space)
+            .unwrap();
+        let b = OwsEvaluator::new(Method::Full)
+            .evaluate(&g, &space)
+            .unwrap();
+        assert_eq!(p.force_closure, b.force_closure);
+        if let (Some(x), Some(y)) = (p.value, b.value) {
+            assert!((x - y).abs() <= 1e-9 * y, "{x} vs {y}");
+            compared += 1;
+        }
+    }
+    assert!(compared > 5);
+    let g = soft(&grasps()[0], 0.03);
+    let err = Evaluator::new(
+        Metric::QInf {
+            with_zero_wrench: false,
+        },
+        Method::Partial,
+    )
+    .evaluate(&g)
+    .unwrap_err();
+    assert_eq!(err, QualityError::SoftContactsInQInf);
+}
+
+#[test]
+fn torsion_in_json_reads_back_and_bad_values_name_the_contact() {
+    let g = soft(&grasps()[1], 0.025);
+    let back = parse_grasp(&write_grasp(&g)).unwrap();
+    assert_eq!(back.contacts()[2].torsion(), 0.025);
+    assert_eq!(q1(&back).unwrap().value, q1(&g).unwrap().value);
+    let mut value = write_grasp(&g);
+    value["contacts"][3]["torsion"] = serde_json::json!(-1.0);
+    let err = parse_grasp(&value).unwrap_err().to_string();
+    assert!(
+        err.contains("contact 3") && err.contains("torsion"),
+        "{err}"
+    );
+    let hard = Contact::try_new([0.0; 3], [0.0, 0.0, 1.0], None).unwrap();
+    assert!(matches!(
+        hard.with_torsion(f64::NAN),
+        Err(GraspError::InvalidTorsion { .. })
+    ));
+    assert!(!hard.is_soft() && hard.with_torsion(0.0).map(|c| c.is_soft()) == Ok(false));
+}
