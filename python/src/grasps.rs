@@ -2,7 +2,7 @@
 
 use crate::errors;
 use crate::ows::ObjectWrenchSpace;
-use numpy::ndarray::ArrayView2;
+use numpy::ndarray::{ArrayView1, ArrayView2};
 use numpy::{
     PyArray1, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArrayMethods,
     ToPyArray,
@@ -64,6 +64,7 @@ fn grasp(
     positions: ArrayView2<'_, f64>,
     normals: ArrayView2<'_, f64>,
     tangents: Option<ArrayView2<'_, f64>>,
+    torsion: Option<ArrayView1<'_, f64>>,
     friction: f64,
     frame: &Frame,
 ) -> Result<Grasp, String> {
@@ -72,8 +73,14 @@ fn grasp(
     let contacts = (0..positions.nrows())
         .map(|i| {
             let tangent = tangents.as_ref().map(|t| row(t, i));
-            Contact::try_new(row(&positions, i), row(&normals, i), tangent)
-                .map_err(|e| format!("contact {i}: {e}"))
+            let contact = Contact::try_new(row(&positions, i), row(&normals, i), tangent)
+                .map_err(|e| format!("contact {i}: {e}"))?;
+            match &torsion {
+                Some(t) => contact
+                    .with_torsion(t[i])
+                    .map_err(|e| format!("contact {i}: {e}")),
+                None => Ok(contact),
+            }
         })
         .collect::<Result<Vec<_>, _>>()?;
     let mut builder = Grasp::builder(contacts, model);
@@ -246,10 +253,12 @@ fn frame(
 }
 
 /// One grasp from the single-grasp functions' arguments, and its frame.
+#[allow(clippy::too_many_arguments)] // the Python signature's grasp fields
 pub(crate) fn one_grasp(
     positions: PyReadonlyArray2<'_, f64>,
     normals: PyReadonlyArray2<'_, f64>,
     tangents: Option<PyReadonlyArray2<'_, f64>>,
+    torsion: Option<PyReadonlyArray1<'_, f64>>,
     friction: f64,
     cone_edges: usize,
     torque_reference: Option<PyReadonlyArray1<'_, f64>>,
@@ -261,11 +270,20 @@ pub(crate) fn one_grasp(
     if let Some(t) = &tangents {
         check_contacts("tangents", t.shape(), Some(m))?;
     }
+    if let Some(t) = &torsion
+        && t.shape() != [m]
+    {
+        return Err(errors::input(format!(
+            "torsion must have shape ({m},), one per contact, not {:?}",
+            t.shape()
+        )));
+    }
     let frame = frame(cone_edges, torque_reference, torque_scale)?;
     let g = grasp(
         positions.as_array(),
         normals.as_array(),
         tangents.as_ref().map(|t| t.as_array()),
+        torsion.as_ref().map(|t| t.as_array()),
         friction,
         &frame,
     )
@@ -297,6 +315,7 @@ fn single(
     positions: PyReadonlyArray2<'_, f64>,
     normals: PyReadonlyArray2<'_, f64>,
     tangents: Option<PyReadonlyArray2<'_, f64>>,
+    torsion: Option<PyReadonlyArray1<'_, f64>>,
     friction: f64,
     cone_edges: usize,
     torque_reference: Option<PyReadonlyArray1<'_, f64>>,
@@ -310,6 +329,7 @@ fn single(
         positions,
         normals,
         tangents,
+        torsion,
         friction,
         cone_edges,
         torque_reference,
@@ -341,7 +361,7 @@ fn single(
 /// q1(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
 /// torque_scale=None, method="partial"): Ferrari–Canny Q1 of one grasp, exact on its wrenches.
 #[pyfunction]
-#[pyo3(signature = (positions, normals, tangents=None, *, friction, cone_edges,
+#[pyo3(signature = (positions, normals, tangents=None, *, torsion=None, friction, cone_edges,
                     torque_reference=None, torque_scale=None, method="partial"))]
 #[allow(clippy::too_many_arguments)] // the Python signature
 pub fn q1(
@@ -349,6 +369,7 @@ pub fn q1(
     positions: PyReadonlyArray2<'_, f64>,
     normals: PyReadonlyArray2<'_, f64>,
     tangents: Option<PyReadonlyArray2<'_, f64>>,
+    torsion: Option<PyReadonlyArray1<'_, f64>>,
     friction: f64,
     cone_edges: usize,
     torque_reference: Option<PyReadonlyArray1<'_, f64>>,
@@ -360,6 +381,7 @@ pub fn q1(
         positions,
         normals,
         tangents,
+        torsion,
         friction,
         cone_edges,
         torque_reference,
@@ -373,7 +395,7 @@ pub fn q1(
 /// qinf(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
 /// torque_scale=None, with_zero_wrench=False, method="partial"): Q∞ of one grasp.
 #[pyfunction]
-#[pyo3(signature = (positions, normals, tangents=None, *, friction, cone_edges,
+#[pyo3(signature = (positions, normals, tangents=None, *, torsion=None, friction, cone_edges,
                     torque_reference=None, torque_scale=None, with_zero_wrench=false,
                     method="partial"))]
 #[allow(clippy::too_many_arguments)] // the Python signature
@@ -382,6 +404,7 @@ pub fn qinf(
     positions: PyReadonlyArray2<'_, f64>,
     normals: PyReadonlyArray2<'_, f64>,
     tangents: Option<PyReadonlyArray2<'_, f64>>,
+    torsion: Option<PyReadonlyArray1<'_, f64>>,
     friction: f64,
     cone_edges: usize,
     torque_reference: Option<PyReadonlyArray1<'_, f64>>,
@@ -394,6 +417,7 @@ pub fn qinf(
         positions,
         normals,
         tangents,
+        torsion,
         friction,
         cone_edges,
         torque_reference,
@@ -407,7 +431,7 @@ pub fn qinf(
 /// ows(positions, normals, tangents=None, *, space, friction, cone_edges, method="partial"):
 /// Q_OWS of one grasp against an ObjectWrenchSpace (None when not force closure).
 #[pyfunction]
-#[pyo3(signature = (positions, normals, tangents=None, *, space, friction, cone_edges,
+#[pyo3(signature = (positions, normals, tangents=None, *, torsion=None, space, friction, cone_edges,
                     torque_reference=None, torque_scale=None, method="partial"))]
 #[allow(clippy::too_many_arguments)] // the Python signature
 pub fn ows(
@@ -415,6 +439,7 @@ pub fn ows(
     positions: PyReadonlyArray2<'_, f64>,
     normals: PyReadonlyArray2<'_, f64>,
     tangents: Option<PyReadonlyArray2<'_, f64>>,
+    torsion: Option<PyReadonlyArray1<'_, f64>>,
     space: &ObjectWrenchSpace,
     friction: f64,
     cone_edges: usize,
@@ -427,6 +452,7 @@ pub fn ows(
         positions,
         normals,
         tangents,
+        torsion,
         friction,
         cone_edges,
         torque_reference,
@@ -442,7 +468,7 @@ pub fn ows(
 /// the metric of N grasps of m contacts ((N, m, 3) arrays; `friction` one value or one per
 /// grasp) on all cores (or `threads`), the GIL released. A bad row gives NaN and an error entry.
 #[pyfunction]
-#[pyo3(signature = (positions, normals, tangents=None, *, friction, cone_edges,
+#[pyo3(signature = (positions, normals, tangents=None, *, torsion=None, friction, cone_edges,
                     torque_reference=None, torque_scale=None, metric="q1", method="partial",
                     with_zero_wrench=false, space=None, threads=None, wrench=None))]
 #[allow(clippy::too_many_arguments)] // the Python signature
@@ -451,6 +477,7 @@ pub fn evaluate(
     positions: PyReadonlyArray3<'_, f64>,
     normals: PyReadonlyArray3<'_, f64>,
     tangents: Option<PyReadonlyArray3<'_, f64>>,
+    torsion: Option<PyReadonlyArray2<'_, f64>>,
     friction: PyReadonlyArray1<'_, f64>,
     cone_edges: usize,
     torque_reference: Option<PyReadonlyArray1<'_, f64>>,
@@ -482,6 +509,15 @@ pub fn evaluate(
             )));
         }
     }
+    if let Some(t) = &torsion
+        && t.shape() != [n, shape[1]]
+    {
+        return Err(errors::input(format!(
+            "torsion must have shape (N, m) = ({n}, {}), one per contact, not {:?}",
+            shape[1],
+            t.shape()
+        )));
+    }
     let friction = friction
         .as_slice()
         .map_err(|e| errors::input(e.to_string()))?;
@@ -512,6 +548,7 @@ pub fn evaluate(
     }
     let (p, nrm) = (positions.as_array(), normals.as_array());
     let t = tangents.as_ref().map(|t| t.as_array());
+    let soft = torsion.as_ref().map(|t| t.as_array());
     // Build every grasp (a bad row keeps its message), then evaluate the good ones.
     let built: Vec<Result<Grasp, String>> = (0..n)
         .map(|i| {
@@ -520,6 +557,8 @@ pub fn evaluate(
                 p.index_axis(numpy::ndarray::Axis(0), i),
                 nrm.index_axis(numpy::ndarray::Axis(0), i),
                 t.as_ref().map(|t| t.index_axis(numpy::ndarray::Axis(0), i)),
+                soft.as_ref()
+                    .map(|s| s.index_axis(numpy::ndarray::Axis(0), i)),
                 mu,
                 &frame,
             )

@@ -21,7 +21,7 @@ fn error(e: MetricError) -> PyErr {
 /// lies between them (the pyramids inscribed in and circumscribed about the cones, each widened
 /// by its evaluation's accuracy).
 #[pyfunction]
-#[pyo3(signature = (positions, normals, tangents=None, *, friction, cone_edges,
+#[pyo3(signature = (positions, normals, tangents=None, *, torsion=None, friction, cone_edges,
                     torque_reference=None, torque_scale=None, method="partial"))]
 #[allow(clippy::too_many_arguments)] // the Python signature
 pub fn cone_bracket(
@@ -29,6 +29,7 @@ pub fn cone_bracket(
     positions: PyReadonlyArray2<'_, f64>,
     normals: PyReadonlyArray2<'_, f64>,
     tangents: Option<PyReadonlyArray2<'_, f64>>,
+    torsion: Option<PyReadonlyArray1<'_, f64>>,
     friction: f64,
     cone_edges: usize,
     torque_reference: Option<PyReadonlyArray1<'_, f64>>,
@@ -40,6 +41,7 @@ pub fn cone_bracket(
         positions,
         normals,
         tangents,
+        torsion,
         friction,
         cone_edges,
         torque_reference,
@@ -56,7 +58,7 @@ pub fn cone_bracket(
 /// -t*wrench in the grasp wrench space (Q_OWS with that one disturbance; value None when the grasp
 /// is not force closure). `wrench` is 6 numbers in the grasp's torque units.
 #[pyfunction]
-#[pyo3(signature = (positions, normals, tangents=None, *, wrench, friction, cone_edges,
+#[pyo3(signature = (positions, normals, tangents=None, *, torsion=None, wrench, friction, cone_edges,
                     torque_reference=None, torque_scale=None, method="partial"))]
 #[allow(clippy::too_many_arguments)] // the Python signature
 pub fn resist(
@@ -64,6 +66,7 @@ pub fn resist(
     positions: PyReadonlyArray2<'_, f64>,
     normals: PyReadonlyArray2<'_, f64>,
     tangents: Option<PyReadonlyArray2<'_, f64>>,
+    torsion: Option<PyReadonlyArray1<'_, f64>>,
     wrench: PyReadonlyArray1<'_, f64>,
     friction: f64,
     cone_edges: usize,
@@ -82,6 +85,7 @@ pub fn resist(
         positions,
         normals,
         tangents,
+        torsion,
         friction,
         cone_edges,
         torque_reference,
@@ -96,7 +100,7 @@ pub fn resist(
 /// gws_volume(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
 /// torque_scale=None) -> float: the volume of the grasp wrench space (its full hull).
 #[pyfunction]
-#[pyo3(signature = (positions, normals, tangents=None, *, friction, cone_edges,
+#[pyo3(signature = (positions, normals, tangents=None, *, torsion=None, friction, cone_edges,
                     torque_reference=None, torque_scale=None))]
 #[allow(clippy::too_many_arguments)] // the Python signature
 pub fn gws_volume(
@@ -104,6 +108,7 @@ pub fn gws_volume(
     positions: PyReadonlyArray2<'_, f64>,
     normals: PyReadonlyArray2<'_, f64>,
     tangents: Option<PyReadonlyArray2<'_, f64>>,
+    torsion: Option<PyReadonlyArray1<'_, f64>>,
     friction: f64,
     cone_edges: usize,
     torque_reference: Option<PyReadonlyArray1<'_, f64>>,
@@ -113,6 +118,7 @@ pub fn gws_volume(
         positions,
         normals,
         tangents,
+        torsion,
         friction,
         cone_edges,
         torque_reference,
@@ -126,7 +132,7 @@ pub fn gws_volume(
 /// torque_reference=None, torque_scale=None) -> (singular_values, sigma_min, isotropy): the
 /// grasp matrix's six singular values (largest first), the smallest, and their ratio.
 #[pyfunction]
-#[pyo3(signature = (positions, normals, tangents=None, *, friction, cone_edges,
+#[pyo3(signature = (positions, normals, tangents=None, *, torsion=None, friction, cone_edges,
                     torque_reference=None, torque_scale=None))]
 #[allow(clippy::too_many_arguments)] // the Python signature
 pub fn grasp_matrix_metrics<'py>(
@@ -134,6 +140,7 @@ pub fn grasp_matrix_metrics<'py>(
     positions: PyReadonlyArray2<'_, f64>,
     normals: PyReadonlyArray2<'_, f64>,
     tangents: Option<PyReadonlyArray2<'_, f64>>,
+    torsion: Option<PyReadonlyArray1<'_, f64>>,
     friction: f64,
     cone_edges: usize,
     torque_reference: Option<PyReadonlyArray1<'_, f64>>,
@@ -143,6 +150,7 @@ pub fn grasp_matrix_metrics<'py>(
         positions,
         normals,
         tangents,
+        torsion,
         friction,
         cone_edges,
         torque_reference,

@@ -115,3 +115,48 @@ def test_the_batch_equals_single_calls_for_every_new_metric():
         pqhull.evaluate(p, n, t, friction=MU, cone_edges=K, metric="q1", wrench=w)
     with pytest.raises(pqhull.InputError, match="takes no method"):
         pqhull.evaluate(p, n, t, friction=MU, cone_edges=K, metric="volume", method="full")
+
+
+def soft_wrenches(p, n, t, gamma, mu=MU, k=K):
+    """The documented soft wrench set: each edge f_j twice, with torque p x f_j + gamma n and
+    p x f_j - gamma n (torque reference the origin, scale 1)."""
+    out = []
+    for pi, ni, ti, g in zip(p, n, t, gamma):
+        bi = np.cross(ni, ti)
+        edges = [ni + mu * (np.cos(2 * np.pi * j / k) * ti + np.sin(2 * np.pi * j / k) * bi)
+                 for j in range(k)]
+        for sign in (1.0, -1.0):
+            out.extend(np.concatenate([f, np.cross(pi, f) + sign * g * ni]) for f in edges)
+    return np.array(out)
+
+
+def test_soft_contacts_equal_scipy_on_the_soft_wrenches_built_here():
+    gamma = np.array([0.02, 0.05, 0.0, 0.03])
+    compared = 0
+    for seed in range(25):
+        p, n, t = grasp(seed)
+        q = pqhull.q1(p, n, t, torsion=gamma, friction=MU, cone_edges=K)
+        hull = ConvexHull(soft_wrenches(p, n, t, gamma))
+        if q.force_closure:
+            assert q.value == pytest.approx(-hull.equations[:, 6].max(), rel=1e-9), seed
+            assert pqhull.gws_volume(p, n, t, torsion=gamma, friction=MU, cone_edges=K) == \
+                pytest.approx(hull.volume, rel=1e-9)
+            compared += 1
+    assert compared > 5
+    # The batch takes (N, m) torsion (or one number) and equals the single calls.
+    ps, ns, ts = (np.stack(a) for a in zip(*(grasp(s) for s in range(6))))
+    batch = pqhull.evaluate(ps, ns, ts, torsion=0.04, friction=MU, cone_edges=K)
+    for i in range(6):
+        single = pqhull.q1(ps[i], ns[i], ts[i], torsion=[0.04] * 4, friction=MU, cone_edges=K)
+        assert batch.quality[i] == single.value
+    # The soft grasp matrix has a torsion column per soft contact.
+    s, _, _ = pqhull.grasp_matrix_metrics(p, n, t, torsion=gamma, friction=MU, cone_edges=K)
+    g = np.hstack([np.vstack([np.eye(3), np.cross(pi, np.eye(3))]) for pi in p] +
+                  [np.concatenate([np.zeros(3), ni])[:, None] for ni, gi in zip(n, gamma) if gi > 0])
+    np.testing.assert_allclose(s, np.linalg.svd(g, compute_uv=False), rtol=1e-12)
+    with pytest.raises(pqhull.QualityError, match="soft"):
+        pqhull.qinf(p, n, t, torsion=gamma, friction=MU, cone_edges=K)
+    with pytest.raises(pqhull.GraspError, match="contact 1.*torsion"):
+        pqhull.q1(p, n, t, torsion=[0.0, -1.0, 0.0, 0.0], friction=MU, cone_edges=K)
+    with pytest.raises(pqhull.InputError, match="torsion"):
+        pqhull.q1(p, n, t, torsion=[0.1, 0.2], friction=MU, cone_edges=K)

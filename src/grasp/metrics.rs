@@ -200,9 +200,10 @@ pub fn gws_volume(grasp: &Grasp) -> Result<(f64, Stats), MetricError> {
     }
 }
 
-/// The grasp matrix G, 6 × 3m, as its 3m columns: contact i's force along axis a maps to the
-/// wrench `[e_a; (p_i − c) × e_a / ρ]`, in the grasp's torque frame (the same map as
-/// [`Grasp::wrenches`]). Its singular values do not depend on the frame chosen at each contact.
+/// The grasp matrix G as its columns: contact i's force along axis a maps to the wrench
+/// `[e_a; (p_i − c) × e_a / ρ]`, in the grasp's torque frame (the same map as
+/// [`Grasp::wrenches`]); a soft contact adds a fourth column, its torsional moment about the
+/// normal, `[0; n_i / ρ]`. Its singular values do not depend on the frame chosen at each contact.
 pub fn grasp_matrix(grasp: &Grasp) -> Vec<[f64; 6]> {
     let (c, rho) = (grasp.torque_reference(), grasp.torque_scale());
     let mut columns = Vec::with_capacity(3 * grasp.contact_count());
@@ -214,6 +215,10 @@ pub fn grasp_matrix(grasp: &Grasp) -> Vec<[f64; 6]> {
             e[a] = 1.0;
             let t = cross(r, e);
             columns.push([e[0], e[1], e[2], t[0] / rho, t[1] / rho, t[2] / rho]);
+        }
+        if contact.is_soft() {
+            let n = contact.normal();
+            columns.push([0.0, 0.0, 0.0, n[0] / rho, n[1] / rho, n[2] / rho]);
         }
     }
     columns

@@ -68,6 +68,18 @@ def _optional(value, ndim, name):
     return None if value is None else _array(value, ndim, name)
 
 
+def _torsion(torsion, shape):
+    """Soft contacts' torsion, one per contact: a number (every contact) or an array, broadcast to
+    `shape`; None for hard contacts."""
+    if torsion is None:
+        return None
+    try:
+        return np.ascontiguousarray(np.broadcast_to(np.asarray(torsion, dtype=np.float64), shape))
+    except ValueError:
+        raise InputError(f"torsion must be a number or have shape {shape}, "
+                         f"not {np.shape(torsion)}") from None
+
+
 def distance_to_boundary(points, query=None):
     """The signed distance from `query` (default: the origin) to the boundary of the hull of
     `points`: positive inside, negative outside, exactly signed; from a partial hull that stops
@@ -80,42 +92,45 @@ def _frame(torque_reference):
     return _optional(torque_reference, 1, "torque_reference")
 
 
-def q1(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
+def q1(positions, normals, tangents=None, *, torsion=None, friction, cone_edges, torque_reference=None,
        torque_scale=None, method="partial"):
     """Ferrari-Canny Q1 of one grasp of m contacts: (m, 3) positions and inward normals,
     optional (m, 3) tangents; exact on its wrenches. Returns a Quality (`value`,
     `force_closure`, counters)."""
     return _pqhull.q1(
         _array(positions, 2, "positions"), _array(normals, 2, "normals"),
-        _optional(tangents, 2, "tangents"), friction=float(friction), cone_edges=int(cone_edges),
+        _optional(tangents, 2, "tangents"), torsion=_torsion(torsion, np.shape(positions)[:1]),
+        friction=float(friction), cone_edges=int(cone_edges),
         torque_reference=_frame(torque_reference),
         torque_scale=None if torque_scale is None else float(torque_scale), method=method)
 
 
-def qinf(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
+def qinf(positions, normals, tangents=None, *, torsion=None, friction, cone_edges, torque_reference=None,
          torque_scale=None, with_zero_wrench=False, method="partial"):
     """Q-infinity (the Minkowski sum of the contacts' wrench sets) of one grasp; as q1."""
     return _pqhull.qinf(
         _array(positions, 2, "positions"), _array(normals, 2, "normals"),
-        _optional(tangents, 2, "tangents"), friction=float(friction), cone_edges=int(cone_edges),
+        _optional(tangents, 2, "tangents"), torsion=_torsion(torsion, np.shape(positions)[:1]),
+        friction=float(friction), cone_edges=int(cone_edges),
         torque_reference=_frame(torque_reference),
         torque_scale=None if torque_scale is None else float(torque_scale),
         with_zero_wrench=bool(with_zero_wrench), method=method)
 
 
-def ows(positions, normals, tangents=None, *, space, friction, cone_edges, torque_reference=None,
+def ows(positions, normals, tangents=None, *, torsion=None, space, friction, cone_edges, torque_reference=None,
         torque_scale=None, method="partial"):
     """Q_OWS of one grasp against `space` (an ObjectWrenchSpace): how large a disturbance of the
     space the grasp resists. `value` is None when the grasp is not force closure. With a space
     built from a mesh the grasp is evaluated in the mesh's torque frame."""
     return _pqhull.ows(
         _array(positions, 2, "positions"), _array(normals, 2, "normals"),
-        _optional(tangents, 2, "tangents"), space=space, friction=float(friction),
+        _optional(tangents, 2, "tangents"), torsion=_torsion(torsion, np.shape(positions)[:1]),
+        space=space, friction=float(friction),
         cone_edges=int(cone_edges), torque_reference=_frame(torque_reference),
         torque_scale=None if torque_scale is None else float(torque_scale), method=method)
 
 
-def evaluate(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
+def evaluate(positions, normals, tangents=None, *, torsion=None, friction, cone_edges, torque_reference=None,
              torque_scale=None, metric="q1", method="partial", with_zero_wrench=False,
              space=None, threads=None, wrench=None):
     """The metric of N grasps of m contacts: (N, m, 3) positions and normals, optional tangents;
@@ -130,7 +145,8 @@ def evaluate(positions, normals, tangents=None, *, friction, cone_edges, torque_
         raise InputError(f"friction must be a number or a 1-D array, not shape {mu.shape}")
     return _pqhull.evaluate(
         _array(positions, 3, "positions"), _array(normals, 3, "normals"),
-        _optional(tangents, 3, "tangents"), friction=np.ascontiguousarray(mu),
+        _optional(tangents, 3, "tangents"), torsion=_torsion(torsion, np.shape(positions)[:2]),
+        friction=np.ascontiguousarray(mu),
         cone_edges=int(cone_edges), torque_reference=_frame(torque_reference),
         torque_scale=None if torque_scale is None else float(torque_scale), metric=metric,
         method=method, with_zero_wrench=bool(with_zero_wrench), space=space, threads=threads,
@@ -147,40 +163,44 @@ def _frame_args(torque_reference, torque_scale):
                 torque_scale=None if torque_scale is None else float(torque_scale))
 
 
-def cone_bracket(positions, normals, tangents=None, *, friction, cone_edges,
+def cone_bracket(positions, normals, tangents=None, *, torsion=None, friction, cone_edges,
                  torque_reference=None, torque_scale=None, method="partial"):
     """(low, high): Q1 of the true circular friction cones lies between them. low is Q1 with
     the k-edge pyramids inscribed in the cones, high with the pyramids circumscribed about them
     (rim scaled by 1/cos(pi/k)), each widened by its evaluation's accuracy."""
-    return _pqhull.cone_bracket(*_one(positions, normals, tangents), friction=float(friction),
+    return _pqhull.cone_bracket(*_one(positions, normals, tangents),
+        torsion=_torsion(torsion, np.shape(positions)[:1]), friction=float(friction),
                                 cone_edges=int(cone_edges),
                                 **_frame_args(torque_reference, torque_scale), method=method)
 
 
-def resist(positions, normals, tangents=None, *, wrench, friction, cone_edges,
+def resist(positions, normals, tangents=None, *, torsion=None, wrench, friction, cone_edges,
            torque_reference=None, torque_scale=None, method="partial"):
     """The largest t such that the grasp resists -t*wrench (6 numbers in the grasp's torque
     units, e.g. gravity at the centre of mass): Q_OWS with that single disturbance, by the
     partial hull. A Quality; `value` is None when the grasp is not force closure."""
-    return _pqhull.resist(*_one(positions, normals, tangents), wrench=_array(wrench, 1, "wrench"),
+    return _pqhull.resist(*_one(positions, normals, tangents),
+        torsion=_torsion(torsion, np.shape(positions)[:1]), wrench=_array(wrench, 1, "wrench"),
                           friction=float(friction), cone_edges=int(cone_edges),
                           **_frame_args(torque_reference, torque_scale), method=method)
 
 
-def gws_volume(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
+def gws_volume(positions, normals, tangents=None, *, torsion=None, friction, cone_edges, torque_reference=None,
                torque_scale=None):
     """The volume of the grasp wrench space (the full hull of the Q1 wrenches: a volume needs
     every facet). 0 for wrenches spanning fewer than six dimensions."""
-    return _pqhull.gws_volume(*_one(positions, normals, tangents), friction=float(friction),
+    return _pqhull.gws_volume(*_one(positions, normals, tangents),
+        torsion=_torsion(torsion, np.shape(positions)[:1]), friction=float(friction),
                               cone_edges=int(cone_edges),
                               **_frame_args(torque_reference, torque_scale))
 
 
-def grasp_matrix_metrics(positions, normals, tangents=None, *, friction, cone_edges,
+def grasp_matrix_metrics(positions, normals, tangents=None, *, torsion=None, friction, cone_edges,
                          torque_reference=None, torque_scale=None):
     """(singular_values, sigma_min, isotropy) of the grasp matrix (6 x 3m, contact forces to
     wrenches in the grasp's torque frame): its six singular values largest first, the smallest,
     and smallest / largest."""
     return _pqhull.grasp_matrix_metrics(*_one(positions, normals, tangents),
+        torsion=_torsion(torsion, np.shape(positions)[:1]),
                                         friction=float(friction), cone_edges=int(cone_edges),
                                         **_frame_args(torque_reference, torque_scale))

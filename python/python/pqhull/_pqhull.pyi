@@ -77,6 +77,7 @@ def q1(
     normals: npt.NDArray[np.float64],
     tangents: Optional[npt.NDArray[np.float64]] = None,
     *,
+    torsion: Optional[npt.ArrayLike] = None,
     friction: float,
     cone_edges: int,
     torque_reference: Optional[npt.NDArray[np.float64]] = None,
@@ -88,6 +89,7 @@ def qinf(
     normals: npt.NDArray[np.float64],
     tangents: Optional[npt.NDArray[np.float64]] = None,
     *,
+    torsion: Optional[npt.ArrayLike] = None,
     friction: float,
     cone_edges: int,
     torque_reference: Optional[npt.NDArray[np.float64]] = None,
@@ -100,6 +102,7 @@ def ows(
     normals: npt.NDArray[np.float64],
     tangents: Optional[npt.NDArray[np.float64]] = None,
     *,
+    torsion: Optional[npt.ArrayLike] = None,
     space: ObjectWrenchSpace,
     friction: float,
     cone_edges: int,
@@ -112,6 +115,7 @@ def evaluate(
     normals: npt.NDArray[np.float64],
     tangents: Optional[npt.NDArray[np.float64]] = None,
     *,
+    torsion: Optional[npt.NDArray[np.float64]] = None,
     friction: npt.NDArray[np.float64],
     cone_edges: int,
     torque_reference: Optional[npt.NDArray[np.float64]] = None,
@@ -126,26 +130,30 @@ def evaluate(
 
 def cone_bracket(
     positions: npt.NDArray[np.float64], normals: npt.NDArray[np.float64],
-    tangents: Optional[npt.NDArray[np.float64]] = None, *, friction: float, cone_edges: int,
+    tangents: Optional[npt.NDArray[np.float64]] = None, *,
+    torsion: Optional[npt.NDArray[np.float64]] = None, friction: float, cone_edges: int,
     torque_reference: Optional[npt.NDArray[np.float64]] = None,
     torque_scale: Optional[float] = None, method: str = "partial",
 ) -> tuple[float, float]: ...
 def resist(
     positions: npt.NDArray[np.float64], normals: npt.NDArray[np.float64],
-    tangents: Optional[npt.NDArray[np.float64]] = None, *, wrench: npt.NDArray[np.float64],
+    tangents: Optional[npt.NDArray[np.float64]] = None, *,
+    torsion: Optional[npt.NDArray[np.float64]] = None, wrench: npt.NDArray[np.float64],
     friction: float, cone_edges: int,
     torque_reference: Optional[npt.NDArray[np.float64]] = None,
     torque_scale: Optional[float] = None, method: str = "partial",
 ) -> Quality: ...
 def gws_volume(
     positions: npt.NDArray[np.float64], normals: npt.NDArray[np.float64],
-    tangents: Optional[npt.NDArray[np.float64]] = None, *, friction: float, cone_edges: int,
+    tangents: Optional[npt.NDArray[np.float64]] = None, *,
+    torsion: Optional[npt.NDArray[np.float64]] = None, friction: float, cone_edges: int,
     torque_reference: Optional[npt.NDArray[np.float64]] = None,
     torque_scale: Optional[float] = None,
 ) -> float: ...
 def grasp_matrix_metrics(
     positions: npt.NDArray[np.float64], normals: npt.NDArray[np.float64],
-    tangents: Optional[npt.NDArray[np.float64]] = None, *, friction: float, cone_edges: int,
+    tangents: Optional[npt.NDArray[np.float64]] = None, *,
+    torsion: Optional[npt.NDArray[np.float64]] = None, friction: float, cone_edges: int,
     torque_reference: Optional[npt.NDArray[np.float64]] = None,
     torque_scale: Optional[float] = None,
 ) -> tuple[npt.NDArray[np.float64], float, float]: ...
