@@ -22,4 +22,5 @@ needs_qhull! {
     cli_raw_reference: "tests/cli_raw_reference.rs (pqh grasp against Qhull)",
     grasp_quality_qhull_comparisons: "the Method::Qhull comparisons inside tests/grasp_quality.rs",
     metrics_resistance_and_volume_equal_qhull: "tests/metrics.rs (wrench resistance and GWS volume against Qhull)",
+    soft_q1_equals_qhull_on_the_explicit_soft_wrenches: "tests/soft.rs (soft-finger Q1 against Qhull)",
 }

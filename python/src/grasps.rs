@@ -190,7 +190,8 @@ fn kind_of(
     }
 }
 
-fn method_of(name: &str, metric: Metric) -> PyResult<Method> {
+/// A method by its Python name, checked against `metric`.
+pub(crate) fn method_of(name: &str, metric: Metric) -> PyResult<Method> {
     let method = match name {
         "partial" => Method::Partial,
         "full" => Method::Full,
@@ -289,11 +290,6 @@ pub(crate) fn one_grasp(
     )
     .map_err(errors::grasp)?;
     Ok((g, frame))
-}
-
-/// A method by its Python name, checked against `metric`.
-pub(crate) fn method_for(name: &str, metric: Metric) -> PyResult<Method> {
-    method_of(name, metric)
 }
 
 impl Quality {

@@ -2,7 +2,7 @@
 //! bracket, wrench resistance, the GWS volume and the grasp matrix's singular values.
 
 use crate::errors;
-use crate::grasps::{Quality, method_for, one_grasp};
+use crate::grasps::{Quality, method_of, one_grasp};
 use numpy::{PyArray1, PyReadonlyArray1, PyReadonlyArray2, ToPyArray};
 use pqhull::grasp::metrics::{self, MetricError};
 use pqhull::grasp::quality::Metric;
@@ -36,7 +36,7 @@ pub fn cone_bracket(
     torque_scale: Option<f64>,
     method: &str,
 ) -> PyResult<(f64, f64)> {
-    let method = method_for(method, Metric::Q1)?;
+    let method = method_of(method, Metric::Q1)?;
     let (g, _) = one_grasp(
         positions,
         normals,
@@ -74,7 +74,7 @@ pub fn resist(
     torque_scale: Option<f64>,
     method: &str,
 ) -> PyResult<Quality> {
-    let method = method_for(method, Metric::Ows)?;
+    let method = method_of(method, Metric::Ows)?;
     let w = wrench
         .as_slice()
         .map_err(|e| errors::input(e.to_string()))?;

@@ -20,11 +20,6 @@
 
 use super::Grasp;
 use crate::geometry::vector::{add, scale as scaled_by, sub};
-
-/// a − b for wrenches.
-fn sub6(a: [f64; 6], b: [f64; 6]) -> [f64; 6] {
-    std::array::from_fn(|c| a[c] - b[c])
-}
 use std::f64::consts::PI;
 
 /// Bits kept by the snapping (see the module docs for why 24).
@@ -76,7 +71,7 @@ impl SnappedCones {
                 let twist = grasp
                     .wrench_with_torque([0.0; 3], scaled_by(contact.normal(), contact.torsion()));
                 self.generators.push([add(u, twist), v, s]);
-                self.generators.push([sub6(u, twist), v, s]);
+                self.generators.push([sub(u, twist), v, s]);
             } else {
                 self.generators.push([u, v, s]);
             }

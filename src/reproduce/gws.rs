@@ -179,29 +179,25 @@ fn measure(
                 "pqhull" => evaluated(&mut partial, grasp),
                 _ => evaluated(&mut qhull, grasp),
             };
-            let failed = run.failed.len();
-            let measured = match measured {
-                Ok(m) => m,
+            match measured {
+                Ok(Some((points, facets, time_us, value))) => {
+                    run.record(points, facets, time_us, value)
+                }
+                Ok(None) => {
+                    run.skipped();
+                    run.flat += 1;
+                }
                 // Qhull's topology errors on nearly flat wrench sets are its own limits, and a
                 // result of the comparison: counted, not fatal.
                 Err(e) if name == "qhull" => {
                     let short: String = e.chars().take(90).filter(|&c| c != '|').collect();
                     run.failed.push(format!("grasp {i}: {short}…"));
-                    None
+                    run.skipped();
                 }
                 Err(e) => {
                     return Err(ReproduceError::Experiment(format!(
                         "{name}, k = {k}, grasp {i}: {e}"
                     )));
-                }
-            };
-            match measured {
-                Some((points, facets, time_us, value)) => {
-                    run.record(points, facets, time_us, value)
-                }
-                None => {
-                    run.skipped();
-                    run.flat += usize::from(run.failed.len() == failed);
                 }
             }
             progress(&label, i + 1, n);

@@ -12,6 +12,7 @@ use crate::bench::stats::{median, micros};
 use crate::grasp::FrictionModel;
 use crate::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
 use crate::grasp::quality::{Evaluator, Method, Metric};
+use crate::mesh::Mesh;
 use crate::plan::{DEFAULT_OBJECT_NAME, default_object, samples};
 
 /// Contacts per grasp.
@@ -28,7 +29,30 @@ struct Scored {
 }
 
 /// Scores `n` samples by `metric` with `method`; `space` for Q_OWS.
+/// The built-in object, its friction model and its wrench space: built once per figure.
+struct Object {
+    mesh: Mesh,
+    friction: FrictionModel,
+    space: ObjectWrenchSpace,
+}
+
+impl Object {
+    fn new() -> Result<Object, ReproduceError> {
+        let fail = |e: String| ReproduceError::Experiment(e);
+        let mesh = default_object();
+        let friction = FrictionModel::try_new(FRICTION, EDGES).map_err(|e| fail(e.to_string()))?;
+        let space =
+            ObjectWrenchSpace::from_mesh(&mesh, friction).map_err(|e| fail(e.to_string()))?;
+        Ok(Object {
+            mesh,
+            friction,
+            space,
+        })
+    }
+}
+
 fn score(
+    object: &Object,
     n: usize,
     seed: u64,
     metric: Metric,
@@ -36,9 +60,11 @@ fn score(
     progress: Progress<'_>,
 ) -> Result<Scored, ReproduceError> {
     let fail = |e: String| ReproduceError::Experiment(e);
-    let mesh = default_object();
-    let friction = FrictionModel::try_new(FRICTION, EDGES).map_err(|e| fail(e.to_string()))?;
-    let space = ObjectWrenchSpace::from_mesh(&mesh, friction).map_err(|e| fail(e.to_string()))?;
+    let Object {
+        mesh,
+        friction,
+        space,
+    } = object;
     let label = format!("{} by {}", metric.name(), method.name());
     let mut gws = Evaluator::new(metric, method);
     let mut ows = OwsEvaluator::new(method);
@@ -47,14 +73,14 @@ fn score(
         value: Vec::with_capacity(n),
     };
     progress(&label, 0, n);
-    for (i, grasp) in samples(&mesh, Some(&space), CONTACTS, friction, seed)
+    for (i, grasp) in samples(mesh, Some(space), CONTACTS, *friction, seed)
         .take(n)
         .enumerate()
     {
         let grasp = grasp.map_err(|e| fail(format!("sample {i}: {e}")))?;
         let (elapsed, closure, value) = if metric == Metric::Ows {
             let q = ows
-                .evaluate(&grasp, &space)
+                .evaluate(&grasp, space)
                 .map_err(|e| fail(format!("{label}, sample {i}: {e}")))?;
             (
                 q.stats.elapsed,
@@ -101,6 +127,7 @@ pub fn fig10(size: Size, seed: u64, progress: Progress<'_>) -> Result<Figure, Re
         Size::Default => (10, 300),
         Size::Full => (20, 1000),
     };
+    let object = Object::new()?;
     let rank = |values: &[f64], i: usize| {
         1 + values
             .iter()
@@ -113,8 +140,22 @@ pub fn fig10(size: Size, seed: u64, progress: Progress<'_>) -> Result<Figure, Re
     let (mut ows_ranks, mut q1_ranks) = (Vec::new(), Vec::new());
     for set in 0..sets {
         let set_seed = seed.wrapping_add(set as u64);
-        let q1 = score(n, set_seed, Metric::Q1, Method::Partial, &mut *progress)?;
-        let ows = score(n, set_seed, Metric::Ows, Method::Partial, &mut *progress)?;
+        let q1 = score(
+            &object,
+            n,
+            set_seed,
+            Metric::Q1,
+            Method::Partial,
+            &mut *progress,
+        )?;
+        let ows = score(
+            &object,
+            n,
+            set_seed,
+            Metric::Ows,
+            Method::Partial,
+            &mut *progress,
+        )?;
         let (b1, bo) = (best(&q1.value), best(&ows.value));
         if let (Some(a), Some(b)) = (b1, bo) {
             compared += 1;
@@ -187,6 +228,7 @@ pub fn fig12(size: Size, seed: u64, progress: Progress<'_>) -> Result<Figure, Re
         Size::Default => 100,
         Size::Full => 300,
     };
+    let object = Object::new()?;
     let runs = [
         (Metric::Q1, Method::Partial),
         (Metric::Q1, Method::Full),
@@ -195,7 +237,7 @@ pub fn fig12(size: Size, seed: u64, progress: Progress<'_>) -> Result<Figure, Re
     ];
     let mut scored = Vec::new();
     for (metric, method) in runs {
-        scored.push(score(n, seed, metric, method, &mut *progress)?);
+        scored.push(score(&object, n, seed, metric, method, &mut *progress)?);
     }
     let total = |s: &Scored| s.time_us.iter().sum::<f64>();
     let speedup = |full: &Scored, partial: &Scored| total(full) / total(partial);
