@@ -40,8 +40,9 @@ pub use object::default_object;
 
 use crate::geometry::Rng;
 use crate::grasp::json::write_contact;
-use crate::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
-use crate::grasp::quality::{Evaluator, Method, Metric, QualityError};
+use crate::grasp::metrics::{MetricError, Scorer};
+use crate::grasp::ows::ObjectWrenchSpace;
+use crate::grasp::quality::{Method, Metric, QualityError};
 use crate::grasp::{Contact, FrictionModel, Grasp, GraspError, MAX_CONTACTS};
 use crate::mesh::{Mesh, SurfaceSampler};
 use serde_json::{Value, json};
@@ -65,7 +66,8 @@ pub struct PlanConfig {
     pub samples: usize,
     /// Friction model of every contact.
     pub friction: FrictionModel,
-    /// The metric to maximise.
+    /// The metric to maximise: any of them ([`Scorer`] computes it). Grasps are ranked by value
+    /// among the force-closure ones only.
     pub metric: Metric,
     /// Seed of the contact sampling: the same seed gives the same grasps for every method.
     pub seed: u64,
@@ -228,6 +230,9 @@ pub enum PlanError {
     Grasp(GraspError),
     /// A metric failed.
     Quality(QualityError),
+    /// One of [`metrics`](crate::grasp::metrics)' metrics failed (for instance a zero wrench to
+    /// resist).
+    Metric(MetricError),
 }
 
 impl fmt::Display for PlanError {
@@ -245,6 +250,7 @@ impl fmt::Display for PlanError {
             }
             PlanError::Grasp(e) => write!(f, "sampled grasp: {e}"),
             PlanError::Quality(e) => write!(f, "quality: {e}"),
+            PlanError::Metric(e) => write!(f, "metric: {e}"),
         }
     }
 }
@@ -257,31 +263,19 @@ impl From<GraspError> for PlanError {
     }
 }
 
-impl From<QualityError> for PlanError {
-    fn from(e: QualityError) -> Self {
-        PlanError::Quality(e)
+impl From<MetricError> for PlanError {
+    fn from(e: MetricError) -> Self {
+        match e {
+            MetricError::Quality(e) => PlanError::Quality(e),
+            MetricError::Grasp(e) => PlanError::Grasp(e),
+            e => PlanError::Metric(e),
+        }
     }
 }
 
-/// One metric by one method, with its reusable buffers.
-enum Scorer<'a> {
-    Gws(Box<Evaluator>),
-    Ows(Box<OwsEvaluator>, &'a ObjectWrenchSpace),
-}
-
-impl Scorer<'_> {
-    /// (force closure, value, facets created)
-    fn score(&mut self, grasp: &Grasp) -> Result<(bool, Option<f64>, usize), QualityError> {
-        match self {
-            Scorer::Gws(e) => {
-                let q = e.evaluate(grasp)?;
-                Ok((q.force_closure, Some(q.value), q.stats.facets_created))
-            }
-            Scorer::Ows(e, space) => {
-                let q = e.evaluate(grasp, space)?;
-                Ok((q.force_closure, q.value, q.stats.facets_created))
-            }
-        }
+impl From<QualityError> for PlanError {
+    fn from(e: QualityError) -> Self {
+        PlanError::Quality(e)
     }
 }
 
@@ -403,19 +397,11 @@ pub fn plan_with_progress(
         }));
     }
     let started = Instant::now();
-    if !method.supports(config.metric) {
-        return Err(PlanError::Quality(QualityError::UnsupportedMethod {
-            method,
-            metric: config.metric,
-        }));
-    }
-    let mut scorer = match config.metric {
-        Metric::Ows => Scorer::Ows(
-            Box::new(OwsEvaluator::new(method)),
-            space.ok_or(PlanError::NoWrenchSpace)?,
-        ),
-        metric => Scorer::Gws(Box::new(Evaluator::new(metric, method))),
+    let ows = match config.metric {
+        Metric::Ows => Some(space.ok_or(PlanError::NoWrenchSpace)?),
+        _ => None,
     };
+    let mut scorer = Scorer::new(config.metric, method, ows)?;
     let mut grasps = samples(mesh, space, config.contacts, config.friction, config.seed);
     let mut report = PlanReport {
         best: None,
@@ -428,12 +414,12 @@ pub fn plan_with_progress(
     for sample in 0..config.samples {
         let grasp = grasps.next().expect("an endless sequence")?;
         let timer = Instant::now();
-        let (force_closure, value, facets) = scorer.score(&grasp)?;
+        let score = scorer.score(&grasp)?;
         report.quality_time += timer.elapsed();
-        report.facets_created += facets;
-        if force_closure {
+        report.facets_created += score.stats.facets_created;
+        if score.force_closure {
             report.force_closure += 1;
-            if let Some(value) = value
+            if let Some(value) = score.value
                 && report.best.as_ref().is_none_or(|b| value > b.value)
             {
                 report.best = Some(BestGrasp {

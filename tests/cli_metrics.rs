@@ -105,8 +105,12 @@ fn options_that_would_be_ignored_are_refused() {
             "--cone-bracket is for --metric q1",
         ),
         (
-            &["--metric", "volume", "--method", "full"],
-            "--method does not apply",
+            &["--metric", "volume", "--method", "partial-rays"],
+            "--metric volume takes --method partial, full, qhull",
+        ),
+        (
+            &["--metric", "resist", "--wrench", "0,0,0,0,0,0"],
+            "the wrench to resist is zero",
         ),
     ] {
         let mut all = vec!["grasp"];
@@ -115,19 +119,21 @@ fn options_that_would_be_ignored_are_refused() {
         let (ok, _, err) = pqh(&all);
         assert!(!ok && err.contains(message), "{args:?}: {err}");
     }
-    let (ok, out, _) = pqh(&[
-        "grasp",
-        "--quiet",
-        "--metric",
-        "resist",
-        "--wrench",
-        "0,0,0,0,0,0",
-        SAMPLE,
-    ]);
-    assert!(ok);
-    assert!(
-        lines(&out)
-            .iter()
-            .all(|l| l["error"].as_str().unwrap().contains("zero"))
-    );
+}
+
+#[test]
+fn for_the_volume_and_grasp_matrix_metrics_the_method_decides_the_verdict_only() {
+    let (_, full_q1, _) = pqh(&["grasp", "--quiet", "--method", "full", SAMPLE]);
+    let full_q1 = lines(&full_q1);
+    for metric in ["volume", "isotropy"] {
+        let (_, partial, _) = pqh(&["grasp", "--quiet", "--metric", metric, SAMPLE]);
+        let (ok, full, err) = pqh(&[
+            "grasp", "--quiet", "--metric", metric, "--method", "full", SAMPLE,
+        ]);
+        assert!(ok, "{err}");
+        for ((p, f), q) in lines(&partial).iter().zip(&lines(&full)).zip(&full_q1) {
+            assert_eq!(p["quality"], f["quality"], "{metric}");
+            assert_eq!(f["force_closure"], q["force_closure"], "{metric}");
+        }
+    }
 }

@@ -67,6 +67,33 @@ fn plan_partial_and_full_pick_the_same_best_grasp() {
     }
 }
 
+#[test]
+fn plan_ranks_by_resistance_and_the_grasp_matrix_metrics() {
+    let bar = bar_obj();
+    for args in [
+        &["--metric", "resist", "--wrench", "0,0,-1,0,0,0"][..],
+        &["--metric", "isotropy"],
+        &["--metric", "volume"],
+    ] {
+        let mut all = vec!["plan", "--mesh", bar.to_str().unwrap(), "--samples", "30"];
+        all.extend_from_slice(args);
+        all.push("--json");
+        let out = pqh(&all);
+        assert!(
+            out.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let report: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+        assert_eq!(report["metric"], args[1]);
+        assert_eq!(report["same_best"], true, "{args:?}");
+        assert!(report["partial"]["best"]["value"].as_f64().unwrap() > 0.0);
+    }
+    let out = pqh(&["plan", "--metric", "q1", "--wrench", "0,0,-1,0,0,0"]);
+    assert!(!out.status.success());
+    assert!(String::from_utf8_lossy(&out.stderr).contains("--wrench is for --metric resist"));
+}
+
 /// The reported bug: with no force-closure grasp in the compared samples (`pqh plan --metric
 /// qinf` compares only the first 2 by default) the plan printed a time ratio and "same best
 /// grasp: yes". One contact is never force closure, so here neither run finds a grasp: the

@@ -7,6 +7,7 @@ use numpy::{
     PyArray1, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArrayMethods,
     ToPyArray,
 };
+use pqhull::grasp::metrics::Scorer;
 use pqhull::grasp::ows::{ObjectWrenchSpace as Space, OwsEvaluator, evaluate_ows_batch};
 use pqhull::grasp::quality::{Evaluator, Method, Metric, QualityError, evaluate_batch};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
@@ -105,89 +106,32 @@ fn check_contacts(what: &str, shape: &[usize], m: Option<usize>) -> PyResult<()>
     Ok(())
 }
 
-fn metric_of(name: &str, with_zero_wrench: bool) -> PyResult<Metric> {
-    match name {
-        "q1" => Ok(Metric::Q1),
-        "qinf" => Ok(Metric::QInf { with_zero_wrench }),
-        "ows" => Ok(Metric::Ows),
-        other => Err(errors::input(format!(
-            "metric {other:?}: one of \"q1\", \"qinf\", \"ows\", \"resist\", \"volume\", \
-             \"sigma-min\", \"isotropy\""
-        ))),
-    }
-}
-
-/// The batch's metric: the evaluator's, or one of `pqhull::grasp::metrics`.
-#[derive(Clone, Copy)]
-enum Kind {
-    Evaluator(Metric),
-    Resist([f64; 6]),
-    Volume,
-    SigmaMin,
-    Isotropy,
-}
-
-impl Kind {
-    /// One grasp's (value, force closure); the grasp-matrix and volume metrics take force
-    /// closure from Q1 by the partial hull, as `pqh grasp` does.
-    fn score(self, g: &Grasp, method: Method) -> Result<(Option<f64>, bool), String> {
-        use pqhull::grasp::metrics;
-        let verdict = |value: f64| -> Result<(Option<f64>, bool), String> {
-            let q = pqhull::grasp::quality::q1(g).map_err(|e| e.to_string())?;
-            Ok((Some(value), q.force_closure))
-        };
-        match self {
-            Kind::Evaluator(_) => unreachable!("evaluated by the library's batch"),
-            Kind::Resist(w) => metrics::resist(g, w, method)
-                .map(|q| (q.value, q.force_closure))
-                .map_err(|e| e.to_string()),
-            Kind::Volume => verdict(metrics::gws_volume(g).map_err(|e| e.to_string())?.0),
-            Kind::SigmaMin | Kind::Isotropy => {
-                let m = metrics::grasp_matrix_metrics(g).map_err(|e| e.to_string())?;
-                verdict(if matches!(self, Kind::SigmaMin) {
-                    m.sigma_min()
-                } else {
-                    m.isotropy()
-                })
-            }
-        }
-    }
-}
-
-/// The batch's metric from its name, its method, and the wrench `resist` takes.
-fn kind_of(
-    name: &str,
-    method: &str,
-    with_zero_wrench: bool,
-    wrench: Option<&[f64]>,
-) -> PyResult<(Kind, Method)> {
+/// The batch's metric from its name, `with_zero_wrench` (Q∞) and the wrench `resist` takes.
+fn metric_of(name: &str, with_zero_wrench: bool, wrench: Option<&[f64]>) -> PyResult<Metric> {
     if wrench.is_some() && name != "resist" {
         return Err(errors::input("wrench= is for metric \"resist\""));
     }
-    let other = |kind: Kind| {
-        if method != "partial" {
-            return Err(errors::input(format!(
-                "metric {name:?} takes no method (it has one way to be computed)"
-            )));
-        }
-        Ok((kind, Method::Partial))
-    };
-    match name {
+    Ok(match name {
+        "q1" => Metric::Q1,
+        "qinf" => Metric::QInf { with_zero_wrench },
+        "ows" => Metric::Ows,
         "resist" => {
             let w = wrench.ok_or_else(|| errors::input("metric \"resist\" needs wrench="))?;
-            let w: [f64; 6] = w.try_into().map_err(|_| {
+            let wrench = w.try_into().map_err(|_| {
                 errors::input(format!("wrench must have 6 numbers, not {}", w.len()))
             })?;
-            Ok((Kind::Resist(w), method_of(method, Metric::Ows)?))
+            Metric::Resist { wrench }
         }
-        "volume" => other(Kind::Volume),
-        "sigma-min" => other(Kind::SigmaMin),
-        "isotropy" => other(Kind::Isotropy),
-        name => {
-            let metric = metric_of(name, with_zero_wrench)?;
-            Ok((Kind::Evaluator(metric), method_of(method, metric)?))
+        "volume" => Metric::Volume,
+        "sigma-min" => Metric::SigmaMin,
+        "isotropy" => Metric::Isotropy,
+        other => {
+            return Err(errors::input(format!(
+                "metric {other:?}: one of \"q1\", \"qinf\", \"ows\", \"resist\", \"volume\", \
+                 \"sigma-min\", \"isotropy\""
+            )));
         }
-    }
+    })
 }
 
 /// A method by its Python name, checked against `metric`.
@@ -527,17 +471,16 @@ pub fn evaluate(
         Some(w) => Some(w.as_slice().map_err(|e| errors::input(e.to_string()))?),
         None => None,
     };
-    let (kind, method) = kind_of(metric, method, with_zero_wrench, wrench)?;
-    let metric = match kind {
-        Kind::Evaluator(metric) => metric,
-        _ => Metric::Q1, // not an OWS metric: takes no space
-    };
+    let metric = metric_of(metric, with_zero_wrench, wrench)?;
+    let method = method_of(method, metric)?;
     let space = space.as_ref().map(|s| &s.inner);
     if (metric == Metric::Ows) != space.is_some() {
         return Err(errors::input(
             "metric \"ows\" needs space= (an ObjectWrenchSpace), and only it takes one",
         ));
     }
+    // A scorer that cannot be made (a zero wrench to resist) is refused before any work.
+    Scorer::new(metric, method, space).map_err(crate::metrics::error)?;
     let frame = frame(cone_edges, torque_reference, torque_scale)?;
     if threads == Some(0) || threads.is_some_and(|t| t > 256) {
         return Err(errors::input("threads must be from 1 to 256"));
@@ -571,22 +514,35 @@ pub fn evaluate(
     // Each row as (value, force closure): Q_OWS has no value for a grasp not in force closure.
     let run = || -> Vec<Result<(Option<f64>, bool), String>> {
         use rayon::prelude::*;
-        match (kind, space) {
-            (Kind::Evaluator(_), None) => evaluate_batch(&good, metric, method)
+        match (metric, space) {
+            (Metric::Q1 | Metric::QInf { .. }, _) => evaluate_batch(&good, metric, method)
                 .into_iter()
                 .map(|r| {
                     r.map(|q| (Some(q.value), q.force_closure))
                         .map_err(|e| e.to_string())
                 })
                 .collect(),
-            (Kind::Evaluator(_), Some(space)) => evaluate_ows_batch(&good, space, method)
+            // Only Q_OWS takes a space (checked above).
+            (_, Some(space)) => evaluate_ows_batch(&good, space, method)
                 .into_iter()
                 .map(|r| {
                     r.map(|q| (q.value, q.force_closure))
                         .map_err(|e| e.to_string())
                 })
                 .collect(),
-            (kind, _) => good.par_iter().map(|g| kind.score(g, method)).collect(),
+            // The other metrics, in input order (par_iter's collect keeps it).
+            (_, None) => good
+                .par_iter()
+                .map_init(
+                    || Scorer::new(metric, method, None),
+                    |scorer, g| {
+                        let score = scorer.as_mut().map_err(|e| e.to_string())?.score(g);
+                        score
+                            .map(|s| (s.value, s.force_closure))
+                            .map_err(|e| e.to_string())
+                    },
+                )
+                .collect(),
         }
     };
     let started = std::time::Instant::now();

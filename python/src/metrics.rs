@@ -8,7 +8,7 @@ use pqhull::grasp::metrics::{self, MetricError};
 use pqhull::grasp::quality::Metric;
 use pyo3::prelude::*;
 
-fn error(e: MetricError) -> PyErr {
+pub(crate) fn error(e: MetricError) -> PyErr {
     match e {
         MetricError::Quality(e) => errors::quality(e),
         MetricError::Grasp(_) => errors::grasp(e.to_string()),

@@ -113,8 +113,14 @@ def test_the_batch_equals_single_calls_for_every_new_metric():
         pqhull.evaluate(p, n, t, friction=MU, cone_edges=K, metric="resist")
     with pytest.raises(pqhull.InputError, match="only for|is for"):
         pqhull.evaluate(p, n, t, friction=MU, cone_edges=K, metric="q1", wrench=w)
-    with pytest.raises(pqhull.InputError, match="takes no method"):
-        pqhull.evaluate(p, n, t, friction=MU, cone_edges=K, metric="volume", method="full")
+    # For the volume and the grasp-matrix metrics the method decides the verdict (Q1's) only.
+    full = pqhull.evaluate(p, n, t, friction=MU, cone_edges=K, metric="volume", method="full")
+    assert np.array_equal(full.quality, volume.quality)
+    assert np.array_equal(full.force_closure, volume.force_closure)
+    with pytest.raises(pqhull.QualityError, match="partial-rays"):
+        pqhull.evaluate(p, n, t, friction=MU, cone_edges=K, metric="volume", method="partial-rays")
+    with pytest.raises(pqhull.InputError, match="zero"):
+        pqhull.evaluate(p, n, t, friction=MU, cone_edges=K, metric="resist", wrench=np.zeros(6))
 
 
 def soft_wrenches(p, n, t, gamma, mu=MU, k=K):

@@ -307,8 +307,8 @@ impl Evaluator {
     /// [`QualityError::Qhull`] when Qhull fails.
     pub fn evaluate(&mut self, grasp: &Grasp) -> Result<Quality, QualityError> {
         let started = Instant::now();
-        if self.metric == Metric::Ows {
-            return Err(QualityError::OwsNeedsWrenchSpace);
+        if !matches!(self.metric, Metric::Q1 | Metric::QInf { .. }) {
+            return Err(not_evaluators(self.metric));
         }
         if !self.method.supports(self.metric) {
             unsupported(self.method, self.metric)?;
@@ -360,11 +360,19 @@ impl Evaluator {
                     started,
                 )?,
             },
-            Metric::Ows => return Err(QualityError::OwsNeedsWrenchSpace),
+            metric => return Err(not_evaluators(metric)),
         };
         quality = quality.in_caller_units(unit);
         quality.stats.elapsed = started.elapsed();
         Ok(quality)
+    }
+}
+
+/// The error for a metric that [`Evaluator`] does not compute.
+fn not_evaluators(metric: Metric) -> QualityError {
+    match metric {
+        Metric::Ows => QualityError::OwsNeedsWrenchSpace,
+        metric => QualityError::NotEvaluatorMetric { metric },
     }
 }
 

@@ -135,8 +135,8 @@ def evaluate(positions, normals, tangents=None, *, torsion=None, friction, cone_
              space=None, threads=None, wrench=None):
     """The metric of N grasps of m contacts: (N, m, 3) positions and normals, optional tangents;
     `friction` one value or one per grasp. Metrics: "q1", "qinf", "ows" (with `space`),
-    "resist" (with `wrench`, 6 numbers), "volume", "sigma-min", "isotropy" (the last three take
-    no method, and their force_closure is Q1's). Runs on all cores (or `threads`) with the GIL
+    "resist" (with `wrench`, 6 numbers), "volume", "sigma-min", "isotropy" (for the last three,
+    force_closure is Q1's, and `method` computes only that verdict). Runs on all cores (or `threads`) with the GIL
     released. Returns a Batch: `quality` (N,) and `force_closure` (N,) arrays, and `errors`, a
     list of (row, message); a bad row is NaN and False there, the others are kept. For "ows" and
     "resist", a grasp not in force closure is NaN and False without an error entry."""

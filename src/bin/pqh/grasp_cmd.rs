@@ -2,17 +2,14 @@
 //! order.
 
 use crate::error::CliError;
-use crate::input::parse_point;
 use crate::limits::{FULL_QINF_POINTS, MAX_THREADS};
-use crate::methods::{GraspMetricArg, MethodArg, MetricArg, method_for};
-use clap::{Args, ValueEnum};
+use crate::methods::{MethodArg, MetricArg, method_for};
+use clap::Args;
 use pqhull::Stats;
 use pqhull::grasp::json::{error_line, parse_grasp, quality_line, split_grasps};
-use pqhull::grasp::metrics::{
-    ConeBracket, MetricError, cone_bracket, grasp_matrix_metrics, gws_volume, resist,
-};
-use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsQuality};
-use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality};
+use pqhull::grasp::metrics::{ConeBracket, Score, Scorer, cone_bracket};
+use pqhull::grasp::ows::ObjectWrenchSpace;
+use pqhull::grasp::quality::{Method, Metric};
 use pqhull::grasp::{FrictionModel, Grasp};
 use pqhull::mesh::Mesh;
 use serde_json::Value;
@@ -56,8 +53,8 @@ pub struct GraspArgs {
     /// Grasps file (JSON, JSON array or JSON Lines); '-' or nothing reads standard input
     pub file: Option<PathBuf>,
     /// Metric
-    #[arg(long, value_enum, default_value_t = GraspMetricArg::Q1)]
-    pub metric: GraspMetricArg,
+    #[arg(long, value_enum, default_value_t = MetricArg::Q1)]
+    pub metric: MetricArg,
     /// Q1: add "bracket": [low, high], Q1 of the pyramids inscribed in and circumscribed about
     /// the circular friction cones (Q1 of the true cones lies between)
     #[arg(long)]
@@ -236,10 +233,10 @@ pub fn prepare_space(
 
 fn run_ows(
     args: &GraspArgs,
+    method: Method,
     entries: Vec<Result<Grasp, String>>,
     values: &[Result<Value, String>],
 ) -> Result<Vec<Value>, CliError> {
-    let method = method_for(args.method, Metric::Ows)?;
     let first = entries
         .iter()
         .find_map(|g| g.as_ref().ok())
@@ -281,12 +278,26 @@ fn run_ows(
             space.frame(&g).map_err(|e| e.to_string())
         })
         .collect();
+    score_lines(&framed, args.threads, Metric::Ows, method, Some(&space))
+}
+
+/// The lines of `metric` by `method` ([`Scorer`]; `space` for Q_OWS). A scorer that cannot be
+/// made (a zero wrench to resist) is a usage error, before any work.
+fn score_lines(
+    entries: &[Result<Grasp, String>],
+    threads: Option<usize>,
+    metric: Metric,
+    method: Method,
+    space: Option<&ObjectWrenchSpace>,
+) -> Result<Vec<Value>, CliError> {
+    Scorer::new(metric, method, space)
+        .map_err(|e| CliError::Usage(format!("--metric {}: {e}", metric.name())))?;
     evaluate_lines(
-        &framed,
-        args.threads,
-        || OwsEvaluator::new(method),
-        |ev, g| ev.evaluate(g, &space),
-        line_of(|q: &OwsQuality| (q.force_closure, q.value, q.stats)),
+        entries,
+        threads,
+        || Scorer::new(metric, method, space),
+        |scorer, g| scorer.as_mut().map_err(|e| e.clone())?.score(g),
+        line_of(|s: &Score| (s.force_closure, s.value, s.stats)),
     )
 }
 
@@ -298,98 +309,25 @@ fn bracket_line(index: usize, b: &ConeBracket) -> Value {
     line
 }
 
-/// The lines of the metrics only `pqh grasp` computes: the value, force closure decided by Q1 by
-/// the partial hull (so the line has the shape of every other), and the metric's own work.
-fn run_other(args: &GraspArgs, entries: &[Result<Grasp, String>]) -> Result<Vec<Value>, CliError> {
-    let metric = args.metric;
-    if metric != GraspMetricArg::Resist && args.method != MethodArg::Partial {
-        return Err(CliError::Usage(format!(
-            "--method does not apply to --metric {}",
-            metric
-                .to_possible_value()
-                .map_or(String::new(), |v| v.get_name().to_string())
-        )));
-    }
-    let with_verdict =
-        |g: &Grasp, value: f64, stats: Stats| -> Result<(bool, f64, Stats), MetricError> {
-            let q = pqhull::grasp::quality::q1(g).map_err(MetricError::Quality)?;
-            Ok((q.force_closure, value, stats))
-        };
-    let line = line_of(|r: &(bool, f64, Stats)| (r.0, Some(r.1), r.2));
-    match metric {
-        GraspMetricArg::Resist => {
-            let text = args.wrench.as_deref().ok_or_else(|| {
-                CliError::Usage("--metric resist needs --wrench fx,fy,fz,tx,ty,tz".into())
-            })?;
-            let w = parse_point("--wrench", text)?;
-            let w: [f64; 6] = w.as_slice().try_into().map_err(|_| {
-                CliError::Usage(format!("--wrench needs 6 numbers, not {}", w.len()))
-            })?;
-            let method = method_for(args.method, Metric::Ows)?;
-            evaluate_lines(
-                entries,
-                args.threads,
-                || (),
-                |(), g| resist(g, w, method),
-                line_of(|q: &OwsQuality| (q.force_closure, q.value, q.stats)),
-            )
-        }
-        GraspMetricArg::Volume => evaluate_lines(
-            entries,
-            args.threads,
-            || (),
-            |(), g| {
-                let (volume, stats) = gws_volume(g)?;
-                with_verdict(g, volume, stats)
-            },
-            line,
-        ),
-        _ => evaluate_lines(
-            entries,
-            args.threads,
-            || (),
-            |(), g| {
-                let started = std::time::Instant::now();
-                let m = grasp_matrix_metrics(g)?;
-                let value = if metric == GraspMetricArg::SigmaMin {
-                    m.sigma_min()
-                } else {
-                    m.isotropy()
-                };
-                let stats = Stats {
-                    elapsed: started.elapsed(),
-                    ..Stats::default()
-                };
-                with_verdict(g, value, stats)
-            },
-            line,
-        ),
-    }
-}
-
 pub fn run(args: &GraspArgs) -> Result<(), CliError> {
-    if args.cone_bracket && args.metric != GraspMetricArg::Q1 {
+    let metric = args
+        .metric
+        .metric(args.zero_wrench, args.wrench.as_deref())?;
+    if args.cone_bracket && metric != Metric::Q1 {
         return Err(CliError::Usage("--cone-bracket is for --metric q1".into()));
     }
-    if args.wrench.is_some() && args.metric != GraspMetricArg::Resist {
-        return Err(CliError::Usage("--wrench is for --metric resist".into()));
-    }
-    if !matches!(args.metric, GraspMetricArg::Ows)
-        && (args.mesh.is_some() || args.disturbances.is_some())
-    {
+    // Options that would be silently ignored are errors instead.
+    if metric != Metric::Ows && (args.mesh.is_some() || args.disturbances.is_some()) {
         return Err(CliError::Usage(
             "--mesh and --disturbances are for --metric ows".into(),
         ));
-    }
-    // Options that would be silently ignored are errors instead.
-    if args.zero_wrench && !matches!(args.metric, GraspMetricArg::Qinf) {
-        return Err(CliError::Usage("--zero-wrench is for --metric qinf".into()));
     }
     if (args.ows_friction.is_some() || args.ows_edges.is_some()) && args.mesh.is_none() {
         return Err(CliError::Usage(
             "--ows-friction and --ows-edges are for --metric ows --mesh".into(),
         ));
     }
+    let method = method_for(args.method, metric)?;
     let text = read_input(&args.file)?;
     let values = split(&text);
     if values.is_empty() {
@@ -406,33 +344,21 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
         })
         .collect();
     let readable = entries.iter().filter(|e| e.is_ok()).count();
-    let lines = match args.metric.planner_metric() {
-        Some(MetricArg::Ows) => run_ows(args, entries, &values)?,
-        Some(MetricArg::Q1) if args.cone_bracket => {
-            let method = method_for(args.method, Metric::Q1)?;
-            evaluate_lines(
-                &entries,
-                args.threads,
-                || (),
-                |(), g| cone_bracket(g, method),
-                bracket_line,
-            )?
-        }
-        Some(base) => {
-            let metric = base.metric(args.zero_wrench);
-            let method = method_for(args.method, metric)?;
-            if metric != Metric::Q1 && method != Method::Partial && !args.force {
+    let lines = match metric {
+        Metric::Ows => run_ows(args, method, entries, &values)?,
+        Metric::Q1 if args.cone_bracket => evaluate_lines(
+            &entries,
+            args.threads,
+            || (),
+            |(), g| cone_bracket(g, method),
+            bracket_line,
+        )?,
+        metric => {
+            if matches!(metric, Metric::QInf { .. }) && method != Method::Partial && !args.force {
                 refuse_large_minkowski_sums(&entries, args.zero_wrench)?;
             }
-            evaluate_lines(
-                &entries,
-                args.threads,
-                || Evaluator::new(metric, method),
-                |ev, g| ev.evaluate(g),
-                line_of(|q: &Quality| (q.force_closure, Some(q.value), q.stats)),
-            )?
+            score_lines(&entries, args.threads, metric, method, None)?
         }
-        None => run_other(args, &entries)?,
     };
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());

@@ -5,7 +5,7 @@ use crate::error::CliError;
 use clap::ValueEnum;
 use pqhull::grasp::quality::{Method, Metric};
 
-/// The `--metric` values.
+/// The `--metric` values of `pqh grasp` and `pqh plan`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum MetricArg {
     /// Ferrari–Canny Q1 over the union of contact wrenches
@@ -14,52 +14,50 @@ pub enum MetricArg {
     Qinf,
     /// Object wrench space metric (needs the object: --mesh, or --disturbances in pqh grasp)
     Ows,
+    /// The largest multiple t of one wrench such that the grasp resists -t·wrench (--wrench; Q_OWS
+    /// with that single disturbance)
+    Resist,
+    /// Volume of the grasp wrench space (the full hull: a volume needs every facet; --method
+    /// decides only the force-closure verdict)
+    Volume,
+    /// Smallest singular value of the grasp matrix (--method decides only the verdict)
+    SigmaMin,
+    /// Isotropy index of the grasp matrix: smallest over largest singular value (--method
+    /// decides only the verdict)
+    Isotropy,
 }
 
 impl MetricArg {
-    /// The library's metric (`zero_wrench`: Q∞ with the zero wrench in every contact's set).
-    pub fn metric(self, zero_wrench: bool) -> Metric {
-        match self {
+    /// The library's metric: `zero_wrench` is Q∞ with the zero wrench in every contact's set,
+    /// `wrench` the text of `--wrench` (`fx,fy,fz,tx,ty,tz`), which `resist` needs and only it
+    /// takes.
+    pub fn metric(self, zero_wrench: bool, wrench: Option<&str>) -> Result<Metric, CliError> {
+        if zero_wrench && self != MetricArg::Qinf {
+            return Err(CliError::Usage("--zero-wrench is for --metric qinf".into()));
+        }
+        if wrench.is_some() && self != MetricArg::Resist {
+            return Err(CliError::Usage("--wrench is for --metric resist".into()));
+        }
+        Ok(match self {
             MetricArg::Q1 => Metric::Q1,
             MetricArg::Qinf => Metric::QInf {
                 with_zero_wrench: zero_wrench,
             },
             MetricArg::Ows => Metric::Ows,
-        }
-    }
-}
-
-/// The `--metric` values of `pqh grasp`: the planner's three, and the metrics of
-/// `pqhull::grasp::metrics` that only `pqh grasp` computes so far.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
-pub enum GraspMetricArg {
-    /// Ferrari–Canny Q1 over the union of contact wrenches (--cone-bracket adds its bracket for
-    /// circular cones)
-    Q1,
-    /// Q∞ over the Minkowski sum (implicit for the partial method)
-    Qinf,
-    /// Object wrench space metric (needs --mesh or --disturbances)
-    Ows,
-    /// The largest multiple t of one wrench such that the grasp resists -t·wrench (--wrench; Q_OWS
-    /// with that single disturbance)
-    Resist,
-    /// Volume of the grasp wrench space (the full hull: a volume needs every facet)
-    Volume,
-    /// Smallest singular value of the grasp matrix
-    SigmaMin,
-    /// Isotropy index of the grasp matrix: smallest over largest singular value
-    Isotropy,
-}
-
-impl GraspMetricArg {
-    /// The planner's metric of the same name, if it is one.
-    pub fn planner_metric(self) -> Option<MetricArg> {
-        match self {
-            GraspMetricArg::Q1 => Some(MetricArg::Q1),
-            GraspMetricArg::Qinf => Some(MetricArg::Qinf),
-            GraspMetricArg::Ows => Some(MetricArg::Ows),
-            _ => None,
-        }
+            MetricArg::Resist => {
+                let text = wrench.ok_or_else(|| {
+                    CliError::Usage("--metric resist needs --wrench fx,fy,fz,tx,ty,tz".into())
+                })?;
+                let w = crate::input::parse_point("--wrench", text)?;
+                let wrench = w.as_slice().try_into().map_err(|_| {
+                    CliError::Usage(format!("--wrench needs 6 numbers, not {}", w.len()))
+                })?;
+                Metric::Resist { wrench }
+            }
+            MetricArg::Volume => Metric::Volume,
+            MetricArg::SigmaMin => Metric::SigmaMin,
+            MetricArg::Isotropy => Metric::Isotropy,
+        })
     }
 }
 

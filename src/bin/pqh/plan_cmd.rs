@@ -17,8 +17,9 @@ pub const LONG_ABOUT: &str = "\
 Plans grasps on a mesh the way GraspIt!'s random planner does: each sample puts --contacts
 contacts uniformly by area on the surface (inward face normals), in the object's torque frame
 (centre of mass, characteristic length), and the best force-closure grasp by --metric is kept.
-The plan runs twice on the same samples, with partial hulls and with full hulls (for ows: the
-brute-force baseline), and reports the time spent in quality evaluation against the rest (the
+The plan runs twice on the same samples, with partial hulls and with full hulls (for ows and
+resist: the brute-force baseline; for volume, sigma-min and isotropy, whose values are computed
+one way, the two runs differ in the force-closure verdict only), and reports the time spent in quality evaluation against the rest (the
 quantity of the seed paper's Table 1; this sampler is its Fig. 12's, not Table 1's planner) and
 whether both found the same best grasp. When neither run found a
 force-closure grasp among the samples both evaluated, there is nothing to compare: no ratio and
@@ -46,9 +47,13 @@ pub struct PlanArgs {
     /// 90 s per grasp at 4 contacts × 8 edges; at most 1000000]
     #[arg(long, value_parser = crate::limits::count(0, crate::limits::MAX_SAMPLES))]
     pub full_samples: Option<usize>,
-    /// Metric to maximise
+    /// Metric to maximise among the force-closure samples
     #[arg(long, value_enum, default_value_t = MetricArg::Q1)]
     pub metric: MetricArg,
+    /// resist: the wrench to resist, fx,fy,fz,tx,ty,tz, in the object's torque frame (about its
+    /// centre of mass, torques divided by its characteristic length): 0,0,-1,0,0,0 is gravity
+    #[arg(long, allow_hyphen_values = true)]
+    pub wrench: Option<String>,
     /// Friction coefficient (contacts and, for ows, disturbances)
     #[arg(long, default_value_t = 0.5)]
     pub friction: f64,
@@ -74,6 +79,7 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
             "--contacts and --samples must be at least 1".into(),
         ));
     }
+    let metric = args.metric.metric(false, args.wrench.as_deref())?;
     let (mesh, name) = crate::input::object(args.mesh.as_deref())?;
     let needs_space = matches!(args.metric, MetricArg::Ows) || args.output.is_some();
     let space = if needs_space {
@@ -88,7 +94,7 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
         contacts: args.contacts,
         samples: args.samples,
         friction,
-        metric: args.metric.metric(false),
+        metric,
         seed: args.seed,
     };
     let partial = progress::plan(&mesh, space.as_ref(), &config, Method::Partial, "partial")?;
@@ -153,7 +159,7 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
     if args.json {
         let document = json!({
             "mesh": name,
-            "metric": format!("{:?}", args.metric).to_lowercase(),
+            "metric": metric.name(),
             "contacts": args.contacts,
             "edges": args.edges,
             "friction": args.friction,
@@ -170,8 +176,12 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
     } else {
         writeln!(
             out,
-            "plan on {name}: {} samples × {} contacts, μ = {}, {} cone edges, metric {:?}",
-            args.samples, args.contacts, args.friction, args.edges, args.metric
+            "plan on {name}: {} samples × {} contacts, μ = {}, {} cone edges, metric {}",
+            args.samples,
+            args.contacts,
+            args.friction,
+            args.edges,
+            metric.name()
         )?;
         writeln!(
             out,

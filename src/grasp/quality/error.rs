@@ -28,6 +28,12 @@ pub enum QualityError {
     /// [`Metric::Ows`] given to [`Evaluator`](super::Evaluator): Q_OWS needs the object's wrench space, so it is
     /// [`OwsEvaluator`](crate::grasp::ows::OwsEvaluator)'s.
     OwsNeedsWrenchSpace,
+    /// A metric of [`Scorer`](crate::grasp::metrics::Scorer)'s (wrench resistance, the volume, the
+    /// grasp-matrix metrics) given to [`Evaluator`](super::Evaluator), which computes Q1 and Q∞.
+    NotEvaluatorMetric {
+        /// The metric asked for.
+        metric: Metric,
+    },
     /// The method does not compute this metric (see [`Method`]).
     UnsupportedMethod {
         /// The method asked for.
@@ -54,6 +60,12 @@ pub enum QualityError {
 impl fmt::Display for QualityError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
+            QualityError::NotEvaluatorMetric { metric } => write!(
+                f,
+                "metric {} is computed by pqhull::grasp::metrics::Scorer, not by Evaluator \
+                 (which computes q1 and qinf)",
+                metric.name()
+            ),
             QualityError::SoftContactsInQInf => write!(
                 f,
                 "Q∞ of soft contacts (a contact with torsion) is not implemented; Q1 and Q_OWS \

@@ -2,7 +2,11 @@
 //! evaluators, the planner and `pqh`.
 
 /// A grasp-quality metric: the one vocabulary of the evaluators, the planner and `pqh`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+///
+/// Q1 and Q∞ are [`Evaluator`](super::Evaluator)'s, Q_OWS is
+/// [`OwsEvaluator`](crate::grasp::ows::OwsEvaluator)'s; [`Scorer`](crate::grasp::metrics::Scorer)
+/// computes every one of them, so a planner ranks grasps by any metric through one call.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
 #[non_exhaustive]
 pub enum Metric {
     /// Ferrari–Canny Q1 over the union of the contact wrenches ([`Evaluator`](super::Evaluator)).
@@ -17,10 +21,26 @@ pub enum Metric {
     /// [`ObjectWrenchSpace`](crate::grasp::ows::ObjectWrenchSpace), so it is evaluated by
     /// [`OwsEvaluator`](crate::grasp::ows::OwsEvaluator), not by [`Evaluator`](super::Evaluator).
     Ows,
+    /// Wrench resistance: the largest t such that the grasp resists `−t·wrench`
+    /// ([`resist`](crate::grasp::metrics::resist): Q_OWS with this one disturbance).
+    Resist {
+        /// The wrench, in the grasp's torque units (torque divided by the torque scale).
+        wrench: [f64; 6],
+    },
+    /// The volume of the grasp wrench space ([`gws_volume`](crate::grasp::metrics::gws_volume);
+    /// always from the full hull).
+    Volume,
+    /// The smallest singular value of the grasp matrix
+    /// ([`GraspMatrix::sigma_min`](crate::grasp::metrics::GraspMatrix::sigma_min)).
+    SigmaMin,
+    /// The isotropy index σ_min / σ_max of the grasp matrix
+    /// ([`GraspMatrix::isotropy`](crate::grasp::metrics::GraspMatrix::isotropy)).
+    Isotropy,
 }
 
 impl Metric {
-    /// The name `pqh` uses for it (`q1`, `qinf`, `qinf0` with the zero wrench, `ows`).
+    /// The name `pqh` uses for it (`q1`, `qinf`, `qinf0` with the zero wrench, `ows`, `resist`,
+    /// `volume`, `sigma-min`, `isotropy`).
     pub fn name(self) -> &'static str {
         match self {
             Metric::Q1 => "q1",
@@ -31,12 +51,25 @@ impl Metric {
                 with_zero_wrench: true,
             } => "qinf0",
             Metric::Ows => "ows",
+            Metric::Resist { .. } => "resist",
+            Metric::Volume => "volume",
+            Metric::SigmaMin => "sigma-min",
+            Metric::Isotropy => "isotropy",
         }
+    }
+
+    /// Whether the grasp's force-closure verdict is not part of the metric's value, and is
+    /// decided beside it by Q1 (by the method asked for): the volume and the grasp-matrix
+    /// metrics. Their value is computed one way whatever the method.
+    pub fn verdict_from_q1(self) -> bool {
+        matches!(self, Metric::Volume | Metric::SigmaMin | Metric::Isotropy)
     }
 }
 
 /// How a metric is computed. Every metric takes [`Partial`](Method::Partial) (the default) and
-/// [`Full`](Method::Full); the others belong to some metrics only, and the rest give
+/// [`Full`](Method::Full) (for the volume and the grasp-matrix metrics, the method computes only
+/// the force-closure verdict: [`Metric::verdict_from_q1`]); the others belong to some metrics
+/// only, and the rest give
 /// [`QualityError::UnsupportedMethod`](super::QualityError::UnsupportedMethod).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 #[non_exhaustive]
@@ -48,11 +81,12 @@ pub enum Method {
     /// The full hull with this crate's engine, then the answer from all its facets (for Q_OWS,
     /// every disturbance against every facet: the seed paper's brute force). Exact, the reference.
     Full,
-    /// Q1 and Q∞ only: the full hull by Qhull, for comparison. Needs the crate's `qhull` feature,
-    /// else [`QualityError::QhullUnavailable`](super::QualityError::QhullUnavailable).
+    /// Q1 and Q∞ (and the verdicts of the volume and grasp-matrix metrics) only: the full hull
+    /// by Qhull, for comparison. Needs the crate's `qhull` feature, else
+    /// [`QualityError::QhullUnavailable`](super::QualityError::QhullUnavailable).
     Qhull,
-    /// Q_OWS only: the partial hull with every disturbance assigned to the facet its ray leaves
-    /// through, as the seed paper's Algorithm 2 is published
+    /// Q_OWS and wrench resistance only: the partial hull with every disturbance assigned to the
+    /// facet its ray leaves through, as the seed paper's Algorithm 2 is published
     /// ([`OwsInflation::with_rays`](crate::strategy::OwsInflation::with_rays)). Exact, slower
     /// on large disturbance sets; kept to compare with.
     PartialRays,
@@ -78,8 +112,10 @@ impl Method {
     pub fn supports(self, metric: Metric) -> bool {
         match self {
             Method::Partial | Method::Full => true,
-            Method::Qhull => metric != Metric::Ows,
-            Method::PartialRays | Method::Ellipsoid => metric == Metric::Ows,
+            Method::Qhull => !matches!(metric, Metric::Ows | Metric::Resist { .. }),
+            Method::PartialRays => matches!(metric, Metric::Ows | Metric::Resist { .. }),
+            // No ellipsoid encloses a single disturbance: not for Resist.
+            Method::Ellipsoid => metric == Metric::Ows,
         }
     }
 }

@@ -8,7 +8,9 @@
 //! * [`gws_volume`] — the volume of the grasp wrench space (the full hull: a volume needs every
 //!   facet, so there is no partial shortcut);
 //! * [`grasp_matrix`] and [`GraspMatrix`] — the smallest singular value of the grasp matrix and
-//!   the isotropy index σ_min / σ_max.
+//!   the isotropy index σ_min / σ_max;
+//! * [`Scorer`] — any [`Metric`] (these and Q1, Q∞, Q_OWS) through one call giving one
+//!   [`Score`], which is what `pqh plan --metric` ranks by.
 //!
 //! ```
 //! use pqhull::grasp::metrics::{cone_bracket, grasp_matrix_metrics, resist};
@@ -42,6 +44,10 @@ use crate::hull::{Hull, HullError, Stats};
 use std::f64::consts::PI;
 use std::fmt;
 use std::time::Instant;
+
+mod scorer;
+
+pub use scorer::{Score, Scorer};
 
 /// Why a metric could not be computed.
 #[derive(Clone, Debug, PartialEq)]
@@ -81,6 +87,12 @@ impl fmt::Display for MetricError {
 }
 
 impl std::error::Error for MetricError {}
+
+impl From<QualityError> for MetricError {
+    fn from(e: QualityError) -> Self {
+        MetricError::Quality(e)
+    }
+}
 
 /// Q1 of the pyramids inscribed in the friction cones and of those circumscribed about them:
 /// Q1 of the true circular cones lies between the two.
