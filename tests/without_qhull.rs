@@ -23,4 +23,5 @@ needs_qhull! {
     grasp_quality_qhull_comparisons: "the Method::Qhull comparisons inside tests/grasp_quality.rs",
     metrics_resistance_and_volume_equal_qhull: "tests/metrics.rs (wrench resistance and GWS volume against Qhull)",
     soft_q1_equals_qhull_on_the_explicit_soft_wrenches: "tests/soft.rs (soft-finger Q1 against Qhull)",
+    soft_qinf_equals_qhull_on_the_explicit_minkowski_sum: "tests/soft.rs (soft-finger Q∞ against Qhull)",
 }

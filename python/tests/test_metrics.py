@@ -160,9 +160,29 @@ def test_soft_contacts_equal_scipy_on_the_soft_wrenches_built_here():
     g = np.hstack([np.vstack([np.eye(3), np.cross(pi, np.eye(3))]) for pi in p] +
                   [np.concatenate([np.zeros(3), ni])[:, None] for ni, gi in zip(n, gamma) if gi > 0])
     np.testing.assert_allclose(s, np.linalg.svd(g, compute_uv=False), rtol=1e-12)
-    with pytest.raises(pqhull.QualityError, match="soft"):
-        pqhull.qinf(p, n, t, torsion=gamma, friction=MU, cone_edges=K)
     with pytest.raises(pqhull.GraspError, match="contact 1.*torsion"):
         pqhull.q1(p, n, t, torsion=[0.0, -1.0, 0.0, 0.0], friction=MU, cone_edges=K)
     with pytest.raises(pqhull.InputError, match="torsion"):
         pqhull.q1(p, n, t, torsion=[0.1, 0.2], friction=MU, cone_edges=K)
+
+
+def test_soft_qinf_equals_scipy_on_the_minkowski_sum_written_out_here():
+    """Q-infinity with soft contacts: each contact's summand is the hull of its 2k soft wrenches
+    (k for a hard one, torsion 0); the sum of one wrench per contact, every combination."""
+    k, mu = 4, 0.8
+    gamma = np.array([0.05, 0.0, 0.03])
+    compared = 0
+    for seed in range(30):
+        p, n, t = grasp(seed, m=3)
+        q = pqhull.qinf(p, n, t, torsion=gamma, friction=mu, cone_edges=k)
+        sets = []
+        for i in range(3):
+            w = soft_wrenches(p[i:i + 1], n[i:i + 1], t[i:i + 1], gamma[i:i + 1], mu=mu, k=k)
+            sets.append(w if gamma[i] > 0 else w[:k])
+        points = np.array([a + b + c for a in sets[0] for b in sets[1] for c in sets[2]])
+        assert len(points) == 8 * 4 * 8
+        if q.force_closure:
+            hull = ConvexHull(points)
+            assert q.value == pytest.approx(-hull.equations[:, 6].max(), rel=1e-9), seed
+            compared += 1
+    assert compared > 3

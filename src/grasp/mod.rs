@@ -117,7 +117,8 @@ impl Grasp {
     }
 
     /// How many points Q∞'s Minkowski sum has when written out, `(k + z)^m` (k cone edges, z = 1
-    /// with the zero wrench, m contacts), or `None` beyond `usize`: what the full and Qhull
+    /// with the zero wrench, m contacts; a soft contact's factor is 2k + z), or `None` beyond
+    /// `usize`: what the full and Qhull
     /// methods materialise and hull (the partial method never does). A guide to their cost.
     ///
     /// ```
@@ -129,8 +130,11 @@ impl Grasp {
     /// # Ok::<(), pqhull::grasp::GraspError>(())
     /// ```
     pub fn minkowski_points(&self, with_zero_wrench: bool) -> Option<usize> {
-        let per = self.friction.cone_edges() + usize::from(with_zero_wrench);
-        per.checked_pow(u32::try_from(self.contacts.len()).ok()?)
+        let k = self.friction.cone_edges();
+        self.contacts.iter().try_fold(1usize, |n, c| {
+            let set = if c.is_soft() { 2 * k } else { k };
+            n.checked_mul(set + usize::from(with_zero_wrench))
+        })
     }
 
     /// The number of contacts m (1 ≤ m ≤ [`MAX_CONTACTS`]).

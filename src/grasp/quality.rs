@@ -344,9 +344,6 @@ impl Evaluator {
                 }
                 .banded(scale)
             }
-            Metric::QInf { .. } if grasp.contacts().iter().any(|c| c.is_soft()) => {
-                return Err(QualityError::SoftContactsInQInf);
-            }
             Metric::QInf { with_zero_wrench } => match self.method {
                 Method::Partial => {
                     minkowski::partial(&self.cones, with_zero_wrench, &mut self.minkowski)?

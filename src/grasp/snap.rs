@@ -168,14 +168,18 @@ impl SnappedCones {
         }
     }
 
-    /// The number of pyramids: the distinct contacts, a soft one counting twice. (The Q∞ sum
-    /// takes grasps of hard contacts only, where the two are the same.)
+    /// The number of pyramids: the distinct contacts, a soft one counting twice.
     pub(in crate::grasp) fn contacts(&self) -> usize {
         self.generators.len()
     }
 
-    /// The pyramids of distinct contact `c`.
-    fn pyramids_of(&self, c: usize) -> std::ops::Range<usize> {
+    /// The number of distinct contacts (the summands of the Q∞ Minkowski sum).
+    pub(in crate::grasp) fn distinct_contacts(&self) -> usize {
+        self.multiplicity.len()
+    }
+
+    /// The pyramids of distinct contact `c`: one for a hard contact, two for a soft one.
+    pub(in crate::grasp) fn pyramids_of(&self, c: usize) -> std::ops::Range<usize> {
         self.pyramid_start[c]..self.pyramid_start[c + 1]
     }
 

@@ -91,12 +91,12 @@ impl Grasp {
         }
     }
 
-    /// The number of points of the Minkowski sum ⊕_i {w_i1 … w_ik} behind Q∞: k^m, or `None`
-    /// when it does not fit in a `usize`. The set itself is never materialised here. (Q∞ takes
-    /// hard contacts only: soft ones are refused, `QualityError::SoftContactsInQInf`.)
+    /// The number of points of the Minkowski sum ⊕_i {w_i1 … w_ik} behind Q∞: k^m for hard
+    /// contacts (a soft one's set has 2k wrenches), or `None` when it does not fit in a
+    /// `usize`. The set itself is never materialised here. The same as
+    /// [`minkowski_points(false)`](Self::minkowski_points).
     pub fn minkowski_count(&self) -> Option<usize> {
-        let m = u32::try_from(self.contacts.len()).ok()?;
-        self.friction.cone_edges().checked_pow(m)
+        self.minkowski_points(false)
     }
 
     /// p_i − c.

@@ -23,8 +23,8 @@ array of grasps, or JSON Lines. A grasp is
    \"friction\":mu, \"cone_edges\":k, \"torque_reference\":[x,y,z]?, \"torque_scale\":rho?}
 with inward unit normals (the direction the finger pushes). A contact with \"torsion\" g > 0 is a
 soft finger (g: torsional friction times patch radius, a length): each cone edge f then gives the
-two wrenches [f; ((p - c) x f +/- g n)/rho]; Q1, Q_OWS and the other metrics take them, Q-infinity
-does not yet. Output: one JSON line per grasp, in
+two wrenches [f; ((p - c) x f +/- g n)/rho]; every metric takes them (for Q-infinity, the
+contact's summand is the hull of its 2k wrenches). Output: one JSON line per grasp, in
 input order: index, force_closure, quality, stats {points_processed, facets_created, elapsed_us}.
 A malformed grasp gets {\"index\":i,\"error\":\"...\"} and the others are still evaluated.
 

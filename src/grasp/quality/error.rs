@@ -49,9 +49,6 @@ pub enum QualityError {
         /// The space's.
         space: ([f64; 3], f64),
     },
-    /// Q∞ of a grasp with a soft contact: the Minkowski sum of a soft contact's two pyramids is
-    /// not implemented (Q1 and Q_OWS take soft contacts).
-    SoftContactsInQInf,
     /// Q_OWS by the ellipsoid method: no enclosing ellipsoid (the disturbances span fewer than six
     /// dimensions).
     Ellipsoid(String),
@@ -65,11 +62,6 @@ impl fmt::Display for QualityError {
                 "metric {} is computed by pqhull::grasp::metrics::Scorer, not by Evaluator \
                  (which computes q1 and qinf)",
                 metric.name()
-            ),
-            QualityError::SoftContactsInQInf => write!(
-                f,
-                "Q∞ of soft contacts (a contact with torsion) is not implemented; Q1 and Q_OWS \
-                 take them"
             ),
             QualityError::NonFiniteWrench => write!(
                 f,

@@ -17,29 +17,38 @@ pub const MINKOWSKI_MATERIALISE_LIMIT: usize = 1 << 20;
 /// Refills `sets` with the per-contact wrench sets (with the zero wrench if asked), reusing
 /// their buffers: the snapped wrenches, or the caller's raw ones when `raw`, each scaled by its
 /// contact's multiplicity (r copies of a convex set sum to r times it; see
-/// [`snap`](crate::grasp::snap)).
+/// [`snap`](crate::grasp::snap)). A soft contact's set is the union of its two pyramids (2k
+/// wrenches): one summand, since one finger exerts one force and one torsional moment.
 fn fill_sets(
     sets: &mut Vec<Vec<[f64; 6]>>,
     cones: &SnappedCones,
     with_zero_wrench: bool,
     raw: bool,
 ) {
-    let contacts = cones.contacts();
     let k = cones.edges();
-    sets.resize_with(contacts, Vec::new);
-    for (i, set) in sets.iter_mut().enumerate() {
+    sets.resize_with(cones.distinct_contacts(), Vec::new);
+    for (c, set) in sets.iter_mut().enumerate() {
         set.clear();
-        let r = f64::from(cones.multiplicity[i]);
+        let r = f64::from(cones.multiplicity[c]);
         let scaled = |w: [f64; 6]| w.map(|x| r * x);
-        if raw {
-            set.extend(cones.raw[i * k..(i + 1) * k].iter().map(|&w| scaled(w)));
-        } else {
-            set.extend((0..k).map(|j| scaled(cones.wrench(i, j))));
+        for p in cones.pyramids_of(c) {
+            if raw {
+                set.extend(cones.raw[p * k..(p + 1) * k].iter().map(|&w| scaled(w)));
+            } else {
+                set.extend((0..k).map(|j| scaled(cones.wrench(p, j))));
+            }
         }
         if with_zero_wrench {
             set.push([0.0; 6]);
         }
     }
+}
+
+/// The number of Minkowski points of `sets` (the product of their sizes), `None` above
+/// `usize::MAX`.
+fn tuple_count(sets: &[Vec<[f64; 6]>]) -> Option<usize> {
+    sets.iter()
+        .try_fold(1usize, |n, set| n.checked_mul(set.len()))
 }
 
 /// The raw side of a Minkowski sum for [`certify::bracket`]: `δ` (the distance between a
@@ -48,11 +57,15 @@ fn fill_sets(
 fn raw_bounds(cones: &SnappedCones, raw_sets: &[Vec<[f64; 6]>]) -> (f64, f64) {
     // m counts every contact of the grasp: a merged contact's scaling r·w rounds once more.
     let m: f64 = cones.multiplicity.iter().map(|&r| f64::from(r)).sum();
-    let scaled_delta: f64 = cones
-        .delta
-        .iter()
-        .zip(&cones.multiplicity)
-        .map(|(d, &r)| d * f64::from(r))
+    // A contact's δ: the largest of its pyramids'.
+    let scaled_delta: f64 = (0..cones.distinct_contacts())
+        .map(|c| {
+            let delta = cones
+                .pyramids_of(c)
+                .map(|p| cones.delta[p])
+                .fold(0.0, f64::max);
+            delta * f64::from(cones.multiplicity[c])
+        })
         .sum();
     let sizes: f64 = raw_scale(raw_sets);
     // A left-to-right sum of m vectors: each coordinate is off by at most γ_(m−1)·Σ|w_ic|, so
@@ -116,10 +129,7 @@ pub(super) fn materialise(
 ) -> Result<(), QualityError> {
     let mut sets = Vec::new();
     fill_sets(&mut sets, cones, with_zero_wrench, raw);
-    let per = sets.first().map_or(0, Vec::len);
-    let count = u32::try_from(sets.len())
-        .ok()
-        .and_then(|m| per.checked_pow(m));
+    let count = tuple_count(&sets);
     match count {
         Some(n) if n <= MINKOWSKI_MATERIALISE_LIMIT => {}
         _ => return Err(QualityError::MinkowskiTooLarge { points: count }),
@@ -135,7 +145,7 @@ pub(super) fn materialise(
             }
             i -= 1;
             choice[i] += 1;
-            if choice[i] < per {
+            if choice[i] < sets[i].len() {
                 break;
             }
             choice[i] = 0;
@@ -583,15 +593,16 @@ pub(super) fn full(
         return Ok(q.banded(scale));
     }
     materialise(cones, with_zero_wrench, false, out)?;
-    let per = raw_sets.first().map_or(0, Vec::len);
     let m = raw_sets.len();
-    // Point i of the odometer order: contact c's choice is digit c (most significant first).
+    // Point i of the odometer order: contact c's choice is digit c (most significant first), in
+    // the mixed radix of the sets' sizes (a soft contact's set is twice a hard one's).
     let tuple_sum = |i: usize| {
         let mut rest = i;
         let mut digits = [0usize; 64];
         for c in (0..m.min(64)).rev() {
-            digits[c] = rest % per;
-            rest /= per;
+            let size = raw_sets[c].len();
+            digits[c] = rest % size;
+            rest /= size;
         }
         Some(sum(&raw_sets, digits[..m.min(64)].iter().copied()))
     };
