@@ -3,12 +3,13 @@
 //! `cargo run --release --example metric_costs [GRASPS] [EDGES]` (defaults 200 and 8): random
 //! 4-contact grasps on the benchmarks' bar (μ = 0.5, seed 1), each metric timed per grasp with
 //! `Instant` around the library call; medians and means in µs, and the median's ratio to Q1's.
+//! The soft rows give every contact torsion γ = 0.01 (a tenth of the bar's half-thickness).
 
 use pqhull::bench::stats::{mean, median};
 use pqhull::bench::workloads::{BAR_FRICTION, bar_grasps};
-use pqhull::grasp::FrictionModel;
 use pqhull::grasp::metrics::{cone_bracket, grasp_matrix_metrics, gws_volume, resist};
-use pqhull::grasp::quality::{Method, q1};
+use pqhull::grasp::quality::{Evaluator, Method, Metric, q1};
+use pqhull::grasp::{FrictionModel, Grasp};
 use std::time::Instant;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
@@ -16,37 +17,76 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let grasps: usize = args.next().map_or(Ok(200), |a| a.parse())?;
     let edges: usize = args.next().map_or(Ok(8), |a| a.parse())?;
     let set = bar_grasps(1, grasps, 4, FrictionModel::try_new(BAR_FRICTION, edges)?);
+    let soft: Vec<Grasp> = set
+        .iter()
+        .map(|g| {
+            let contacts = g
+                .contacts()
+                .iter()
+                .map(|c| c.with_torsion(0.01))
+                .collect::<Result<_, _>>()?;
+            Grasp::builder(contacts, g.friction())
+                .torque_reference(g.torque_reference())
+                .torque_scale(g.torque_scale())
+                .build()
+        })
+        .collect::<Result<_, _>>()?;
     let gravity = [0.0, 0.0, -1.0, 0.0, 0.0, 0.0];
-    type Run<'a> =
-        Box<dyn Fn(&pqhull::grasp::Grasp) -> Result<(), Box<dyn std::error::Error>> + 'a>;
+    let qinf = Metric::QInf {
+        with_zero_wrench: false,
+    };
+    // A metric's run on grasp i: of the hard grasps, or of their soft copies.
+    type Run<'a> = Box<dyn Fn(usize) -> Result<(), Box<dyn std::error::Error>> + 'a>;
     let metrics: Vec<(&str, Run)> = vec![
         (
             "q1 (partial)",
-            Box::new(|g| q1(g).map(drop).map_err(Into::into)),
+            Box::new(|i| q1(&set[i]).map(drop).map_err(Into::into)),
         ),
         (
             "cone bracket (two Q1)",
-            Box::new(|g| {
-                cone_bracket(g, Method::Partial)
+            Box::new(|i| {
+                cone_bracket(&set[i], Method::Partial)
                     .map(drop)
                     .map_err(Into::into)
             }),
         ),
         (
             "resist gravity (partial)",
-            Box::new(|g| {
-                resist(g, gravity, Method::Partial)
+            Box::new(|i| {
+                resist(&set[i], gravity, Method::Partial)
                     .map(drop)
                     .map_err(Into::into)
             }),
         ),
         (
             "gws volume (full hull)",
-            Box::new(|g| gws_volume(g).map(drop).map_err(Into::into)),
+            Box::new(|i| gws_volume(&set[i]).map(drop).map_err(Into::into)),
         ),
         (
             "sigma-min, isotropy (SVD)",
-            Box::new(|g| grasp_matrix_metrics(g).map(drop).map_err(Into::into)),
+            Box::new(|i| grasp_matrix_metrics(&set[i]).map(drop).map_err(Into::into)),
+        ),
+        (
+            "q1 soft (partial)",
+            Box::new(|i| q1(&soft[i]).map(drop).map_err(Into::into)),
+        ),
+        (
+            "qinf (partial)",
+            Box::new(|i| {
+                Evaluator::new(qinf, Method::Partial)
+                    .evaluate(&set[i])
+                    .map(drop)
+                    .map_err(Into::into)
+            }),
+        ),
+        (
+            "qinf soft (partial)",
+            Box::new(|i| {
+                Evaluator::new(qinf, Method::Partial)
+                    .evaluate(&soft[i])
+                    .map(drop)
+                    .map_err(Into::into)
+            }),
         ),
     ];
     println!("{grasps} bar grasps, 4 contacts x {edges} edges, mu = {BAR_FRICTION}");
@@ -57,9 +97,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut q1_median = f64::NAN;
     for (name, run) in &metrics {
         let mut times = Vec::with_capacity(set.len());
-        for g in &set {
+        for i in 0..set.len() {
             let started = Instant::now();
-            run(g)?;
+            run(i)?;
             times.push(started.elapsed().as_secs_f64() * 1e6);
         }
         let m = median(&mut times.clone());
