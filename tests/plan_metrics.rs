@@ -3,9 +3,9 @@
 //! `tests/metrics.rs` checks against an independent reference), over `plan::samples` — the
 //! planner's sample sequence.
 
-use pqhull::grasp::FrictionModel;
 use pqhull::grasp::metrics::{grasp_matrix_metrics, gws_volume, resist};
 use pqhull::grasp::quality::{Method, Metric, QualityError, q1};
+use pqhull::grasp::{FrictionModel, Grasp};
 use pqhull::mesh::Mesh;
 use pqhull::plan::{PlanConfig, PlanError, plan, samples};
 
@@ -26,8 +26,11 @@ fn config(metric: Metric) -> PlanConfig {
     }
 }
 
+/// A metric's value of one grasp, by its own call.
+type Value = Box<dyn Fn(&Grasp) -> Option<f64>>;
+
 /// The best (sample, value) among force-closure samples, each value by `value`.
-fn best_by(metric: Metric, value: impl Fn(&pqhull::grasp::Grasp) -> Option<f64>) -> (usize, f64) {
+fn best_by(metric: Metric, value: impl Fn(&Grasp) -> Option<f64>) -> (usize, f64) {
     let object = object();
     let c = config(metric);
     let mut best: Option<(usize, f64)> = None;
@@ -52,7 +55,7 @@ fn best_by(metric: Metric, value: impl Fn(&pqhull::grasp::Grasp) -> Option<f64>)
 
 #[test]
 fn the_plan_keeps_the_best_force_closure_sample_by_every_metric() {
-    let cases: [(Metric, Box<dyn Fn(&pqhull::grasp::Grasp) -> Option<f64>>); 5] = [
+    let cases: [(Metric, Value); 5] = [
         (Metric::Q1, Box::new(|g| Some(q1(g).unwrap().value))),
         (
             Metric::Resist { wrench: GRAVITY },
