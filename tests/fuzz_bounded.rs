@@ -292,6 +292,10 @@ fn grasp_object(rng: &mut Gen) -> String {
                 if rng.chance(3) {
                     c.push(format!("\"tangent\": {}", vector(rng)));
                 }
+                if rng.chance(3) {
+                    let torsion = rng.pick(&["0", "0.01", "0.2", "-0.1", "1e300", "null"]);
+                    c.push(format!("\"torsion\": {torsion}"));
+                }
                 format!("{{{}}}", c.join(", "))
             })
             .collect();

@@ -7,7 +7,7 @@ use pqhull::bench::workloads::{BAR_FRICTION, bar_grasps};
 use pqhull::grasp::metrics::{
     MetricError, cone_bracket, grasp_matrix, grasp_matrix_metrics, gws_volume, resist,
 };
-use pqhull::grasp::quality::{Method, q1};
+use pqhull::grasp::quality::{Method, QualityError, q1};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
 use pqhull::{FarthestPoint, Hull};
 
@@ -273,4 +273,45 @@ fn degenerate_grasps_give_clear_values() {
     // Not force closure: resistance has no value, as Q_OWS.
     let r = resist(&pinch, [0.0, 0.0, -1.0, 0.0, 0.0, 0.0], Method::Partial).unwrap();
     assert!(!r.force_closure && r.value.is_none());
+}
+
+/// A volume beyond `f64::MAX` is an error, not +∞ (which JSON would print as null): forces of
+/// 1e50 with lever arms of 1e49 make a wrench space of about 1e450.
+#[test]
+fn a_volume_beyond_f64_is_an_error() {
+    let contacts = [
+        ([1e49, 0.5, -2.0], [0.0, 0.0, 1.0]),
+        ([0.0, 1e49, 1.0], [0.0, 1.0, 0.0]),
+        ([0.0, 3.0, 1e49], [1.0, 0.0, 0.0]),
+        ([-1e49, -1e49, -1e49], [-1.0, -1.0, -1.0]),
+    ]
+    .map(|(p, n)| Contact::try_new(p, n, None).unwrap());
+    let grasp = Grasp::builder(contacts.to_vec(), FrictionModel::try_new(1e50, 4).unwrap())
+        .build()
+        .unwrap();
+    assert_eq!(gws_volume(&grasp), Err(MetricError::VolumeOverflow));
+}
+
+/// A wrench so small that the multiple of it the grasp resists is beyond `f64::MAX` is an error,
+/// not +∞.
+#[test]
+fn resisting_a_subnormal_wrench_is_an_error() {
+    let grasp = resist_cases()
+        .into_iter()
+        .map(|(g, _)| g)
+        .find(|g| q1(g).unwrap().force_closure)
+        .expect("a force-closure grasp");
+    let tiny = [1e-310, 0.0, 0.0, 0.0, 0.0, 0.0];
+    assert_eq!(
+        resist(&grasp, tiny, Method::Partial).map(|q| q.value),
+        Err(MetricError::Quality(QualityError::OwsValueOverflow))
+    );
+    let small = [1e-300, 0.0, 0.0, 0.0, 0.0, 0.0];
+    assert!(
+        resist(&grasp, small, Method::Partial)
+            .unwrap()
+            .value
+            .unwrap()
+            .is_finite()
+    );
 }

@@ -26,6 +26,7 @@ mod farthest_point;
 mod record;
 mod strategy;
 mod trace;
+mod volume;
 
 pub use error::{HullError, InvariantViolation};
 pub use facet::{Facet, FacetId};
@@ -261,27 +262,6 @@ impl<const D: usize> Hull<D> {
     /// Whether any input point remains in some outside set (false once the hull is complete).
     pub fn has_outside_points(&self) -> bool {
         self.facets().any(|(_, f)| !f.outside.is_empty())
-    }
-
-    /// Volume of the current hull, in the caller's units (partial hulls have smaller volume).
-    ///
-    /// Computed as the sum of signed cone volumes from an interior point, using each facet's
-    /// cofactor vector, so it costs one dot product per facet. A volume beyond `f64::MAX` is
-    /// `+∞`, one below the smallest subnormal is 0 (as for any `f64` result out of range).
-    pub fn volume(&self) -> f64 {
-        let mut sum = 0.0;
-        for (_, facet) in self.facets() {
-            // Orientation value of (facet, interior) is −D!·(cone volume).
-            let (value, _) = facet.plane.evaluate(&self.interior);
-            sum -= value;
-        }
-        let factorial: f64 = (1..=D).map(|k| k as f64).product();
-        // Every cone volume is non-negative, so a sum that overflowed (to ∞, or NaN from ∞ − ∞
-        // of rounded cone volumes) stands for a volume beyond f64::MAX.
-        if !sum.is_finite() {
-            return f64::INFINITY;
-        }
-        sum / factorial / self.scale.powi(D as i32)
     }
 
     /// Work counters so far (`elapsed` is set when the strategy stops).

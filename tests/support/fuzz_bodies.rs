@@ -10,6 +10,7 @@
 #![allow(dead_code)]
 
 use pqhull::grasp::json::{parse_grasp, split_grasps};
+use pqhull::grasp::metrics::Scorer;
 use pqhull::grasp::ows::ObjectWrenchSpace;
 use pqhull::grasp::quality::{Evaluator, Method, Metric};
 use pqhull::grasp::{FrictionModel, Grasp, MAX_CONE_EDGES, MAX_CONTACTS, MIN_CONE_EDGES};
@@ -159,8 +160,14 @@ pub fn grasp_json(data: &[u8]) {
         assert!(mu.is_finite() && mu >= 0.0, "friction {mu}");
         let rho = grasp.torque_scale();
         assert!(rho.is_finite() && rho > 0.0, "torque scale {rho}");
-        if m * k <= WRENCHES_EVALUATED {
+        let wrenches: usize = grasp
+            .contacts()
+            .iter()
+            .map(|c| if c.is_soft() { 2 * k } else { k })
+            .sum();
+        if wrenches <= WRENCHES_EVALUATED {
             evaluate_grasp(&grasp);
+            every_metric(&grasp, wrenches);
         }
     }
 }
@@ -186,6 +193,58 @@ fn evaluate_grasp(grasp: &Grasp) {
         }
         (Err(p), Err(f)) => assert_eq!(p, f, "the methods fail differently"),
         _ => panic!("one method failed: partial {partial:?}, full {full:?}"),
+    }
+}
+
+/// Q∞ sums of at most this many points are also evaluated by the full method, and wrench sets of
+/// at most this many points get a volume (both hull the raw points with the exact engine).
+const FULL_POINTS: usize = 64;
+
+/// Every other metric through [`Scorer`]: an error or a finite value (never NaN, never ±∞, which
+/// JSON would print as null), never a panic; Q∞
+/// by the partial and the full method agree on small sums.
+fn every_metric(grasp: &Grasp, wrenches: usize) {
+    let qinf = Metric::QInf {
+        with_zero_wrench: false,
+    };
+    let resist = Metric::Resist {
+        wrench: [0.0, 0.0, -1.0, 0.0, 0.0, 0.0],
+    };
+    for metric in [
+        qinf,
+        resist,
+        Metric::SigmaMin,
+        Metric::Isotropy,
+        Metric::Volume,
+    ] {
+        if metric == Metric::Volume && wrenches > FULL_POINTS {
+            continue;
+        }
+        let score = Scorer::new(metric, Method::Partial, None).and_then(|mut s| s.score(grasp));
+        if let Ok(score) = score {
+            assert!(
+                score.value.is_none_or(f64::is_finite),
+                "{}: {score:?} for {}",
+                metric.name(),
+                pqhull::grasp::json::write_grasp(grasp)
+            );
+        }
+    }
+    if grasp
+        .minkowski_points(false)
+        .is_some_and(|n| n <= FULL_POINTS)
+    {
+        let partial = Evaluator::new(qinf, Method::Partial).evaluate(grasp);
+        let full = Evaluator::new(qinf, Method::Full).evaluate(grasp);
+        match (&partial, &full) {
+            (Ok(p), Ok(f)) => {
+                assert_eq!(p.force_closure, f.force_closure, "{p:?} vs {f:?}");
+                let tolerance = 1e-9 * p.scale.max(f.scale) + 1e-9 * p.value.abs();
+                assert!((p.value - f.value).abs() <= tolerance, "{p:?} vs {f:?}");
+            }
+            (Err(p), Err(f)) => assert_eq!(p, f, "the Q∞ methods fail differently"),
+            _ => panic!("one Q∞ method failed: partial {partial:?}, full {full:?}"),
+        }
     }
 }
 

@@ -63,6 +63,9 @@ pub enum MetricError {
     Hull(HullError),
     /// The singular value decomposition did not converge.
     Svd(String),
+    /// The GWS volume is beyond `f64::MAX` (wrench coordinates near the metrics' limit of
+    /// 1e100 in every direction): not representable.
+    VolumeOverflow,
 }
 
 impl fmt::Display for MetricError {
@@ -82,6 +85,11 @@ impl fmt::Display for MetricError {
             MetricError::Wrench(e) => write!(f, "the wrench to resist: {e}"),
             MetricError::Hull(e) => write!(f, "{e}"),
             MetricError::Svd(e) => write!(f, "grasp matrix: {e}"),
+            MetricError::VolumeOverflow => write!(
+                f,
+                "the grasp wrench space's volume is beyond f64::MAX (1.8e308): use other units \
+                 (positions, torque_scale) or a smaller friction coefficient"
+            ),
         }
     }
 }
@@ -191,12 +199,16 @@ pub fn resist(grasp: &Grasp, wrench: [f64; 6], method: Method) -> Result<OwsQual
 /// Returns the volume and the full hull's work.
 ///
 /// # Errors
-/// [`MetricError::Hull`] for non-finite wrenches (a torque scale far too small).
+/// [`MetricError::Hull`] for non-finite wrenches (a torque scale far too small);
+/// [`MetricError::VolumeOverflow`] for a volume beyond `f64::MAX`.
 pub fn gws_volume(grasp: &Grasp) -> Result<(f64, Stats), MetricError> {
     let started = Instant::now();
     match Hull::try_new(&grasp.wrenches()) {
         Ok(hull) => {
             let volume = hull.volume();
+            if volume == f64::INFINITY {
+                return Err(MetricError::VolumeOverflow);
+            }
             let mut stats = hull.stats();
             stats.elapsed = started.elapsed();
             Ok((volume, stats))

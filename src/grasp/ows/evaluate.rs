@@ -187,7 +187,22 @@ struct GraspSet<'a> {
 /// The snapped wrenches, their pyramids (the contact of each) and `δ`.
 type Snapped<'a> = (&'a [[f64; 6]], &'a [u32], f64);
 
+/// [`ows_inner`], with a value beyond `f64::MAX` (disturbances tiny beside the grasp's wrenches,
+/// say 1e−310 against 1) an error rather than +∞, which JSON would print as null.
 fn ows_with(
+    set: &GraspSet<'_>,
+    space: &ObjectWrenchSpace,
+    method: Method,
+    buffers: &mut OwsBuffers,
+) -> Result<OwsQuality, QualityError> {
+    let quality = ows_inner(set, space, method, buffers)?;
+    match quality.value {
+        Some(v) if !v.is_finite() => Err(QualityError::OwsValueOverflow),
+        _ => Ok(quality),
+    }
+}
+
+fn ows_inner(
     set: &GraspSet<'_>,
     space: &ObjectWrenchSpace,
     method: Method,
@@ -275,7 +290,7 @@ fn search(
             &mut buffers.hull,
         ),
         Method::Full => brute_force(w, pyramids, space, &mut buffers.hull),
-        // Refused by `ows_with` before any hull is built.
+        // Refused by `ows_inner` before any hull is built.
         Method::Ellipsoid | Method::Qhull => unreachable!("no exact OWS hull by {method:?}"),
     };
     result.filter(|q| q.force_closure)

@@ -49,6 +49,10 @@ pub enum QualityError {
         /// The space's.
         space: ([f64; 3], f64),
     },
+    /// Q_OWS (or wrench resistance) beyond `f64::MAX`: the disturbances are so small beside the
+    /// grasp's wrenches (1e−310 against 1, say) that the multiple of them it resists is not
+    /// representable.
+    OwsValueOverflow,
     /// Q_OWS by the ellipsoid method: no enclosing ellipsoid (the disturbances span fewer than six
     /// dimensions).
     Ellipsoid(String),
@@ -62,6 +66,12 @@ impl fmt::Display for QualityError {
                 "metric {} is computed by pqhull::grasp::metrics::Scorer, not by Evaluator \
                  (which computes q1 and qinf)",
                 metric.name()
+            ),
+            QualityError::OwsValueOverflow => write!(
+                f,
+                "the multiple of the disturbances the grasp resists is beyond f64::MAX: the \
+                 disturbances (or the wrench to resist) are too small for the grasp's units; \
+                 scale them up"
             ),
             QualityError::NonFiniteWrench => write!(
                 f,
