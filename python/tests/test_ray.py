@@ -145,6 +145,41 @@ def test_object_wrench_spaces_built_once_and_shared(cluster, tmp_path):
                  metric="ows")
 
 
+def test_soft_contacts_and_every_metric_on_the_cluster(cluster, tmp_path):
+    """Issue 16's additions through Ray: torsion per contact (from the file, or --torsion for a
+    file without it) and the metrics resist (--wrench), volume, sigma-min and isotropy, each
+    equal to the local batch."""
+    from pqhull import ray as pqray
+
+    p, nrm = grasps(400, 3, 11)
+    torsion = np.random.default_rng(12).uniform(0.0, 0.05, (400, 3))
+    np.savez(tmp_path / "soft.npz", positions=p, normals=nrm, friction=0.6, cone_edges=6,
+             torsion=torsion)
+    np.savez(tmp_path / "plain.npz", positions=p[:150], normals=nrm[:150], friction=0.6,
+             cone_edges=6)
+    sets = {
+        "plain": dict(positions=p[:150], normals=nrm[:150], friction=0.6, cone_edges=6,
+                      torsion=0.02),
+        "soft": dict(positions=p, normals=nrm, friction=0.6, cone_edges=6, torsion=torsion),
+    }
+    wrench = "0.1,-0.3,-1,0.02,0,0.05"
+    for metric, extra, options in [
+        ("resist", ["--wrench", wrench], dict(wrench=[0.1, -0.3, -1, 0.02, 0, 0.05])),
+        ("qinf", [], {}),
+        ("isotropy", [], {}),
+        ("volume", ["--method", "full"], dict(method="full")),
+    ]:
+        out = tmp_path / f"{metric}.npz"
+        cluster.evaluate(tmp_path / "plain.npz", tmp_path / "soft.npz", "--output", out,
+                         "--metric", metric, "--torsion", "0.02", "--chunk-size", "128",
+                         "--quiet", *extra)
+        assert_equal(pqray.load_results(out), sets, metric=metric, **options)
+    result = cluster.evaluate(tmp_path / "soft.npz", "--output", tmp_path / "o.npz", "--metric",
+                              "resist", "--wrench", "0,0,0,0,0,0", check=False)
+    assert result.returncode == 2 and "zero" in result.stderr, result.stderr
+    assert not (tmp_path / "o.npz").exists()
+
+
 def test_a_worker_killed_mid_run_loses_nothing(cluster, tmp_path):
     from pqhull import ray as pqray
 
@@ -202,3 +237,32 @@ def test_local_address_starts_and_ends_its_own_cluster(cluster, tmp_path):
                 tmp_path / "one.npz", "--output", tmp_path / "local.npz", "--quiet")
     assert_equal(pqray.load_results(tmp_path / "local.npz"),
                  {"one": dict(positions=p, normals=nrm, friction=0.5, cone_edges=8)})
+
+
+def test_open_grasp_set_checks_headers_and_reads_no_array(tmp_path, monkeypatch):
+    """A dataset file is opened from its .npy headers only (so the driver holds one file's
+    arrays at a time), with the same checks as a loaded set; it is read on load()."""
+    from pqhull import ray as pqray
+
+    p, nrm = grasps(30, 4, 13)
+    np.savez(tmp_path / "a.npz", positions=p, normals=nrm, friction=0.5, torsion=0.01)
+    np.savez(tmp_path / "bad.npz", positions=p, normals=nrm, friction=np.ones(29), cone_edges=8)
+    real_load = np.load
+
+    def no_load(*args, **kwargs):
+        raise AssertionError("an array was read")
+
+    monkeypatch.setattr(np, "load", no_load)
+    opened = pqray.open_grasp_set(tmp_path / "a.npz", cone_edges=6)
+    assert len(opened) == 30 and opened.name == "a"
+    opened.check(needs_space=False)
+    with pytest.raises(pqhull.InputError, match="needs a wrench space"):
+        opened.check(needs_space=True)
+    with pytest.raises(pqhull.InputError, match="friction must be one number or one per grasp"):
+        pqray.open_grasp_set(tmp_path / "bad.npz").check(needs_space=False)
+    with pytest.raises(pqhull.InputError, match="no 'cone_edges'"):
+        pqray.open_grasp_set(tmp_path / "a.npz")
+    monkeypatch.setattr(np, "load", real_load)
+    loaded = opened.load()
+    assert loaded.cone_edges == 6 and float(loaded.torsion) == 0.01
+    assert np.array_equal(loaded.positions, p)

@@ -93,13 +93,26 @@ impl fmt::Display for QualityError {
                 )
             }
             QualityError::Qhull(message) => write!(f, "qhull failed: {message}"),
-            QualityError::UnsupportedMethod { method, metric } => write!(
-                f,
-                "the {} method does not compute {} (partial and full compute every metric; \
-                 qhull only q1 and qinf; partial-rays and ellipsoid only ows)",
-                method.name(),
-                metric.name()
-            ),
+            QualityError::UnsupportedMethod { method, metric } => {
+                let takes: Vec<&str> = [
+                    Method::Partial,
+                    Method::Full,
+                    Method::Qhull,
+                    Method::PartialRays,
+                    Method::Ellipsoid,
+                ]
+                .into_iter()
+                .filter(|m| m.supports(*metric))
+                .map(Method::name)
+                .collect();
+                write!(
+                    f,
+                    "the {} method does not compute {} (it takes {})",
+                    method.name(),
+                    metric.name(),
+                    takes.join(", ")
+                )
+            }
             QualityError::OwsNeedsWrenchSpace => f.write_str(
                 "Q_OWS needs the object's wrench space: evaluate it with an OwsEvaluator",
             ),

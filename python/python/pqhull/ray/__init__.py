@@ -23,6 +23,7 @@ from __future__ import annotations
 import dataclasses
 import os
 import pathlib
+import zipfile
 from typing import Callable, Iterable, Optional, Sequence, Union
 
 import numpy as np
@@ -39,8 +40,10 @@ import pqhull
 
 __all__ = [
     "GraspSet",
+    "GraspFile",
     "ObjectResult",
     "load_grasp_set",
+    "open_grasp_set",
     "evaluate_dataset",
     "save_results",
     "load_results",
@@ -52,8 +55,9 @@ __all__ = [
 DEFAULT_CHUNK_SIZE = 2048
 
 #: Keys a grasp-set file may hold; anything else is refused (a typo must not be ignored).
-FILE_KEYS = ("positions", "normals", "tangents", "friction", "cone_edges", "torque_reference",
-             "torque_scale", "vertices", "faces", "disturbances", "ows_friction", "ows_edges")
+FILE_KEYS = ("positions", "normals", "tangents", "torsion", "friction", "cone_edges",
+             "torque_reference", "torque_scale", "vertices", "faces", "disturbances",
+             "ows_friction", "ows_edges")
 
 
 @dataclasses.dataclass
@@ -62,6 +66,7 @@ class GraspSet:
     built from (for ``metric="ows"``).
 
     - ``positions``, ``normals`` (and optional ``tangents``): (N, m, 3) arrays;
+    - ``torsion`` (optional): soft contacts' torsional friction, one number or (N, m);
     - ``friction``: one value or one per grasp; ``cone_edges``: the friction pyramid's edges;
     - ``torque_reference`` (3,), ``torque_scale``: the grasps' torque frame (ignored for a space
       built from a mesh, which sets its own);
@@ -76,6 +81,7 @@ class GraspSet:
     friction: Union[float, np.ndarray]
     cone_edges: int
     tangents: Optional[np.ndarray] = None
+    torsion: Optional[Union[float, np.ndarray]] = None
     torque_reference: Optional[np.ndarray] = None
     torque_scale: Optional[float] = None
     space: Optional[pqhull.ObjectWrenchSpace] = None
@@ -91,35 +97,50 @@ class GraspSet:
     def check(self, needs_space: bool) -> None:
         """Raises :class:`pqhull.InputError` naming this set when its arrays cannot be
         evaluated as a whole (bad rows are reported per row by the evaluation instead)."""
-        def fail(message):
-            raise pqhull.InputError(f"grasp set {self.name!r}: {message}")
-
         self.positions = np.ascontiguousarray(self.positions, dtype=np.float64)
         self.normals = np.ascontiguousarray(self.normals, dtype=np.float64)
-        shape = self.positions.shape
-        if len(shape) != 3 or shape[2] != 3:
-            fail(f"positions must have shape (N, m, 3), not {shape}")
-        if self.normals.shape != shape:
-            fail(f"normals have shape {self.normals.shape}, positions {shape}")
         if self.tangents is not None:
             self.tangents = np.ascontiguousarray(self.tangents, dtype=np.float64)
-            if self.tangents.shape != shape:
-                fail(f"tangents have shape {self.tangents.shape}, positions {shape}")
         friction = np.asarray(self.friction, dtype=np.float64)
-        if friction.ndim > 1 or (friction.ndim == 1 and len(friction) != shape[0]):
-            fail(f"friction must be one number or one per grasp ({shape[0]}), "
-                 f"not shape {friction.shape}")
         self.friction = friction if friction.ndim == 1 else float(friction)
-        sources = [n for n, v in (("space", self.space), ("vertices", self.vertices),
-                                  ("disturbances", self.disturbances)) if v is not None]
-        if len(sources) > 1:
-            fail(f"give one wrench space, not {' and '.join(sources)}")
-        if (self.vertices is None) != (self.faces is None):
-            fail("a mesh needs both vertices and faces")
-        if self.vertices is not None and (self.ows_friction is None or self.ows_edges is None):
-            fail("a mesh's wrench space needs ows_friction and ows_edges")
-        if needs_space and not sources:
-            fail("metric 'ows' needs a wrench space (space, vertices and faces, or disturbances)")
+        if self.torsion is not None:
+            torsion = np.asarray(self.torsion, dtype=np.float64)
+            self.torsion = torsion if torsion.ndim > 0 else float(torsion)
+        shapes = {key: np.shape(getattr(self, key)) for key in
+                  ("positions", "normals", "tangents", "torsion", "friction", "vertices",
+                   "disturbances") if getattr(self, key) is not None}
+        present = {key for key in ("space", "faces", "ows_friction", "ows_edges")
+                   if getattr(self, key) is not None}
+        _check_layout(self.name, shapes, present, needs_space)
+
+
+def _check_layout(name, shapes, present, needs_space):
+    """What :meth:`GraspSet.check` checks, from the arrays' shapes alone (`present`: the other
+    fields given), so that a file can be checked from its headers."""
+    def fail(message):
+        raise pqhull.InputError(f"grasp set {name!r}: {message}")
+
+    shape = shapes["positions"]
+    if len(shape) != 3 or shape[2] != 3:
+        fail(f"positions must have shape (N, m, 3), not {shape}")
+    for key in ("normals", "tangents"):
+        if key in shapes and shapes[key] != shape:
+            fail(f"{key} have shape {shapes[key]}, positions {shape}")
+    friction = shapes["friction"]
+    if len(friction) > 1 or (len(friction) == 1 and friction[0] != shape[0]):
+        fail(f"friction must be one number or one per grasp ({shape[0]}), not shape {friction}")
+    if "torsion" in shapes and shapes["torsion"] not in ((), shape[:2]):
+        fail(f"torsion must be one number or one per contact {shape[:2]}, "
+             f"not shape {shapes['torsion']}")
+    sources = [n for n in ("space", "vertices", "disturbances") if n in shapes or n in present]
+    if len(sources) > 1:
+        fail(f"give one wrench space, not {' and '.join(sources)}")
+    if ("vertices" in shapes) != ("faces" in present):
+        fail("a mesh needs both vertices and faces")
+    if "vertices" in shapes and not {"ows_friction", "ows_edges"} <= present:
+        fail("a mesh's wrench space needs ows_friction and ows_edges")
+    if needs_space and not sources:
+        fail("metric 'ows' needs a wrench space (space, vertices and faces, or disturbances)")
 
 
 @dataclasses.dataclass
@@ -136,16 +157,15 @@ class ObjectResult:
 def load_grasp_set(path, **defaults) -> GraspSet:
     """A grasp set from a ``.npz`` file whose arrays are named as :class:`GraspSet`'s fields
     (``positions``, ``normals``, …); its name is the file's stem. ``defaults`` fill fields the
-    file does not hold (``friction=0.5``, ``cone_edges=8``, …)."""
+    file does not hold (``friction=0.5``, ``cone_edges=8``, …). The whole file is read now;
+    :func:`open_grasp_set` reads it only when its grasps are evaluated."""
     path = pathlib.Path(path)
     try:
         with np.load(path, allow_pickle=False) as data:
             arrays = {key: data[key] for key in data.files}
     except (OSError, ValueError) as e:
         raise pqhull.InputError(f"{path}: not a readable .npz file ({e})") from None
-    unknown = sorted(set(arrays) - set(FILE_KEYS))
-    if unknown:
-        raise pqhull.InputError(f"{path}: unknown arrays {unknown}; known: {list(FILE_KEYS)}")
+    _known(path, arrays)
     fields = dict(defaults)
     for key, value in arrays.items():
         if key in ("cone_edges", "ows_edges"):
@@ -154,10 +174,70 @@ def load_grasp_set(path, **defaults) -> GraspSet:
             fields[key] = float(value)
         else:
             fields[key] = value
+    _required(path, fields)
+    return GraspSet(name=path.stem, **fields)
+
+
+def _known(path, keys):
+    unknown = sorted(set(keys) - set(FILE_KEYS))
+    if unknown:
+        raise pqhull.InputError(f"{path}: unknown arrays {unknown}; known: {list(FILE_KEYS)}")
+
+
+def _required(path, fields):
     for key in ("positions", "normals", "friction", "cone_edges"):
         if key not in fields:
             raise pqhull.InputError(f"{path}: no {key!r} (in the file or given as a default)")
-    return GraspSet(name=path.stem, **fields)
+
+
+@dataclasses.dataclass
+class GraspFile:
+    """A grasp set still on disk (:func:`open_grasp_set`): checked from its arrays' headers,
+    read when :func:`evaluate_dataset` reaches it, and let go once its last chunk is submitted,
+    so a dataset of many files needs the driver's memory for one file at a time."""
+
+    path: pathlib.Path
+    name: str
+    defaults: dict
+    shapes: dict
+    present: set
+
+    def __len__(self) -> int:
+        return self.shapes["positions"][0]
+
+    def check(self, needs_space: bool) -> None:
+        """As :meth:`GraspSet.check`, from the headers."""
+        _check_layout(self.name, self.shapes, self.present, needs_space)
+
+    def load(self) -> GraspSet:
+        """The set, read from the file now."""
+        return load_grasp_set(self.path, **self.defaults)
+
+
+def open_grasp_set(path, **defaults) -> GraspFile:
+    """A grasp set file (as :func:`load_grasp_set`) opened without reading its arrays: only
+    their names and shapes (the ``.npy`` headers inside the ``.npz``) are read and checked."""
+    path = pathlib.Path(path)
+    shapes = {}
+    try:
+        with zipfile.ZipFile(path) as archive:
+            for member in archive.namelist():
+                key = member[:-4] if member.endswith(".npy") else member
+                with archive.open(member) as f:
+                    version = np.lib.format.read_magic(f)
+                    read = (np.lib.format.read_array_header_1_0 if version == (1, 0)
+                            else np.lib.format.read_array_header_2_0)
+                    shapes[key] = tuple(read(f)[0])
+    except (OSError, ValueError, zipfile.BadZipFile) as e:
+        raise pqhull.InputError(f"{path}: not a readable .npz file ({e})") from None
+    _known(path, shapes)
+    fields = {**{key: () for key in defaults}, **shapes}
+    _required(path, fields)
+    array_keys = ("positions", "normals", "tangents", "torsion", "friction", "vertices",
+                  "disturbances")
+    return GraspFile(path, path.stem, dict(defaults),
+                     {key: tuple(fields[key]) for key in array_keys if key in fields},
+                     {key for key in fields if key not in array_keys})
 
 
 def _frame(reference, scale):
@@ -192,10 +272,10 @@ def _space(boxed):
 
 
 @ray.remote(num_cpus=1)
-def _evaluate_chunk(positions, normals, tangents, friction, cone_edges, frame, boxed_space,
-                    options):
+def _evaluate_chunk(positions, normals, tangents, torsion, friction, cone_edges, frame,
+                    boxed_space, options):
     space = None if boxed_space is None else _space(boxed_space)
-    batch = pqhull.evaluate(positions, normals, tangents, friction=friction,
+    batch = pqhull.evaluate(positions, normals, tangents, torsion=torsion, friction=friction,
                             cone_edges=cone_edges, space=space, threads=1, **frame, **options)
     return batch.quality, batch.force_closure, batch.errors
 
@@ -213,11 +293,12 @@ def _connect(address, node_ip_address):
 
 
 def evaluate_dataset(
-    grasp_sets: Iterable[GraspSet],
+    grasp_sets: Iterable[Union[GraspSet, GraspFile]],
     *,
     metric: str = "q1",
     method: str = "partial",
     with_zero_wrench: bool = False,
+    wrench: Optional[Sequence[float]] = None,
     chunk_size: int = DEFAULT_CHUNK_SIZE,
     address: Optional[str] = None,
     node_ip_address: Optional[str] = None,
@@ -226,7 +307,10 @@ def evaluate_dataset(
     progress: Optional[Callable[[int, int], None]] = None,
 ) -> list:
     """Evaluates every grasp set on Ray and returns one :class:`ObjectResult` per set, in input
-    order, each equal (bit for bit) to :func:`pqhull.evaluate` on that set alone.
+    order, each equal (bit for bit) to :func:`pqhull.evaluate` on that set alone. ``metric``,
+    ``method``, ``with_zero_wrench`` and ``wrench`` (for ``"resist"``) are
+    :func:`pqhull.evaluate`'s. A :class:`GraspFile` is read when its first chunk is submitted
+    and let go after its last, so only one file's arrays are in the driver's memory at a time.
 
     ``address``: ``None`` uses the current Ray session (or starts one as ``ray.init()`` does),
     ``"local"`` starts a single-machine cluster for this call, ``"auto"`` or ``"HOST:PORT"``
@@ -248,6 +332,9 @@ def evaluate_dataset(
     for s in sets:
         s.check(needs_space=metric == "ows")
     options = dict(metric=metric, method=method, with_zero_wrench=with_zero_wrench)
+    if wrench is not None:
+        options["wrench"] = np.asarray(wrench, dtype=np.float64)
+    _check_options(options)
     started_here = _connect(address, node_ip_address)
     try:
         return _run(sets, options, chunk_size, max_in_flight, max_retries, progress)
@@ -256,33 +343,57 @@ def evaluate_dataset(
             ray.shutdown()
 
 
+def _check_options(options):
+    """Raises what :func:`pqhull.evaluate` raises for these options (an unknown metric, a method
+    the metric does not take, a zero wrench to resist), before anything is submitted: an empty
+    batch runs every check on them."""
+    empty = np.zeros((0, 1, 3))
+    space = (pqhull.ObjectWrenchSpace.from_disturbances(np.eye(6))
+             if options["metric"] == "ows" else None)
+    pqhull.evaluate(empty, empty, friction=0.5, cone_edges=4, space=space, **options)
+
+
 def _run(sets, options, chunk_size, max_in_flight, max_retries, progress):
     evaluate = _evaluate_chunk.options(max_retries=max_retries, retry_exceptions=False)
     build = _build_space.options(max_retries=max_retries, retry_exceptions=False)
-    spaces = []
-    for s in sets:
-        if options["metric"] != "ows":
-            spaces.append(None)
-        elif s.space is not None:
-            spaces.append([ray.put(s.space)])
-        else:
-            spaces.append([build.remote(s.vertices, s.faces, s.disturbances, s.ows_friction,
-                                        s.ows_edges)])
     results = [ObjectResult(s.name, np.full(len(s), np.nan), np.zeros(len(s), dtype=bool), [])
                for s in sets]
-    chunks = iter([(i, start, min(start + chunk_size, len(s)))
-                   for i, s in enumerate(sets) for start in range(0, len(s), chunk_size)])
+    chunks = ((i, start, min(start + chunk_size, len(s)))
+              for i, s in enumerate(sets) for start in range(0, len(s), chunk_size))
     total = sum(len(s) for s in sets)
     if max_in_flight is None:
         max_in_flight = 2 * int(ray.cluster_resources().get("CPU", 1)) + 2
+    # The set whose chunks are being submitted, its arrays and its space: chunks come set by set,
+    # so a file's arrays are dropped (the submitted chunks hold their own slices) when the next
+    # set starts.
+    current = {}
+
+    def open_set(i):
+        s = sets[i]
+        if isinstance(s, GraspFile):
+            s = s.load()
+            s.check(needs_space=options["metric"] == "ows")
+        if options["metric"] != "ows":
+            space = None
+        elif s.space is not None:
+            space = [ray.put(s.space)]
+        else:
+            space = [build.remote(s.vertices, s.faces, s.disturbances, s.ows_friction,
+                                  s.ows_edges)]
+        current.clear()
+        current[i] = (s, space)
 
     def submit(i, start, stop):
-        s = sets[i]
-        friction = s.friction if np.ndim(s.friction) == 0 else s.friction[start:stop]
-        tangents = None if s.tangents is None else s.tangents[start:stop]
+        if i not in current:
+            open_set(i)
+        s, space = current[i]
+        rows = slice(start, stop)
+        friction = s.friction if np.ndim(s.friction) == 0 else s.friction[rows]
+        torsion = s.torsion if np.ndim(s.torsion) == 0 else s.torsion[rows]
+        tangents = None if s.tangents is None else s.tangents[rows]
         frame = _frame(s.torque_reference, s.torque_scale)
-        return evaluate.remote(s.positions[start:stop], s.normals[start:stop], tangents,
-                               friction, s.cone_edges, frame, spaces[i], options)
+        return evaluate.remote(s.positions[rows], s.normals[rows], tangents, torsion, friction,
+                               s.cone_edges, frame, space, options)
 
     pending, done = {}, 0
     if progress is not None:

@@ -65,7 +65,10 @@ def main(argv=None):
                      help="'local' (a one-machine cluster for this run, the default), 'auto' "
                      "(the running cluster) or HOST:PORT")
     run.add_argument("--node-ip-address", help="this machine's address in the cluster")
-    run.add_argument("--metric", default="q1", choices=["q1", "qinf", "ows"])
+    run.add_argument("--metric", default="q1",
+                     choices=["q1", "qinf", "ows", "resist", "volume", "sigma-min", "isotropy"])
+    run.add_argument("--wrench", help="resist: the wrench to resist, fx,fy,fz,tx,ty,tz in the "
+                     "grasps' torque units (as pqh grasp --wrench)")
     run.add_argument("--method", default="partial",
                      help="partial (the default), full, qhull, partial-rays or ellipsoid, as "
                      "pqh grasp --method")
@@ -74,6 +77,8 @@ def main(argv=None):
     run.add_argument("--friction", type=float,
                      help="friction coefficient for sets whose file has none")
     run.add_argument("--cone-edges", type=int, help="cone edges for sets whose file has none")
+    run.add_argument("--torsion", type=float,
+                     help="soft contacts' torsion (a length) for sets whose file has none")
     run.add_argument("--ows-friction", type=float,
                      help="friction of the object wrench space's cones, for mesh sets whose "
                      "file has none")
@@ -87,14 +92,22 @@ def main(argv=None):
     args = parser.parse_args(argv)
 
     defaults = {key: value for key, value in (
-        ("friction", args.friction), ("cone_edges", args.cone_edges),
+        ("friction", args.friction), ("cone_edges", args.cone_edges), ("torsion", args.torsion),
         ("ows_friction", args.ows_friction), ("ows_edges", args.ows_edges)) if value is not None}
     try:
-        sets = [pqray.load_grasp_set(path, **defaults) for path in _inputs(args.inputs)]
+        wrench = None
+        if args.wrench is not None:
+            try:
+                wrench = [float(x) for x in args.wrench.split(",")]
+            except ValueError:
+                raise pqhull.InputError(f"--wrench {args.wrench!r}: six numbers, comma "
+                                        "separated") from None
+        # Opened, not read: each file is read when its grasps are submitted.
+        sets = [pqray.open_grasp_set(path, **defaults) for path in _inputs(args.inputs)]
         progress = _Progress(args.quiet)
         results = pqray.evaluate_dataset(
             sets, metric=args.metric, method=args.method,
-            with_zero_wrench=args.with_zero_wrench, chunk_size=args.chunk_size,
+            with_zero_wrench=args.with_zero_wrench, wrench=wrench, chunk_size=args.chunk_size,
             address=args.address, node_ip_address=args.node_ip_address,
             max_retries=args.max_retries, progress=progress)
         elapsed = (progress.finished or 0.0) - (progress.started or 0.0)
