@@ -1,7 +1,8 @@
 """Grasp datasets evaluated on a Ray cluster: many objects, each with many grasps.
 
 Install with the `ray` extra (``pip install './python[ray]'``). Each object's grasps are a
-:class:`GraspSet` (or a ``.npz`` file, :func:`load_grasp_set`); :func:`evaluate_dataset` splits
+:class:`GraspSet` (or a ``.npz`` file: :func:`load_grasp_set` reads it now, :func:`open_grasp_set`
+when its grasps are submitted); :func:`evaluate_dataset` splits
 every set into chunks, evaluates each chunk as a Ray task with :func:`pqhull.evaluate`, and puts
 the results back in input order. An object's wrench space (Q_OWS) is built once, by a task, and
 shared through the object store: every chunk of that object receives a reference to it, and each
