@@ -7,9 +7,9 @@ use numpy::{
     PyArray1, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArrayMethods,
     ToPyArray,
 };
-use pqhull::grasp::metrics::Scorer;
-use pqhull::grasp::ows::{ObjectWrenchSpace as Space, OwsEvaluator, evaluate_ows_batch};
-use pqhull::grasp::quality::{Evaluator, Method, Metric, QualityError, evaluate_batch};
+use pqhull::grasp::metrics::{Score, Scorer};
+use pqhull::grasp::ows::{ObjectWrenchSpace as Space, evaluate_ows_batch};
+use pqhull::grasp::quality::{Method, Metric, QualityError, evaluate_batch};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
 use pyo3::prelude::*;
 
@@ -237,20 +237,22 @@ pub(crate) fn one_grasp(
 }
 
 impl Quality {
-    /// The Python value of an OWS-like result (no value when not force closure).
-    pub(crate) fn of_ows(q: &pqhull::grasp::ows::OwsQuality) -> Self {
+    /// The Python value of a [`Score`] (no value for Q_OWS or resistance when not force
+    /// closure).
+    pub(crate) fn of_score(s: &Score) -> Self {
         Quality {
-            value: q.value,
-            force_closure: q.force_closure,
-            points_processed: q.stats.points_processed,
-            facets_created: q.stats.facets_created,
-            elapsed_us: q.stats.elapsed.as_secs_f64() * 1e6,
+            value: s.value,
+            force_closure: s.force_closure,
+            points_processed: s.stats.points_processed,
+            facets_created: s.stats.facets_created,
+            elapsed_us: s.stats.elapsed.as_secs_f64() * 1e6,
         }
     }
 }
 
+/// One grasp by any metric ([`Scorer`]), for the single-grasp functions.
 #[allow(clippy::too_many_arguments)] // the Python signature
-fn single(
+pub(crate) fn single(
     py: Python<'_>,
     positions: PyReadonlyArray2<'_, f64>,
     normals: PyReadonlyArray2<'_, f64>,
@@ -275,27 +277,14 @@ fn single(
         torque_reference,
         torque_scale,
     )?;
-    match space {
-        None => {
-            let q = py
-                .detach(|| Evaluator::new(metric, method).evaluate(&g))
-                .map_err(errors::quality)?;
-            Ok(Quality {
-                value: Some(q.value),
-                force_closure: q.force_closure,
-                points_processed: q.stats.points_processed,
-                facets_created: q.stats.facets_created,
-                elapsed_us: q.stats.elapsed.as_secs_f64() * 1e6,
-            })
-        }
-        Some(space) => {
-            let g = in_frame(space, g, &frame).map_err(errors::grasp)?;
-            let q = py
-                .detach(|| OwsEvaluator::new(method).evaluate(&g, space))
-                .map_err(errors::quality)?;
-            Ok(Quality::of_ows(&q))
-        }
-    }
+    let g = match space {
+        Some(space) => in_frame(space, g, &frame).map_err(errors::grasp)?,
+        None => g,
+    };
+    let score = py
+        .detach(|| Scorer::new(metric, method, space)?.score(&g))
+        .map_err(crate::metrics::error)?;
+    Ok(Quality::of_score(&score))
 }
 
 /// q1(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,

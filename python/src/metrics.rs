@@ -2,7 +2,7 @@
 //! bracket, wrench resistance, the GWS volume and the grasp matrix's singular values.
 
 use crate::errors;
-use crate::grasps::{Quality, method_of, one_grasp};
+use crate::grasps::{Quality, method_of, one_grasp, single};
 use numpy::{PyArray1, PyReadonlyArray1, PyReadonlyArray2, ToPyArray};
 use pqhull::grasp::metrics::{self, MetricError};
 use pqhull::grasp::quality::Metric;
@@ -74,14 +74,14 @@ pub fn resist(
     torque_scale: Option<f64>,
     method: &str,
 ) -> PyResult<Quality> {
-    let method = method_of(method, Metric::Ows)?;
     let w = wrench
         .as_slice()
         .map_err(|e| errors::input(e.to_string()))?;
-    let w: [f64; 6] = w
+    let wrench: [f64; 6] = w
         .try_into()
         .map_err(|_| errors::input(format!("wrench must have 6 numbers, not {}", w.len())))?;
-    let (g, _) = one_grasp(
+    single(
+        py,
         positions,
         normals,
         tangents,
@@ -90,11 +90,10 @@ pub fn resist(
         cone_edges,
         torque_reference,
         torque_scale,
-    )?;
-    let q = py
-        .detach(|| metrics::resist(&g, w, method))
-        .map_err(error)?;
-    Ok(Quality::of_ows(&q))
+        Metric::Resist { wrench },
+        method,
+        None,
+    )
 }
 
 /// gws_volume(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,

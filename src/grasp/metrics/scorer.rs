@@ -11,7 +11,7 @@ use std::time::Instant;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Score {
     /// Whether the grasp is force closure. Q1, Q∞ and Q_OWS decide it with their value; the
-    /// volume and the grasp-matrix metrics by Q1 beside it ([`Metric::verdict_from_q1`]).
+    /// volume and the grasp-matrix metrics by Q1 beside it, by the scorer's method.
     pub force_closure: bool,
     /// The metric's value. `None` only for Q_OWS and wrench resistance of a grasp that is not
     /// force closure (no multiple of the disturbances is resisted, not even zero times them).

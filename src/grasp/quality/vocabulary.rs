@@ -57,19 +57,12 @@ impl Metric {
             Metric::Isotropy => "isotropy",
         }
     }
-
-    /// Whether the grasp's force-closure verdict is not part of the metric's value, and is
-    /// decided beside it by Q1 (by the method asked for): the volume and the grasp-matrix
-    /// metrics. Their value is computed one way whatever the method.
-    pub fn verdict_from_q1(self) -> bool {
-        matches!(self, Metric::Volume | Metric::SigmaMin | Metric::Isotropy)
-    }
 }
 
 /// How a metric is computed. Every metric takes [`Partial`](Method::Partial) (the default) and
 /// [`Full`](Method::Full) (for the volume and the grasp-matrix metrics, the method computes only
-/// the force-closure verdict: [`Metric::verdict_from_q1`]); the others belong to some metrics
-/// only, and the rest give
+/// the force-closure verdict, Q1's: see [`Scorer`](crate::grasp::metrics::Scorer)); the others
+/// belong to some metrics only, and the rest give
 /// [`QualityError::UnsupportedMethod`](super::QualityError::UnsupportedMethod).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 #[non_exhaustive]
