@@ -6,7 +6,7 @@ use super::facet::MAX_FLATS;
 use super::facet::{Facet, FacetId};
 use super::{Hull, HullError, NO_FLAT};
 use crate::geometry::vector::{dot, norm, sub};
-use crate::predicates::{FacetPlane, Sign, affinely_independent_subset, orientation};
+use crate::predicates::{ExactGrid, FacetPlane, Sign, affinely_independent_subset, orientation};
 use std::time::Instant;
 
 impl<const D: usize> Hull<D> {
@@ -35,6 +35,7 @@ impl<const D: usize> Hull<D> {
             scratch: Scratch::default(),
             flat_of: Vec::new(),
             flat_dim: 0,
+            grid: None,
             trace: None,
         }
     }
@@ -80,6 +81,7 @@ impl<const D: usize> Hull<D> {
         self.scale = scale;
         self.points
             .extend(input.iter().map(|p| p.map(|x| x * scale)));
+        self.grid = ExactGrid::of(&self.points);
         self.mark_repeats();
         let mut simplex = initial_simplex(&self.points)?;
         // Its vertices are distinct points: name each by its first copy, as every vertex is.
@@ -111,7 +113,7 @@ impl<const D: usize> Hull<D> {
                 vertices.swap(0, 1);
                 neighbors.swap(0, 1);
             }
-            let id = self.push_facet(vertices, neighbors);
+            let id = self.push_facet(vertices, neighbors, None);
             debug_assert_eq!(id.index(), first + k);
         }
         self.stats.points_processed = D + 1;
@@ -208,10 +210,12 @@ impl<const D: usize> Hull<D> {
     }
 
     /// Creates a facet (plane and normal computed here), reusing a tombstoned slot when possible.
+    /// `region` is the coplanar region it joins (see [`Facet`]'s `region`), `None` for a new one.
     pub(in crate::hull) fn push_facet(
         &mut self,
         vertices: [u32; D],
         neighbors: [FacetId; D],
+        region: Option<u64>,
     ) -> FacetId {
         let coords = self.coords(&vertices);
         let plane = FacetPlane::new(&coords);
@@ -258,8 +262,10 @@ impl<const D: usize> Hull<D> {
             farthest: None,
             alive: true,
             serial,
+            region: region.unwrap_or(serial),
             mark: 0,
             visible: false,
+            touching: false,
         };
         match self.free.pop() {
             Some(id) => {
@@ -282,6 +288,20 @@ impl<const D: usize> Hull<D> {
         let point = self.points[p as usize];
         let mut best: Option<(FacetId, f64, f64)> = None;
         let mut undecided = false;
+        if self.grid.is_some() {
+            // The value is the exact determinant (see `ExactGrid`): no bound, no fallback.
+            for &id in candidates {
+                let facet = &self.facets[id.index()];
+                let value = facet.plane.value(&point);
+                if value > 0.0 {
+                    let distance = value * facet.inv_norm;
+                    if best.is_none_or(|(_, d, _)| distance > d) {
+                        best = Some((id, distance, value));
+                    }
+                }
+            }
+            return self.push_outside(p, best);
+        }
         for &id in candidates {
             let facet = &self.facets[id.index()];
             if self.on_its_flat(facet, p) {
@@ -312,6 +332,11 @@ impl<const D: usize> Hull<D> {
                 }
             }
         }
+        self.push_outside(p, best)
+    }
+
+    /// Puts `p` in the outside set of `best`'s facet (with its orientation value), if any.
+    fn push_outside(&mut self, p: u32, best: Option<(FacetId, f64, f64)>) -> bool {
         let Some((id, _, value)) = best else {
             return false;
         };
@@ -337,9 +362,12 @@ impl<const D: usize> Hull<D> {
         if self.on_its_flat(facet, p) {
             return Sign::Zero;
         }
-        facet
-            .plane
-            .side(&self.points[p as usize], || self.coords(&facet.vertices))
+        let point = &self.points[p as usize];
+        if self.grid.is_some() {
+            // Every vertex and `p` are input points, all on the certified grid.
+            return facet.plane.side_on_grid(point);
+        }
+        facet.plane.side(point, || self.coords(&facet.vertices))
     }
 
     /// Whether input point `p` lies in a declared flat that `facet`'s hyperplane contains.

@@ -19,6 +19,9 @@ pub(in crate::hull) struct Scratch<const D: usize> {
     table: Vec<u32>,
     /// Points of removed outside sets awaiting reassignment.
     orphans: Vec<u32>,
+    /// (region, facet) of the created facets, sorted; and one facet of each region.
+    candidates: Vec<(u64, FacetId)>,
+    representatives: Vec<FacetId>,
     stack: Vec<FacetId>,
     /// The facets around one facet, breadth first, for [`Hull::claim_beyond`].
     ring: Vec<FacetId>,
@@ -100,6 +103,9 @@ impl<const D: usize> Hull<D> {
             return None;
         }
         let index = u32::try_from(self.points.len()).ok()?;
+        if self.grid.is_some_and(|grid| !grid.contains(&scaled)) {
+            self.grid = None; // the certificate covered the input alone
+        }
         self.points.push(scaled);
         if self.trace.is_some() {
             self.record_insertion(id, index as usize, point);
@@ -228,18 +234,31 @@ impl<const D: usize> Hull<D> {
         let f = &mut self.facets[start.index()];
         f.mark = epoch;
         f.visible = true;
+        f.touching = false; // `p` is strictly beyond the facet it was taken from
         while let Some(id) = self.scratch.stack.pop() {
             self.scratch.removed.push(id);
+            let (region, touching) = {
+                let f = &self.facets[id.index()];
+                (f.region, f.touching)
+            };
             for i in 0..D {
                 let n = self.facets[id.index()].neighbors[i];
                 let neighbor = &self.facets[n.index()];
                 let visible = if neighbor.mark == epoch {
                     neighbor.visible
                 } else {
-                    let visible = self.side_of_index(n, p) != Sign::Negative;
+                    // A neighbour in the same coplanar region spans the same hyperplane: `p`
+                    // is on the same side of it, with no test.
+                    let sign = if neighbor.region == region {
+                        if touching { Sign::Zero } else { Sign::Positive }
+                    } else {
+                        self.side_of_index(n, p)
+                    };
+                    let visible = sign != Sign::Negative;
                     let neighbor = &mut self.facets[n.index()];
                     neighbor.mark = epoch;
                     neighbor.visible = visible;
+                    neighbor.touching = sign == Sign::Zero;
                     if visible {
                         self.scratch.stack.push(n);
                     }
@@ -266,7 +285,9 @@ impl<const D: usize> Hull<D> {
             vertices[i] = p;
             let mut neighbors = [FacetId::NONE; D];
             neighbors[i] = outer;
-            let new = self.push_facet(vertices, neighbors);
+            // With `p` on the removed facet's plane, the new facet lies in that hyperplane.
+            let region = old.touching.then_some(old.region);
+            let new = self.push_facet(vertices, neighbors, region);
             self.scratch.created.push(new);
             let back = self.facets[outer.index()]
                 .neighbors
@@ -334,11 +355,26 @@ impl<const D: usize> Hull<D> {
         }
         self.live -= self.scratch.removed.len();
         let orphans = std::mem::take(&mut self.scratch.orphans);
-        let created = std::mem::take(&mut self.scratch.created);
+        // One candidate per coplanar region: a point's side of a hyperplane is the same for every
+        // facet spanning it, so testing the others would repeat the same determinant.
+        let mut candidates = std::mem::take(&mut self.scratch.candidates);
+        candidates.clear();
+        candidates.extend(
+            self.scratch
+                .created
+                .iter()
+                .map(|&id| (self.facets[id.index()].region, id)),
+        );
+        candidates.sort_unstable();
+        candidates.dedup_by_key(|(region, _)| *region);
+        let mut representatives = std::mem::take(&mut self.scratch.representatives);
+        representatives.clear();
+        representatives.extend(candidates.iter().map(|&(_, id)| id));
         for &q in &orphans {
-            self.assign(q, &created);
+            self.assign(q, &representatives);
         }
         self.scratch.orphans = orphans;
-        self.scratch.created = created;
+        self.scratch.candidates = candidates;
+        self.scratch.representatives = representatives;
     }
 }

@@ -55,9 +55,15 @@ pub struct Facet<const D: usize> {
     pub(in crate::hull) farthest: Option<(u32, f64)>,
     pub(in crate::hull) alive: bool,
     pub(in crate::hull) serial: u64,
-    /// Visit epoch and verdict of the last horizon search that looked at this facet.
+    /// The coplanar region: facets with equal `region` span the same hyperplane, exactly. A new
+    /// facet built on a ridge of a removed facet whose plane held the new point inherits that
+    /// facet's region (it lies in the same hyperplane); any other takes its own serial.
+    pub(in crate::hull) region: u64,
+    /// Visit epoch and verdict of the last horizon search that looked at this facet: `visible`
+    /// when the new point is on or beyond it, `touching` when exactly on its plane.
     pub(in crate::hull) mark: u32,
     pub(in crate::hull) visible: bool,
+    pub(in crate::hull) touching: bool,
 }
 
 impl<const D: usize> Facet<D> {

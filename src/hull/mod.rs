@@ -35,7 +35,7 @@ pub use record::{Event, FacetSnapshot, Key, Replay, Trace, TraceContext, TraceTe
 pub use strategy::{ReusableStrategy, Stats, Step, Strategy};
 
 use crate::geometry::vector::norm;
-use crate::predicates::Sign;
+use crate::predicates::{ExactGrid, Sign};
 
 /// No declared flat (see [`Hull::rebuild_with_flats`]).
 pub const NO_FLAT: u32 = u32::MAX;
@@ -78,6 +78,9 @@ pub struct Hull<const D: usize> {
     flat_of: Vec<u32>,
     /// The dimension of every declared flat.
     flat_dim: usize,
+    /// When every point lies on one coarse power-of-two grid, the proof that the filter's value
+    /// is exact for every side test among them ([`ExactGrid`]); `None` otherwise.
+    grid: Option<ExactGrid<D>>,
     /// The run being recorded, if any ([`Hull::try_with_strategy_traced`]); `None` costs each
     /// trace hook one branch.
     trace: Option<Box<Trace<D>>>,

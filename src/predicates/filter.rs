@@ -214,6 +214,27 @@ impl<const D: usize> FacetPlane<D> {
         (value, if in_range { bound } else { f64::INFINITY })
     }
 
+    /// The floating-point value of `det[v1 − v0; …; v(D−1) − v0; p − v0]` alone (the first half of
+    /// [`evaluate`](Self::evaluate), without its error bound): the exact determinant when the
+    /// vertices and `p` are covered by one [`ExactGrid`](super::ExactGrid).
+    #[inline]
+    pub fn value(&self, p: &[f64; D]) -> f64 {
+        let mut value = 0.0;
+        for ((&x, &b), &c) in p.iter().zip(&self.base).zip(&self.cofactors) {
+            value += c * (x - b);
+        }
+        value
+    }
+
+    /// The exact sign of [`orientation`](super::orientation)`(vertices, p)` when this plane's
+    /// vertices and `p` lie in the box and on the grid of one [`ExactGrid`](super::ExactGrid):
+    /// the sign of [`value`](Self::value), which is then exact. For any other input the answer
+    /// means nothing: callers hold the certificate.
+    #[inline]
+    pub fn side_on_grid(&self, p: &[f64; D]) -> Sign {
+        exact::sign_of(self.value(p))
+    }
+
     /// The exact sign of [`orientation`](super::orientation)`(vertices, p)`, where `vertices` are
     /// the points this plane was built from.
     ///

@@ -64,12 +64,14 @@
 
 mod exact;
 mod filter;
+mod grid;
 #[cfg(test)]
 mod tests;
 mod wide;
 
 pub use exact::exact_cofactor_direction;
 pub use filter::FacetPlane;
+pub use grid::ExactGrid;
 pub use wide::times_power_of_two;
 
 /// The sign of an orientation determinant.
