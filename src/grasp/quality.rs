@@ -266,7 +266,7 @@ impl HullBuffers {
     ) -> Result<(&'h Hull<6>, S::Output), HullError> {
         let h = hull.get_or_insert_with(Hull::empty);
         let output = match pyramids {
-            Some(contact_of) => h.rebuild_with_flats(w, contact_of, 2, strategy)?,
+            Some(contact_of) => h.rebuild_with_trusted_flats(w, contact_of, 2, strategy)?,
             None => h.rebuild_with_strategy(w, strategy)?,
         };
         Ok((h, output))

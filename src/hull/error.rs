@@ -39,6 +39,31 @@ pub enum HullError {
         /// The dimension D.
         dimension: usize,
     },
+    /// [`Hull::rebuild_with_flats`](crate::Hull::rebuild_with_flats) was given a flat dimension
+    /// outside `1..D`.
+    FlatDimension {
+        /// The flat dimension given.
+        flat_dim: usize,
+        /// The dimension D.
+        dimension: usize,
+    },
+    /// [`Hull::rebuild_with_flats`](crate::Hull::rebuild_with_flats) was given more flat labels
+    /// than points.
+    TooManyFlatLabels {
+        /// Labels given.
+        labels: usize,
+        /// Points given.
+        points: usize,
+    },
+    /// The points declared in one flat span more than the declared flat dimension (exact rank).
+    NotInFlat {
+        /// The flat's label.
+        flat: u32,
+        /// A point of it outside the flat spanned by the points before it.
+        index: usize,
+        /// The declared flat dimension.
+        flat_dim: usize,
+    },
 }
 
 impl fmt::Display for HullError {
@@ -62,6 +87,27 @@ impl fmt::Display for HullError {
                 f,
                 "the points are affinely dependent: they span an affine subspace of dimension \
                  {rank}, not {dimension}"
+            ),
+            HullError::FlatDimension {
+                flat_dim,
+                dimension,
+            } => write!(
+                f,
+                "declared flats must have dimension 1 to {}, got {flat_dim}",
+                dimension - 1
+            ),
+            HullError::TooManyFlatLabels { labels, points } => write!(
+                f,
+                "{labels} flat labels for {points} points: at most one label per point"
+            ),
+            HullError::NotInFlat {
+                flat,
+                index,
+                flat_dim,
+            } => write!(
+                f,
+                "point {index} is declared in flat {flat}, but the points declared there span \
+                 more than {flat_dim} dimensions with it"
             ),
         }
     }

@@ -168,11 +168,28 @@ impl<const D: usize> Hull<D> {
     /// point of a pyramid tested against a facet through three of its edges is the common case in
     /// which the floating-point filter fails and exact arithmetic is needed.
     ///
-    /// # Correctness
-    /// The claim is trusted, not checked (checking it would cost the exact arithmetic it saves):
-    /// a point declared in a flat it is not in exactly makes a wrong hull (never undefined
-    /// behaviour). Callers prove it by construction, as the grasp layer does for its snapped
-    /// friction pyramids.
+    /// The claim is checked before anything is built: each flat's points must span at most
+    /// `flat_dim` dimensions (exact rank, rational arithmetic: a cost per flat, paid once, that
+    /// the grasp layer, which proves its flats by construction, skips).
+    ///
+    /// ```
+    /// use pqhull::{FarthestPoint, Hull, HullError};
+    /// // A square pyramid: the base's four corners lie in one 2-flat (label 0).
+    /// let points = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0], [0.5, 0.5, 1.0]];
+    /// let mut hull = Hull::empty();
+    /// hull.rebuild_with_flats(&points, &[0, 0, 0, 0], 2, FarthestPoint::new())?;
+    /// assert_eq!(hull.vertex_indices(), vec![0, 1, 2, 3, 4]);
+    /// // The apex is not in the base's plane: the claim is refused.
+    /// let wrong = hull.rebuild_with_flats(&points, &[0, 0, 0, 0, 0], 2, FarthestPoint::new());
+    /// assert!(matches!(wrong, Err(HullError::NotInFlat { index: 4, .. })));
+    /// # Ok::<(), HullError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`Hull::try_new`]; [`HullError::FlatDimension`] for `flat_dim` outside `1..D`,
+    /// [`HullError::TooManyFlatLabels`] for more labels than points, and
+    /// [`HullError::NotInFlat`] for a flat whose points span more than `flat_dim` dimensions.
+    /// The hull is then left empty.
     pub fn rebuild_with_flats<S: Strategy<D>>(
         &mut self,
         points: &[[f64; D]],
@@ -180,10 +197,32 @@ impl<const D: usize> Hull<D> {
         flat_dim: usize,
         strategy: S,
     ) -> Result<S::Output, HullError> {
-        debug_assert!(
-            (1..D).contains(&flat_dim),
-            "flats of dimension 1..D − 1, got {flat_dim}"
-        );
+        if let Err(error) = check_flats(points, flat_of, flat_dim) {
+            self.flat_of.clear();
+            // An empty point set leaves the hull empty (no live facet).
+            let _ = self.initialise(&[]);
+            return Err(error);
+        }
+        self.rebuild_with_trusted_flats(points, flat_of, flat_dim, strategy)
+    }
+
+    /// [`rebuild_with_flats`](Self::rebuild_with_flats) without the check of the claim, for
+    /// callers that prove it by construction (the grasp layer's snapped friction pyramids). A
+    /// point declared in a flat it is not in exactly makes a wrong hull (never undefined
+    /// behaviour); `flat_dim` must be in `1..D`.
+    pub(crate) fn rebuild_with_trusted_flats<S: Strategy<D>>(
+        &mut self,
+        points: &[[f64; D]],
+        flat_of: &[u32],
+        flat_dim: usize,
+        strategy: S,
+    ) -> Result<S::Output, HullError> {
+        if !(1..D).contains(&flat_dim) {
+            return Err(HullError::FlatDimension {
+                flat_dim,
+                dimension: D,
+            });
+        }
         self.flat_of.clear();
         self.flat_of.extend_from_slice(flat_of);
         self.flat_dim = flat_dim;
@@ -349,4 +388,52 @@ impl<const D: usize> Hull<D> {
     pub fn signed_distance(&self, id: FacetId, x: &[f64; D]) -> f64 {
         self.facet(id).signed_distance(x)
     }
+}
+
+/// The checks of [`Hull::rebuild_with_flats`]: the flat dimension, the labels' count, finite
+/// coordinates, and each flat's exact affine rank.
+fn check_flats<const D: usize>(
+    points: &[[f64; D]],
+    flat_of: &[u32],
+    flat_dim: usize,
+) -> Result<(), HullError> {
+    if !(1..D).contains(&flat_dim) {
+        return Err(HullError::FlatDimension {
+            flat_dim,
+            dimension: D,
+        });
+    }
+    if flat_of.len() > points.len() {
+        return Err(HullError::TooManyFlatLabels {
+            labels: flat_of.len(),
+            points: points.len(),
+        });
+    }
+    if let Some((index, p)) = points
+        .iter()
+        .enumerate()
+        .find(|(_, p)| p.iter().any(|x| !x.is_finite()))
+    {
+        let coordinate = p.iter().position(|x| !x.is_finite()).unwrap_or(0);
+        return Err(HullError::NonFinite { index, coordinate });
+    }
+    let mut members: Vec<(u32, usize)> = flat_of
+        .iter()
+        .enumerate()
+        .filter(|&(_, &f)| f != NO_FLAT)
+        .map(|(i, &f)| (f, i))
+        .collect();
+    members.sort_unstable();
+    for group in members.chunk_by(|a, b| a.0 == b.0) {
+        let flat: Vec<[f64; D]> = group.iter().map(|&(_, i)| points[i]).collect();
+        let independent = crate::predicates::affinely_independent_subset(&flat);
+        if independent.len() > flat_dim + 1 {
+            return Err(HullError::NotInFlat {
+                flat: group[0].0,
+                index: group[independent[flat_dim + 1]].1,
+                flat_dim,
+            });
+        }
+    }
+    Ok(())
 }

@@ -703,3 +703,93 @@ fn exact_distance_case<const D: usize>() {
 fn exact_distance_agrees_with_rational_reference() {
     all_dims!(exact_distance_case);
 }
+
+/// Points on a grid whose certificate holds, at the edge of its bound: the floating-point value
+/// *is* the determinant (equal to the rational reference, not only in sign); and a grid just
+/// past the bound is refused.
+fn exact_grid_case<const D: usize>() {
+    use super::ExactGrid;
+    // The largest span s with D!·s^D < 2^52, and the grid step 2^−e that fits s units in [0, 1].
+    let factorial: f64 = (1..=D).map(|k| k as f64).product();
+    let mut span = 1u64;
+    while factorial * ((span + 1) as f64).powi(D as i32) < 4_503_599_627_370_496.0 {
+        span += 1;
+    }
+    let step = 1.0 / (span as f64).log2().ceil().exp2();
+    let mut rng = crate::geometry::Rng::new(D as u64);
+    let mut coordinate = |rng: &mut crate::geometry::Rng| {
+        // Extremes and zeros often, so that cancellations and the largest permanents occur.
+        let u = match rng.index(4) {
+            0 => 0,
+            1 => span,
+            _ => rng.index(span as usize + 1) as u64,
+        };
+        u as f64 * step
+    };
+    for case in 0..400 {
+        let mut points: Vec<[f64; D]> = (0..D + 1)
+            .map(|_| std::array::from_fn(|_| coordinate(&mut rng)))
+            .collect();
+        if case % 3 == 0 {
+            // p on the plane of the vertices: an affine combination with integer weights.
+            let (a, b) = (points[0], points[1]);
+            points[D] = std::array::from_fn(|j| {
+                let x = 2.0 * a[j] - b[j];
+                if (0.0..=span as f64 * step).contains(&x) {
+                    x
+                } else {
+                    a[j]
+                }
+            });
+        }
+        // Pin the box: both ends of every axis present, so that the spans are exactly `span`.
+        let mut set = points.clone();
+        set.push([0.0; D]);
+        set.push([span as f64 * step; D]);
+        let grid = ExactGrid::of(&set).expect("within the bound");
+        let vertices: [[f64; D]; D] = std::array::from_fn(|i| points[i]);
+        let p = points[D];
+        assert!(grid.contains(&p));
+        let plane = FacetPlane::new(&vertices);
+        let value = plane.value(&p);
+        let reference = reference_det(&vertices, &p);
+        assert_eq!(
+            rational(value),
+            reference,
+            "D={D} case {case}: the value is not the exact determinant"
+        );
+        assert_eq!(
+            plane.side_on_grid(&p),
+            sign_of(&reference),
+            "D={D} case {case}"
+        );
+    }
+    // One more unit of span breaks the bound.
+    let past = (span + 1) as f64 * step;
+    // `step` itself is in the set, so that the grid is not coarser than it.
+    let set = vec![[0.0; D], [step; D], [past.min(1.0); D]];
+    if past <= 1.0 {
+        assert!(
+            ExactGrid::of(&set).is_none(),
+            "D={D}: span {} accepted",
+            span + 1
+        );
+    }
+    // Off-grid and out-of-box points are not covered; non-finite input has no certificate.
+    let grid = ExactGrid::of(&[[0.0; D], [0.5; D]]).unwrap();
+    assert!(!grid.contains(&[0.25 + f64::EPSILON; D]));
+    assert!(!grid.contains(&[0.75; D]));
+    assert!(ExactGrid::of(&[[f64::NAN; D]]).is_none());
+    assert!(ExactGrid::of(&[[2.0; D]]).is_none());
+}
+
+#[test]
+fn exact_grid_values_are_the_determinant() {
+    exact_grid_case::<2>();
+    exact_grid_case::<3>();
+    exact_grid_case::<4>();
+    exact_grid_case::<5>();
+    exact_grid_case::<6>();
+    exact_grid_case::<7>();
+    exact_grid_case::<8>();
+}

@@ -1,0 +1,223 @@
+//! Degenerate input (issue 24): integer grids, cube corners with face centres and interior points,
+//! the coplanar regions and the exact-grid certificate that make them fast, and the checks of
+//! `Hull::rebuild_with_flats`. Every hull is checked from scratch (`Hull::check`) and its vertex
+//! set compared with the truth known in the test (the cube's corners).
+
+use pqhull::hull::NO_FLAT;
+use pqhull::rbox::{Family, generate};
+use pqhull::{FarthestPoint, Hull, HullError};
+
+/// Every point of {0, …, m − 1}^D, in odometer order.
+fn grid<const D: usize>(m: usize) -> Vec<[f64; D]> {
+    let count = m.pow(D as u32);
+    (0..count)
+        .map(|mut i| {
+            std::array::from_fn(|_| {
+                let c = i % m;
+                i /= m;
+                c as f64
+            })
+        })
+        .collect()
+}
+
+/// Whether `p` is a corner of the box spanned by `low` and `high` (every coordinate at a bound).
+fn is_corner<const D: usize>(p: &[f64; D], low: f64, high: f64) -> bool {
+    p.iter().all(|&x| x == low || x == high)
+}
+
+/// The hull of the grid is the cube: exactly its 2^D corners, volume (m − 1)^D.
+fn grid_case<const D: usize>(m: usize) {
+    let points = grid::<D>(m);
+    let hull = Hull::try_new(&points).unwrap();
+    hull.check()
+        .unwrap_or_else(|e| panic!("{D}-D grid {m}: {e}"));
+    let vertices = hull.vertex_indices();
+    assert_eq!(vertices.len(), 1 << D, "{D}-D grid {m}: {vertices:?}");
+    let top = (m - 1) as f64;
+    for &v in &vertices {
+        assert!(
+            is_corner(&points[v], 0.0, top),
+            "{D}-D grid {m}: {:?} is not a corner",
+            points[v]
+        );
+    }
+    let volume = top.powi(D as i32);
+    assert!(
+        (hull.volume() - volume).abs() <= 1e-12 * volume,
+        "{D}-D grid {m}: volume {}",
+        hull.volume()
+    );
+}
+
+#[test]
+fn integer_grids_are_cubes() {
+    grid_case::<3>(12);
+    grid_case::<4>(6);
+    grid_case::<5>(4);
+    grid_case::<6>(4);
+}
+
+/// Qhull (2019.1, scipy's defaults) reports 33 vertices on {0, …, 4}^5, among them
+/// (4, 0, 4, 3, 4), which is not a corner: the exact engine gives the 32 corners.
+#[test]
+fn five_dimensional_grid_where_qhull_adds_a_vertex() {
+    grid_case::<5>(5);
+    let points = grid::<5>(5);
+    let hull = Hull::try_new(&points).unwrap();
+    let bogus = [4.0, 0.0, 4.0, 3.0, 4.0];
+    let index = points.iter().position(|p| *p == bogus).unwrap();
+    assert!(!hull.vertex_indices().contains(&index));
+}
+
+/// Cube corners, face centres and random interior points (`rbox c`): the corners alone.
+fn corners_case<const D: usize>(n: usize) {
+    let points = generate::<D>(&Family::CubeCornersDiamond, n, 7);
+    let hull = Hull::try_new(&points).unwrap();
+    hull.check()
+        .unwrap_or_else(|e| panic!("{D}-D corners: {e}"));
+    let vertices = hull.vertex_indices();
+    assert_eq!(vertices, (0..1 << D).collect::<Vec<_>>(), "{D}-D corners");
+    assert!((hull.volume() - 1.0).abs() < 1e-12, "{D}-D corners");
+}
+
+#[test]
+fn cube_corners_with_face_centres_and_interior_points() {
+    corners_case::<3>(2000);
+    corners_case::<4>(2000);
+    corners_case::<5>(2000);
+    corners_case::<6>(1000);
+}
+
+/// A grid moved off its power-of-two lattice (every coordinate + 1/3, so no coarse grid holds
+/// it) has the same hull: the certificate is an optimisation, never a change of answer.
+#[test]
+fn grids_off_the_dyadic_lattice_give_the_same_corners() {
+    fn run<const D: usize>(m: usize) {
+        let points: Vec<[f64; D]> = grid::<D>(m)
+            .into_iter()
+            .map(|p| p.map(|x| x + 1.0 / 3.0))
+            .collect();
+        let hull = Hull::try_new(&points).unwrap();
+        hull.check().unwrap();
+        let on_grid = Hull::try_new(&grid::<D>(m)).unwrap();
+        assert_eq!(hull.vertex_indices(), on_grid.vertex_indices(), "D={D}");
+    }
+    run::<3>(6);
+    run::<4>(4);
+    run::<5>(3);
+}
+
+/// A lattice whose extent breaks the certificate's bound (D!·Π spans ≥ 2^52) still decides
+/// every sign exactly, through the filter and its exact fallbacks.
+#[test]
+fn lattices_beyond_the_certificate_bound() {
+    // 6-D: 720 · (2^8)^6 = 2^57.5 > 2^52, with many points on the cube's faces.
+    let mut points = Vec::new();
+    let mut rng = pqhull::geometry::Rng::new(3);
+    for corner in 0..64usize {
+        points.push(std::array::from_fn::<f64, 6, _>(|c| {
+            if (corner >> c) & 1 == 1 { 256.0 } else { 0.0 }
+        }));
+    }
+    for _ in 0..600 {
+        let mut p: [f64; 6] = std::array::from_fn(|_| rng.index(257) as f64);
+        p[rng.index(6)] = if rng.index(2) == 0 { 0.0 } else { 256.0 };
+        points.push(p);
+    }
+    let hull = Hull::try_new(&points).unwrap();
+    hull.check().unwrap();
+    assert_eq!(hull.vertex_indices(), (0..64).collect::<Vec<_>>());
+}
+
+/// The square pyramid with its base declared as a 2-flat.
+fn pyramid() -> Vec<[f64; 3]> {
+    vec![
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.5, 0.5, 1.0],
+    ]
+}
+
+#[test]
+fn declared_flats_are_checked() {
+    let points = pyramid();
+    let mut hull = Hull::<3>::empty();
+    hull.rebuild_with_flats(&points, &[0, 0, 0, 0, NO_FLAT], 2, FarthestPoint::new())
+        .unwrap();
+    hull.check().unwrap();
+    assert_eq!(hull.vertex_indices(), vec![0, 1, 2, 3, 4]);
+
+    // A flat dimension outside 1..D.
+    for flat_dim in [0, 3, 7] {
+        let error = hull
+            .rebuild_with_flats(&points, &[0, 0, 0, 0], flat_dim, FarthestPoint::new())
+            .unwrap_err();
+        assert_eq!(
+            error,
+            HullError::FlatDimension {
+                flat_dim,
+                dimension: 3
+            }
+        );
+        assert!(error.to_string().contains("1 to 2"), "{error}");
+        assert_eq!(hull.facet_count(), 0, "the hull is left empty");
+    }
+    // The apex declared in the base's plane: the release build refuses it too.
+    let error = hull
+        .rebuild_with_flats(&points, &[0, 0, 0, 0, 0], 2, FarthestPoint::new())
+        .unwrap_err();
+    assert_eq!(
+        error,
+        HullError::NotInFlat {
+            flat: 0,
+            index: 4,
+            flat_dim: 2
+        }
+    );
+    // A 1-flat claimed for three points of a 2-flat.
+    let error = hull
+        .rebuild_with_flats(&points, &[5, 5, 5], 1, FarthestPoint::new())
+        .unwrap_err();
+    assert!(
+        matches!(
+            error,
+            HullError::NotInFlat {
+                flat: 5,
+                index: 2,
+                ..
+            }
+        ),
+        "{error}"
+    );
+    // More labels than points.
+    let error = hull
+        .rebuild_with_flats(&points, &[NO_FLAT; 6], 2, FarthestPoint::new())
+        .unwrap_err();
+    assert_eq!(
+        error,
+        HullError::TooManyFlatLabels {
+            labels: 6,
+            points: 5
+        }
+    );
+    // A non-finite coordinate is named before any exact arithmetic sees it.
+    let mut bad = points.clone();
+    bad[2][1] = f64::NAN;
+    let error = hull
+        .rebuild_with_flats(&bad, &[0, 0, 0, 0], 2, FarthestPoint::new())
+        .unwrap_err();
+    assert_eq!(
+        error,
+        HullError::NonFinite {
+            index: 2,
+            coordinate: 1
+        }
+    );
+    // After the errors the same storage builds again.
+    hull.rebuild_with_flats(&points, &[0, 0, 0, 0], 2, FarthestPoint::new())
+        .unwrap();
+    hull.check().unwrap();
+}
