@@ -4,6 +4,7 @@ use super::Stats;
 use super::expand::Scratch;
 use super::facet::MAX_FLATS;
 use super::facet::{Facet, FacetId};
+use super::planes::NO_SLOT;
 use super::{Hull, HullError, NO_FLAT};
 use crate::geometry::vector::{dot, norm, sub};
 use crate::predicates::{ExactGrid, FacetPlane, Sign, affinely_independent_subset, orientation};
@@ -26,6 +27,7 @@ impl<const D: usize> Hull<D> {
             scale: 1.0,
             facets: Vec::new(),
             free: Vec::new(),
+            planes: Default::default(),
             live: 0,
             next_serial: 0,
             epoch: 0,
@@ -46,6 +48,7 @@ impl<const D: usize> Hull<D> {
     pub(in crate::hull) fn initialise(&mut self, input: &[[f64; D]]) -> Result<(), HullError> {
         self.started = Instant::now();
         self.free.clear();
+        self.planes.clear();
         // Free the slots in descending order, so that they are reused from slot 0 up, as in a
         // fresh arena (same ids for the same input).
         for i in (0..self.facets.len()).rev() {
@@ -202,21 +205,72 @@ impl<const D: usize> Hull<D> {
 
     /// The unit normal of facet `id` from its exact cofactors.
     pub fn exact_normal(&self, id: FacetId) -> [f64; D] {
-        let facet = &self.facets[id.index()];
-        let coords = self.coords(&facet.vertices);
-        let exact = facet.plane.exact_normal_direction(&coords);
+        let (plane, vertices) = self.exact_plane_of(id);
+        let exact = plane.exact_normal_direction(&self.coords(vertices));
         let length = norm(exact);
         exact.map(|c| c / length)
     }
 
-    /// Creates a facet (plane and normal computed here), reusing a tombstoned slot when possible.
-    /// `region` is the coplanar region it joins (see [`Facet`]'s `region`), `None` for a new one.
+    /// Creates a facet, reusing a tombstoned slot when possible. With `region` (a facet whose
+    /// hyperplane the new one lies in, exactly), it shares that facet's plane, normal and offset;
+    /// otherwise its plane and normal are computed here.
     pub(in crate::hull) fn push_facet(
         &mut self,
         vertices: [u32; D],
         neighbors: [FacetId; D],
-        region: Option<u64>,
+        region: Option<FacetId>,
     ) -> FacetId {
+        let (plane, filter, inv_norm, normal, precise, offset) = match region {
+            Some(same) => {
+                let slot = self.share_plane(same);
+                let f = &self.facets[same.index()];
+                let filter = f.filter.clone_uncached();
+                (slot, filter, f.inv_norm, f.normal, f.precise, f.offset)
+            }
+            None => self.new_plane(vertices),
+        };
+        let flats = self.flats_within(&vertices);
+        let serial = self.next_serial;
+        self.next_serial += 1;
+        self.stats.facets_created += 1;
+        self.live += 1;
+        let fresh = |outside: Vec<u32>| Facet {
+            vertices,
+            neighbors,
+            plane,
+            filter,
+            inv_norm,
+            normal,
+            precise,
+            offset,
+            flats,
+            outside,
+            farthest: None,
+            alive: true,
+            serial,
+            mark: 0,
+            visible: false,
+            touching: false,
+        };
+        match self.free.pop() {
+            Some(id) => {
+                let slot = &mut self.facets[id.index()];
+                let mut outside = std::mem::take(&mut slot.outside);
+                outside.clear();
+                *slot = fresh(outside);
+                id
+            }
+            None => {
+                self.facets.push(fresh(Vec::new()));
+                FacetId((self.facets.len() - 1) as u32)
+            }
+        }
+    }
+
+    /// A new plane through `vertices` in the arena, with the facet's unit normal, whether it is
+    /// precise, and its offset.
+    #[allow(clippy::type_complexity)]
+    fn new_plane(&mut self, vertices: [u32; D]) -> (u32, FacetPlane<D>, f64, [f64; D], bool, f64) {
         let coords = self.coords(&vertices);
         let plane = FacetPlane::new(&coords);
         // Without overflow or underflow of the squares: the cofactors of a wide-ranging input
@@ -244,41 +298,43 @@ impl<const D: usize> Hull<D> {
             precise = true;
         }
         let offset = dot(normal, coords[0]) / self.scale;
-        let flats = self.flats_within(&vertices);
-        let serial = self.next_serial;
-        self.next_serial += 1;
-        self.stats.facets_created += 1;
-        self.live += 1;
-        let fresh = |outside: Vec<u32>| Facet {
-            vertices,
-            neighbors,
-            plane,
-            inv_norm,
-            normal,
-            precise,
-            offset,
-            flats,
-            outside,
-            farthest: None,
-            alive: true,
-            serial,
-            region: region.unwrap_or(serial),
-            mark: 0,
-            visible: false,
-            touching: false,
-        };
-        match self.free.pop() {
-            Some(id) => {
-                let slot = &mut self.facets[id.index()];
-                let mut outside = std::mem::take(&mut slot.outside);
-                outside.clear();
-                *slot = fresh(outside);
-                id
-            }
-            None => {
-                self.facets.push(fresh(Vec::new()));
-                FacetId((self.facets.len() - 1) as u32)
-            }
+        (NO_SLOT, plane, inv_norm, normal, precise, offset)
+    }
+
+    /// The slot of facet `same`'s region plane, with one more user, made now (from the facet's
+    /// own plane and vertices) if the facet was alone in its region.
+    fn share_plane(&mut self, same: FacetId) -> u32 {
+        let f = &self.facets[same.index()];
+        if f.plane == NO_SLOT {
+            // A clone of an exact cache already built allocates; it is the rare case (the
+            // founder's filter failed before any facet joined it).
+            let slot = self.planes.add(f.filter.clone(), f.vertices);
+            self.facets[same.index()].plane = slot;
+        }
+        let slot = self.facets[same.index()].plane;
+        self.planes.share(slot);
+        slot
+    }
+
+    /// The plane whose exact cache serves facet `id`, and the vertices it was built from: the
+    /// facet's own, or its region's shared plane.
+    #[inline]
+    pub(in crate::hull) fn exact_plane_of(&self, id: FacetId) -> (&FacetPlane<D>, &[u32; D]) {
+        let facet = &self.facets[id.index()];
+        if facet.plane == NO_SLOT {
+            (&facet.filter, &facet.vertices)
+        } else {
+            let shared = self.planes.get(facet.plane);
+            (&shared.plane, &shared.vertices)
+        }
+    }
+
+    /// A key equal for two live facets exactly when they are in the same coplanar region.
+    #[inline]
+    pub(in crate::hull) fn region(&self, id: FacetId) -> u64 {
+        match self.facets[id.index()].plane {
+            NO_SLOT => (1 << 32) | u64::from(id.0),
+            slot => u64::from(slot),
         }
     }
 
@@ -292,7 +348,7 @@ impl<const D: usize> Hull<D> {
             // The value is the exact determinant (see `ExactGrid`): no bound, no fallback.
             for &id in candidates {
                 let facet = &self.facets[id.index()];
-                let value = facet.plane.value(&point);
+                let value = facet.filter.value(&point);
                 if value > 0.0 {
                     let distance = value * facet.inv_norm;
                     if best.is_none_or(|(_, d, _)| distance > d) {
@@ -307,7 +363,7 @@ impl<const D: usize> Hull<D> {
             if self.on_its_flat(facet, p) {
                 continue; // exactly on the plane
             }
-            let (value, bound) = facet.plane.evaluate(&point);
+            let (value, bound) = facet.filter.evaluate(&point);
             if value > bound {
                 let distance = value * facet.inv_norm;
                 if best.is_none_or(|(_, d, _)| distance > d) {
@@ -323,9 +379,9 @@ impl<const D: usize> Hull<D> {
             // Only the exact path can tell; the first facet it puts the point beyond will do.
             for &id in candidates {
                 let facet = &self.facets[id.index()];
-                let (value, bound) = facet.plane.evaluate(&point);
+                let (value, bound) = facet.filter.evaluate(&point);
                 if (value.abs() <= bound || value.is_nan())
-                    && facet.plane.side(&point, || self.coords(&facet.vertices)) == Sign::Positive
+                    && self.side(id, &point) == Sign::Positive
                 {
                     best = Some((id, value * facet.inv_norm, value.max(0.0)));
                     break;
@@ -351,8 +407,12 @@ impl<const D: usize> Hull<D> {
 
     /// Exact side of internal point `x` relative to facet `id`.
     pub(in crate::hull) fn side(&self, id: FacetId, x: &[f64; D]) -> Sign {
-        let facet = &self.facets[id.index()];
-        facet.plane.side(x, || self.coords(&facet.vertices))
+        if let Some(sign) = self.facets[id.index()].filter.filter_sign(x) {
+            return sign;
+        }
+        // The exact path, on the shared plane: its cache serves the whole coplanar region.
+        let (plane, vertices) = self.exact_plane_of(id);
+        plane.side(x, || self.coords(vertices))
     }
 
     /// Exact side of input point `p` relative to facet `id`: [`side`](Self::side), or `Zero` at
@@ -365,9 +425,9 @@ impl<const D: usize> Hull<D> {
         let point = &self.points[p as usize];
         if self.grid.is_some() {
             // Every vertex and `p` are input points, all on the certified grid.
-            return facet.plane.side_on_grid(point);
+            return facet.filter.side_on_grid(point);
         }
-        facet.plane.side(point, || self.coords(&facet.vertices))
+        self.side(id, point)
     }
 
     /// Whether input point `p` lies in a declared flat that `facet`'s hyperplane contains.

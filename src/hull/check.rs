@@ -3,7 +3,7 @@
 use super::facet::FacetId;
 use super::{Hull, InvariantViolation, NO_FLAT};
 use crate::geometry::vector::dot;
-use crate::predicates::Sign;
+use crate::predicates::{Sign, orientation};
 
 impl<const D: usize> Hull<D> {
     /// Checks every invariant of the hull, exactly where it can be:
@@ -17,6 +17,8 @@ impl<const D: usize> Hull<D> {
     ///   the smallest subnormal, the rounding of underflowing products);
     /// * every input point lies weakly inside every live facet (exact predicate), except the points
     ///   in outside sets, which must lie strictly beyond their own facet (partial hulls);
+    /// * a facet that shares its coplanar region's plane has its vertices exactly on it and the
+    ///   same orientation;
     /// * every point of a declared affine flat that a facet is taken to contain (see the
     ///   engine's flat hints, used for friction pyramids) lies exactly on the facet's plane;
     /// * the arena's live count matches.
@@ -61,6 +63,27 @@ impl<const D: usize> Hull<D> {
                 }
                 if nf.vertices.contains(&f.vertices[i]) || f.vertices.contains(&nf.vertices[back]) {
                     return fail(format!("facets {} and {} share all vertices", id.0, n.0));
+                }
+            }
+            // A facet that shares its region's plane lies in it exactly and faces the same way
+            // (checked with the exact predicate on both vertex sets, not through the cache).
+            let (_, shared) = self.exact_plane_of(id);
+            if *shared != f.vertices {
+                let plane = self.coords(shared);
+                for &v in &f.vertices {
+                    if orientation(&plane, &self.points[v as usize]) != Sign::Zero {
+                        return fail(format!(
+                            "vertex {v} of facet {} is off the region plane it shares",
+                            id.0
+                        ));
+                    }
+                }
+                let own = orientation(&self.coords(&f.vertices), &self.interior);
+                if own == Sign::Zero || own != orientation(&plane, &self.interior) {
+                    return fail(format!(
+                        "facet {} and the region plane it shares face different ways",
+                        id.0
+                    ));
                 }
             }
             // A thin facet's floating-point normal is only a hint (see `Facet::normal`): check the

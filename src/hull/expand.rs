@@ -2,6 +2,7 @@
 
 use super::Hull;
 use super::facet::FacetId;
+use super::planes::NO_SLOT;
 use crate::predicates::Sign;
 
 /// Buffers reused across expansions so that steady-state expansion does not allocate.
@@ -210,7 +211,7 @@ impl<const D: usize> Hull<D> {
         let facet = &self.facets[id.index()];
         let mut best: Option<(u32, f64)> = None;
         for (slot, &p) in facet.outside.iter().enumerate() {
-            let (value, _) = facet.plane.evaluate(&self.points[p as usize]);
+            let (value, _) = facet.filter.evaluate(&self.points[p as usize]);
             if best.is_none_or(|(_, v)| value > v) {
                 best = Some((slot as u32, value));
             }
@@ -237,10 +238,8 @@ impl<const D: usize> Hull<D> {
         f.touching = false; // `p` is strictly beyond the facet it was taken from
         while let Some(id) = self.scratch.stack.pop() {
             self.scratch.removed.push(id);
-            let (region, touching) = {
-                let f = &self.facets[id.index()];
-                (f.region, f.touching)
-            };
+            let region = self.region(id);
+            let touching = self.facets[id.index()].touching;
             for i in 0..D {
                 let n = self.facets[id.index()].neighbors[i];
                 let neighbor = &self.facets[n.index()];
@@ -249,7 +248,7 @@ impl<const D: usize> Hull<D> {
                 } else {
                     // A neighbour in the same coplanar region spans the same hyperplane: `p`
                     // is on the same side of it, with no test.
-                    let sign = if neighbor.region == region {
+                    let sign = if self.region(n) == region {
                         if touching { Sign::Zero } else { Sign::Positive }
                     } else {
                         self.side_of_index(n, p)
@@ -286,7 +285,7 @@ impl<const D: usize> Hull<D> {
             let mut neighbors = [FacetId::NONE; D];
             neighbors[i] = outer;
             // With `p` on the removed facet's plane, the new facet lies in that hyperplane.
-            let region = old.touching.then_some(old.region);
+            let region = old.touching.then_some(visible);
             let new = self.push_facet(vertices, neighbors, region);
             self.scratch.created.push(new);
             let back = self.facets[outer.index()]
@@ -350,6 +349,9 @@ impl<const D: usize> Hull<D> {
             let facet = &mut self.facets[id.index()];
             facet.alive = false;
             facet.farthest = None;
+            if facet.plane != NO_SLOT {
+                self.planes.release(facet.plane);
+            }
             self.scratch.orphans.append(&mut facet.outside);
             self.free.push(id);
         }
@@ -359,12 +361,7 @@ impl<const D: usize> Hull<D> {
         // facet spanning it, so testing the others would repeat the same determinant.
         let mut candidates = std::mem::take(&mut self.scratch.candidates);
         candidates.clear();
-        candidates.extend(
-            self.scratch
-                .created
-                .iter()
-                .map(|&id| (self.facets[id.index()].region, id)),
-        );
+        candidates.extend(self.scratch.created.iter().map(|&id| (self.region(id), id)));
         candidates.sort_unstable();
         candidates.dedup_by_key(|(region, _)| *region);
         let mut representatives = std::mem::take(&mut self.scratch.representatives);

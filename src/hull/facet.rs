@@ -35,9 +35,16 @@ pub(in crate::hull) const MAX_FLATS: usize = 4;
 pub struct Facet<const D: usize> {
     pub(in crate::hull) vertices: [u32; D],
     pub(in crate::hull) neighbors: [FacetId; D],
-    /// Exact-predicate cache, in the hull's internal (power-of-two scaled) coordinates.
-    pub(in crate::hull) plane: FacetPlane<D>,
-    /// 1 / |cofactors|: turns an orientation value into a distance in internal coordinates.
+    /// The slot of its coplanar region's shared plane in the hull's arena (`hull/planes.rs`),
+    /// or `NO_SLOT` while the facet is alone in its region: facets with the same slot span the
+    /// same hyperplane, exactly. The slot holds the exact-arithmetic cache of the region and the
+    /// vertices its plane was built from.
+    pub(in crate::hull) plane: u32,
+    /// The plane's floating-point part, in the facet so that the filter (the common case) reads
+    /// nothing else: the facet's own plane, or a copy of its region's (whose exact cache then
+    /// stays empty: the slot's serves).
+    pub(in crate::hull) filter: FacetPlane<D>,
+    /// 1 / |cofactors| of that plane: turns an orientation value into a distance (internal units).
     pub(in crate::hull) inv_norm: f64,
     /// Unit outward normal.
     pub(in crate::hull) normal: [f64; D],
@@ -55,10 +62,6 @@ pub struct Facet<const D: usize> {
     pub(in crate::hull) farthest: Option<(u32, f64)>,
     pub(in crate::hull) alive: bool,
     pub(in crate::hull) serial: u64,
-    /// The coplanar region: facets with equal `region` span the same hyperplane, exactly. A new
-    /// facet built on a ridge of a removed facet whose plane held the new point inherits that
-    /// facet's region (it lies in the same hyperplane); any other takes its own serial.
-    pub(in crate::hull) region: u64,
     /// Visit epoch and verdict of the last horizon search that looked at this facet: `visible`
     /// when the new point is on or beyond it, `touching` when exactly on its plane.
     pub(in crate::hull) mark: u32,

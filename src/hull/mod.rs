@@ -23,6 +23,7 @@ mod error;
 mod expand;
 mod facet;
 mod farthest_point;
+mod planes;
 mod record;
 mod strategy;
 mod trace;
@@ -65,6 +66,8 @@ pub struct Hull<const D: usize> {
     facets: Vec<Facet<D>>,
     /// Tombstoned slots, reusable by later expansions.
     free: Vec<FacetId>,
+    /// The facets' hyperplanes, one per coplanar region.
+    planes: planes::Planes<D>,
     live: usize,
     next_serial: u64,
     epoch: u32,
@@ -351,10 +354,8 @@ impl<const D: usize> Hull<D> {
     /// [`side_of`](Self::side_of)).
     pub fn exact_signed_distance(&self, id: FacetId, x: &[f64; D]) -> Option<f64> {
         let scaled = self.scaled_exactly(x)?;
-        let facet = self.facet(id);
-        let distance = facet
-            .plane
-            .exact_distance(&self.coords(&facet.vertices), &scaled);
+        let (plane, vertices) = self.exact_plane_of(id);
+        let distance = plane.exact_distance(&self.coords(vertices), &scaled);
         Some(distance / self.scale)
     }
 
@@ -367,9 +368,10 @@ impl<const D: usize> Hull<D> {
             return facet.signed_distance(x);
         }
         let scaled = x.map(|c| c * self.scale);
-        let (value, bound) = facet.plane.evaluate(&scaled);
-        let cofactors = facet.plane.cofactors();
-        let errors = facet.plane.cofactor_errors();
+        let plane = &facet.filter;
+        let (value, bound) = plane.evaluate(&scaled);
+        let cofactors = plane.cofactors();
+        let errors = plane.cofactor_errors();
         let (length, error) = (norm(*cofactors), norm(*errors));
         if length.partial_cmp(&error) != Some(std::cmp::Ordering::Greater) || !bound.is_finite() {
             return f64::INFINITY;

@@ -1,7 +1,7 @@
 //! The volume of a hull, in the caller's units, without underflow or NaN.
 
 use super::Hull;
-use crate::predicates::times_power_of_two;
+use crate::predicates::{FacetPlane, times_power_of_two};
 
 /// Below this (in the hull's internal coordinates, where every coordinate is at most 1), the sum
 /// of cone volumes from the facets' cofactors may have lost digits to underflow: the volume is
@@ -19,9 +19,17 @@ impl<const D: usize> Hull<D> {
     /// subnormal is 0 (as for any `f64` result out of range); never NaN.
     pub fn volume(&self) -> f64 {
         let mut sum = 0.0;
-        for (_, facet) in self.facets() {
-            // Orientation value of (facet, interior) is −D!·(cone volume).
-            let (value, _) = facet.plane.evaluate(&self.interior);
+        for (id, facet) in self.facets() {
+            // Orientation value of (facet, interior) is −D!·(cone volume). A facet that shares
+            // its region's plane computes its own cofactors here: the shared plane's value is
+            // the founder's cone, not this simplex's.
+            let value = if self.exact_plane_of(id).1 == &facet.vertices {
+                facet.filter.evaluate(&self.interior).0
+            } else {
+                FacetPlane::new(&self.coords(&facet.vertices))
+                    .evaluate(&self.interior)
+                    .0
+            };
             sum -= value;
         }
         // Every cone volume is non-negative, so a sum that overflowed (to ∞, or NaN from ∞ − ∞

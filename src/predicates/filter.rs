@@ -226,6 +226,34 @@ impl<const D: usize> FacetPlane<D> {
         value
     }
 
+    /// A copy of the plane without its exact-arithmetic cache (which a clone would copy, and
+    /// allocate for): the floating-point part alone, for a second facet in the same hyperplane.
+    pub(crate) fn clone_uncached(&self) -> Self {
+        FacetPlane {
+            base: self.base,
+            cofactors: self.cofactors,
+            error: self.error,
+            permanents: self.permanents,
+            slack: self.slack,
+            exact: OnceLock::new(),
+        }
+    }
+
+    /// The sign of `det[v1 − v0; …; p − v0]` when the floating-point filter alone decides it
+    /// (`|value| > bound`, see [`evaluate`](Self::evaluate)); `None` when only the exact path of
+    /// [`side`](Self::side) can.
+    #[inline]
+    pub fn filter_sign(&self, p: &[f64; D]) -> Option<Sign> {
+        let (value, bound) = self.evaluate(p);
+        if value > bound {
+            Some(Sign::Positive)
+        } else if -value > bound {
+            Some(Sign::Negative)
+        } else {
+            None
+        }
+    }
+
     /// The exact sign of [`orientation`](super::orientation)`(vertices, p)` when this plane's
     /// vertices and `p` lie in the box and on the grid of one [`ExactGrid`](super::ExactGrid):
     /// the sign of [`value`](Self::value), which is then exact. For any other input the answer
