@@ -1,4 +1,4 @@
-//! Allocation-free exact determinants of matrices whose column-scaled entries fit in `i64`.
+//! Allocation-free exact determinants of matrices whose column-scaled entries fit in `i128`.
 //!
 //! The exact path's usual inputs — degenerate configurations built on a grid, such as the friction
 //! pyramids of the grasp layer, whose edges lie exactly in one plane per contact — have entries
@@ -7,15 +7,20 @@
 //! vector, after undoing the scaling, are unchanged). Their determinants then fit in a few hundred
 //! bits, and a Laplace expansion over column subsets (the same minors-of-minors scheme the filter
 //! uses) in fixed-width two's-complement integers is an order of magnitude faster than `BigInt`
-//! Bareiss, which allocates for every operation. No maintained crate offers fixed-width signed
-//! integers of ~600 bits with `i64` scaling and no allocation, hence the small type below.
+//! Bareiss, which allocates for every operation. Entries of up to 126 bits cover the caller's raw
+//! floating-point data too (a column holding 1 and 6e−17, as rounded cone edges do, needs 107
+//! bits), where `BigInt` was most of the time of a hull of raw wrenches. No maintained crate
+//! offers fixed-width signed integers of ~1000 bits with `i128` scaling and no allocation, hence
+//! the small type below.
 
 use super::Sign;
 use super::exact::decompose;
 
-/// 640 bits: a minor of order r ≤ 8 with |entries| < 2^63 is below r!·2^(63·r) ≤ 2^520, and so is
-/// every partial sum of its expansion (bounded by the permanent).
-const LIMBS: usize = 10;
+/// 1088 bits: a minor of order r ≤ 8 with |entries| < 2^127 is below r!·2^(127·r) < 2^1032, and
+/// so is every partial sum of its expansion (bounded by the permanent); a side test adds at most
+/// 2^(127·7 + 16) · 2^127 · 8 < 2^1035. Callers size the limbs they use from their entries, and
+/// fall back on `BigInt` when even this is too few.
+const LIMBS: usize = 17;
 
 /// A fixed-width two's-complement integer of which only the low `len` limbs are used: arithmetic
 /// is modulo 2^(64·len), exact whenever every value fits (the caller sizes `len` from its entries'
@@ -45,6 +50,14 @@ impl Wide {
         }
     }
 
+    /// Copies the sign bit of limb `len − 1` into every limb above it.
+    fn sign_extend(&mut self, len: usize) {
+        let fill = if self.is_negative(len) { u64::MAX } else { 0 };
+        for limb in &mut self.0[len..] {
+            *limb = fill;
+        }
+    }
+
     fn negate(&mut self, len: usize) {
         let mut carry = 1u64;
         for limb in &mut self.0[..len] {
@@ -54,19 +67,33 @@ impl Wide {
         }
     }
 
-    /// `self += a · m`, or `self -= a · m` when `subtract`: one pass over the limbs, the product
-    /// limb by limb into a carry (addition) or a borrow (subtraction), so no temporary is built.
-    fn add_product(&mut self, a: i64, subtract: bool, m: &Wide, len: usize) {
+    /// `self += a · m`, or `self -= a · m` when `subtract`: the 128-bit factor as two 64-bit
+    /// halves, each one pass over the limbs.
+    fn add_product(&mut self, a: i128, subtract: bool, m: &Wide, len: usize) {
         if a == 0 {
             return;
         }
-        let factor = u128::from(a.unsigned_abs());
-        // Arithmetic modulo 2^(64·len): the unsigned product of |a| and m's two's-complement
-        // limbs is |a|·m modulo it, added or subtracted according to the sign.
+        let factor = a.unsigned_abs();
         let negative = (a < 0) != subtract;
+        self.add_scaled(factor as u64, 0, negative, m, len);
+        let high = (factor >> 64) as u64;
+        if high != 0 && len > 1 {
+            self.add_scaled(high, 1, negative, m, len);
+        }
+    }
+
+    /// `self ± (f · m) · 2^(64·offset)`: the product limb by limb into a carry (addition) or a
+    /// borrow (subtraction), so no temporary is built.
+    fn add_scaled(&mut self, f: u64, offset: usize, negative: bool, m: &Wide, len: usize) {
+        if f == 0 {
+            return;
+        }
+        let factor = u128::from(f);
+        // Arithmetic modulo 2^(64·len): the unsigned product of f and m's two's-complement
+        // limbs is f·m modulo it, added or subtracted according to the sign.
         let mut product_carry = 0u128;
         let mut carry = 0u64; // or borrow
-        for (limb, &factor_limb) in self.0[..len].iter_mut().zip(&m.0) {
+        for (limb, &factor_limb) in self.0[offset..len].iter_mut().zip(&m.0) {
             let t = u128::from(factor_limb) * factor + product_carry;
             let p = t as u64;
             product_carry = t >> 64;
@@ -108,13 +135,13 @@ impl Wide {
 /// The difference matrix `[p1 − p0; p2 − p0; …]` of `points` (rows beyond `points.len() − 1` stay
 /// zero) with every column scaled to integers, the scaling exponent of each column, and the sum
 /// over columns of the bit length of the column's largest entry (a minor over any set of columns
-/// is below 8!·2^bits < 2^(bits + 16)); `None` when some scaled coordinate does not fit in 62 bits
-/// (the caller then uses `BigInt`).
+/// is below 8!·2^bits < 2^(bits + 16)); `None` when some scaled coordinate does not fit in 126
+/// bits (the caller then uses `BigInt`).
 ///
 /// # Panics
 /// If a coordinate is not finite.
-fn integer_rows<const D: usize>(points: &[&[f64; D]]) -> Option<([[i64; D]; D], [i32; D], u32)> {
-    let mut matrix = [[0i64; D]; D];
+fn integer_rows<const D: usize>(points: &[&[f64; D]]) -> Option<([[i128; D]; D], [i32; D], u32)> {
+    let mut matrix = [[0i128; D]; D];
     let mut exponents = [0i32; D];
     let mut bits = 0u32;
     for c in 0..D {
@@ -127,31 +154,32 @@ fn integer_rows<const D: usize>(points: &[&[f64; D]]) -> Option<([[i64; D]; D], 
             .unwrap_or(0);
         exponents[c] = emin;
         let base = column_integer(points[0][c], emin)?;
-        let mut largest = 0u64;
+        let mut largest = 0u128;
         for r in 1..points.len() {
             let entry = column_integer(points[r][c], emin)? - base;
             matrix[r - 1][c] = entry;
             largest = largest.max(entry.unsigned_abs());
         }
-        bits += 64 - largest.leading_zeros();
+        bits += 128 - largest.leading_zeros();
     }
     Some((matrix, exponents, bits))
 }
 
-/// Limbs for values below 2^bits, plus a sign bit.
-fn limbs_for(bits: u32) -> usize {
-    ((bits + 1) as usize).div_ceil(64).clamp(1, LIMBS)
+/// Limbs for values below 2^bits, plus a sign bit; `None` beyond [`LIMBS`].
+fn limbs_for(bits: u32) -> Option<usize> {
+    let limbs = ((bits + 1) as usize).div_ceil(64).max(1);
+    (limbs <= LIMBS).then_some(limbs)
 }
 
 thread_local! {
-    /// Scratch for [`subset_minors`]: 20 KB that would otherwise be zeroed on every call.
+    /// Scratch for [`subset_minors`]: 35 KB that would otherwise be zeroed on every call.
     static MINORS: std::cell::RefCell<Vec<Wide>> = std::cell::RefCell::new(vec![Wide::ZERO; 256]);
 }
 
 /// Minors of the first `rows` rows over every column subset of size `rows`, by Laplace expansion
 /// along each new row (`minors[mask]` for `mask.count_ones() == rows`), handed to `read`.
 fn subset_minors<const D: usize, T>(
-    matrix: &[[i64; D]; D],
+    matrix: &[[i128; D]; D],
     rows: usize,
     len: usize,
     read: impl FnOnce(&[Wide]) -> T,
@@ -170,8 +198,7 @@ fn subset_minors<const D: usize, T>(
                 while bits != 0 {
                     let c = bits.trailing_zeros() as usize;
                     bits &= bits - 1;
-                    let sub = minors[mask & !(1 << c)];
-                    sum.add_product(row[c], subtract, &sub, len);
+                    sum.add_product(row[c], subtract, &minors[mask & !(1 << c)], len);
                     subtract = !subtract;
                 }
                 minors[mask] = sum;
@@ -187,24 +214,26 @@ fn subset_minors<const D: usize, T>(
 /// instead of a full determinant.
 #[derive(Clone, Debug)]
 pub(in crate::predicates) struct ExactPlane<const D: usize> {
-    /// Signed cofactors `C_j` of the column-scaled difference matrix.
+    /// Signed cofactors `C_j` of the column-scaled difference matrix, sign-extended to every
+    /// limb (so that any `len` of at least their own reads them right).
     cofactors: [Wide; D],
-    /// Limbs in use: enough for every cofactor times a coordinate difference of up to 63 bits.
-    len: usize,
+    /// Bits of the largest cofactor: a side test's sum is below 2^(cofactor_bits + 3) times
+    /// its largest coordinate difference.
+    cofactor_bits: u32,
     /// Column scaling: column j holds multiples of `2^exponents[j]`.
     exponents: [i32; D],
     /// The base vertex `v0` in column units.
-    base: [i64; D],
+    base: [i128; D],
 }
 
 impl<const D: usize> ExactPlane<D> {
-    /// `None` when the column-scaled vertex coordinates do not fit in `i64`.
+    /// `None` when the column-scaled vertex coordinates do not fit in `i128`.
     pub(in crate::predicates) fn new(vertices: &[[f64; D]; D]) -> Option<Self> {
         let points: [&[f64; D]; D] = std::array::from_fn(|i| &vertices[i]);
         let (matrix, exponents, bits) = integer_rows(&points)?;
-        // A side test sums D ≤ 8 products of a cofactor (< 2^(bits + 16)) by a difference of two
-        // column integers (< 2^63).
-        let len = limbs_for(bits + 16 + 63 + 3);
+        // Every cofactor is a minor over D − 1 columns: below 2^(bits + 16).
+        let cofactor_bits = bits + 16;
+        let len = limbs_for(cofactor_bits)?;
         let full = (1usize << D) - 1;
         let cofactors = subset_minors(&matrix, D - 1, len, |minors| {
             std::array::from_fn(|j| {
@@ -212,39 +241,60 @@ impl<const D: usize> ExactPlane<D> {
                 if (D - 1 + j) % 2 == 1 {
                     c.negate(len);
                 }
+                c.sign_extend(len);
                 c
             })
         });
         let base = std::array::from_fn(|j| column_integer(vertices[0][j], exponents[j]))
-            .map(|b: Option<i64>| b.expect("integer_rows checked every vertex coordinate"));
+            .map(|b: Option<i128>| b.expect("integer_rows checked every vertex coordinate"));
         Some(ExactPlane {
             cofactors,
-            len,
+            cofactor_bits,
             exponents,
             base,
         })
     }
 
+    /// The differences `p − v0` in column units and the limbs their side-test sum needs, or
+    /// `None` when a coordinate is off the column grid, too large, or the sum too wide.
+    fn differences(&self, p: &[f64; D]) -> Option<([i128; D], usize)> {
+        let mut differences = [0i128; D];
+        let mut largest = 0u128;
+        for (j, &coordinate) in p.iter().enumerate() {
+            let x = column_integer(coordinate, self.exponents[j])? - self.base[j];
+            differences[j] = x;
+            largest = largest.max(x.unsigned_abs());
+        }
+        let len = limbs_for(self.cofactor_bits + (128 - largest.leading_zeros()) + 3)?;
+        Some((differences, len))
+    }
+
+    /// `Σ_j C_j·(p_j − v0_j)` and the limbs it is exact in.
+    fn sum(&self, p: &[f64; D]) -> Option<(Wide, usize)> {
+        let (differences, len) = self.differences(p)?;
+        let mut sum = Wide::ZERO;
+        for (d, c) in differences.iter().zip(&self.cofactors) {
+            sum.add_product(*d, false, c, len);
+        }
+        Some((sum, len))
+    }
+
     /// The direction of the exact cofactor vector (the facet's outward normal), rounded to `f64`.
     pub(in crate::predicates) fn normal_direction(&self) -> [f64; D] {
         scaled_direction(
-            self.cofactors.map(|c| c.to_f64_parts(self.len)),
+            self.cofactors.map(|c| c.to_f64_parts(LIMBS)),
             &self.exponents,
         )
     }
 
     /// Exact sign of `det[v1 − v0; …; v(D−1) − v0; p − v0] = Σ_j C_j·(p_j − v0_j)`, or `None` when
-    /// a coordinate of `p` is off this plane's column grid or too large for `i64`.
+    /// a coordinate of `p` is off this plane's column grid or too large for `i128`.
     ///
     /// # Panics
     /// If a coordinate of `p` is not finite.
     pub(in crate::predicates) fn side(&self, p: &[f64; D]) -> Option<Sign> {
-        let mut sum = Wide::ZERO;
-        for (j, &coordinate) in p.iter().enumerate() {
-            let x = column_integer(coordinate, self.exponents[j])?;
-            sum.add_product(x - self.base[j], false, &self.cofactors[j], self.len);
-        }
-        Some(sum.sign(self.len))
+        let (sum, len) = self.sum(p)?;
+        Some(sum.sign(len))
     }
 
     /// `det[v1 − v0; …; v(D−1) − v0; p − v0] / |C|` — the signed distance of `p` beyond the
@@ -254,19 +304,15 @@ impl<const D: usize> ExactPlane<D> {
     /// # Panics
     /// If a coordinate of `p` is not finite.
     pub(in crate::predicates) fn distance(&self, p: &[f64; D]) -> Option<f64> {
-        let mut sum = Wide::ZERO;
-        for (j, &coordinate) in p.iter().enumerate() {
-            let x = column_integer(coordinate, self.exponents[j])?;
-            sum.add_product(x - self.base[j], false, &self.cofactors[j], self.len);
-        }
+        let (sum, len) = self.sum(p)?;
         // With S = Σ e_c, the determinant is 2^S·sum and cofactor j is C'_j·2^(S − e_j): the
         // common 2^S cancels, leaving sum / |(C'_j·2^(−e_j))_j|.
-        let (value, exponent) = sum.to_f64_parts(self.len);
+        let (value, exponent) = sum.to_f64_parts(len);
         if value == 0.0 {
             return Some(0.0);
         }
         let parts: [(f64, i32); D] = std::array::from_fn(|j| {
-            let (m, e) = self.cofactors[j].to_f64_parts(self.len);
+            let (m, e) = self.cofactors[j].to_f64_parts(LIMBS);
             (m, e - self.exponents[j])
         });
         let top = parts
@@ -299,23 +345,23 @@ pub fn times_power_of_two(mut x: f64, mut e: i32) -> f64 {
     x * 2f64.powi(e)
 }
 
-/// `x / 2^exponent` when it is an integer of magnitude below 2^62 (so that a difference of two fits
-/// in `i64`).
+/// `x / 2^exponent` when it is an integer of magnitude below 2^126 (so that a difference of two
+/// fits in `i128`).
 ///
 /// # Panics
 /// If `x` is not finite.
-fn column_integer(x: f64, exponent: i32) -> Option<i64> {
+fn column_integer(x: f64, exponent: i32) -> Option<i128> {
     let (m, e) = decompose(x);
     if m == 0 {
         return Some(0);
     }
     let shift = u32::try_from(e - exponent).ok()?;
     let bits = 64 - m.unsigned_abs().leading_zeros();
-    (bits + shift <= 62).then(|| m << shift)
+    (bits + shift <= 126).then(|| i128::from(m) << shift)
 }
 
 /// Exact sign of `det[v1 − v0; …; v(D−1) − v0; p − v0]`, or `None` when the column-scaled entries
-/// do not fit in `i64`.
+/// do not fit in `i128`.
 pub(in crate::predicates) fn orientation<const D: usize>(
     vertices: &[[f64; D]; D],
     p: &[f64; D],
@@ -325,7 +371,7 @@ pub(in crate::predicates) fn orientation<const D: usize>(
         *slot = v;
     }
     let (matrix, _, bits) = integer_rows(&points[..=D])?;
-    let len = limbs_for(bits + 16);
+    let len = limbs_for(bits + 16)?;
     Some(subset_minors(&matrix, D, len, |minors| {
         minors[(1 << D) - 1].sign(len)
     }))
@@ -333,7 +379,7 @@ pub(in crate::predicates) fn orientation<const D: usize>(
 
 /// The exact cofactor vector of `[v1 − v0; …; v(D−1) − v0; ·]`, rounded to `f64` after a common
 /// power-of-two scaling (only its direction is meaningful), or `None` when the column-scaled
-/// entries do not fit in `i64`.
+/// entries do not fit in `i128`.
 pub(in crate::predicates) fn cofactor_direction<const D: usize>(
     vertices: &[[f64; D]; D],
 ) -> Option<[f64; D]> {
@@ -439,9 +485,49 @@ mod tests {
         run::<8>();
     }
 
+    /// Columns holding full-mantissa values of magnitudes 2^0 … 2^−60 (raw cone edges: 1 beside a
+    /// rounded 6e−17): column integers of 64 to 126 bits, beyond the former `i64` entries, and
+    /// nearly flat sets, so that the signs are small differences of large products.
     #[test]
-    fn refuses_entries_beyond_i64() {
-        let vertices = [[1.0, 0.0], [1e-30, 1.0]];
+    fn wide_entries_agree_with_bigint() {
+        fn run<const D: usize>() {
+            let mut rng = Rng::new(77 + D as u64);
+            let mut wide_cases = 0;
+            for case in 0..300 {
+                let mut pts: [[f64; D]; 9] = std::array::from_fn(|_| {
+                    std::array::from_fn(|_| {
+                        rng.uniform_in(-1.0, 1.0) * 2f64.powi(-(rng.below(61) as i32))
+                    })
+                });
+                if case % 2 == 0 {
+                    // p nearly on the plane: an affine combination of the vertices, rounded.
+                    pts[D] = std::array::from_fn(|c| 0.5 * pts[0][c] + 0.5 * pts[1][c]);
+                }
+                let vertices: [[f64; D]; D] = std::array::from_fn(|i| pts[i]);
+                let p = pts[D];
+                if let Some(sign) = orientation(&vertices, &p) {
+                    wide_cases += 1;
+                    assert_eq!(sign, orientation_big(&vertices, &p), "D = {D}, case {case}");
+                }
+                if let Some(plane) = ExactPlane::new(&vertices) {
+                    for q in &pts {
+                        if let Some(sign) = plane.side(q) {
+                            assert_eq!(sign, orientation_big(&vertices, q), "D = {D}, case {case}");
+                        }
+                    }
+                }
+            }
+            assert!(wide_cases > 250, "D = {D}: only {wide_cases} cases fit");
+        }
+        run::<2>();
+        run::<4>();
+        run::<6>();
+        run::<8>();
+    }
+
+    #[test]
+    fn refuses_entries_beyond_i128() {
+        let vertices = [[1.0, 0.0], [1e-60, 1.0]];
         assert!(orientation(&vertices, &[0.5, 0.5]).is_none());
         assert!(cofactor_direction(&vertices).is_none());
     }
