@@ -12,9 +12,12 @@ use std::time::Instant;
 
 impl<const D: usize> Hull<D> {
     /// Validates the input, scales it, builds the initial simplex and the first outside sets.
-    pub(in crate::hull) fn try_initial(input: &[[f64; D]]) -> Result<Self, HullError> {
+    pub(in crate::hull) fn try_initial(
+        input: &[[f64; D]],
+        partition_farthest: bool,
+    ) -> Result<Self, HullError> {
         let mut hull = Self::empty();
-        hull.initialise(input)?;
+        hull.initialise(input, partition_farthest)?;
         Ok(hull)
     }
 
@@ -38,6 +41,7 @@ impl<const D: usize> Hull<D> {
             flat_of: Vec::new(),
             flat_dim: 0,
             grid: None,
+            partition_farthest: false,
             trace: None,
         }
     }
@@ -45,8 +49,14 @@ impl<const D: usize> Hull<D> {
     /// [`try_initial`](Self::try_initial) into this hull's storage: every facet slot is freed (its
     /// outside-set buffer kept for reuse) and the point buffer refilled, so rebuilding a hull of a
     /// similar size allocates nothing. On error the hull is left empty (no live facet).
-    pub(in crate::hull) fn initialise(&mut self, input: &[[f64; D]]) -> Result<(), HullError> {
+    /// `partition_farthest`: see [`Strategy::partitions_to_farthest`](super::Strategy).
+    pub(in crate::hull) fn initialise(
+        &mut self,
+        input: &[[f64; D]],
+        partition_farthest: bool,
+    ) -> Result<(), HullError> {
         self.started = Instant::now();
+        self.partition_farthest = partition_farthest;
         self.free.clear();
         self.planes.clear();
         // Free the slots in descending order, so that they are reused from slot 0 up, as in a
@@ -338,8 +348,11 @@ impl<const D: usize> Hull<D> {
         }
     }
 
-    /// Puts point `p` in the outside set of the candidate it lies farthest beyond (exactly decided),
-    /// or nowhere if it lies weakly inside every candidate. Returns whether it was assigned.
+    /// Puts point `p` in the outside set of a candidate it lies strictly beyond (exactly decided):
+    /// the first one the filter proves (the farthest when the strategy asks for it), the
+    /// farthest on certified-grid input (where a test is a dot product and the farthest keeps
+    /// non-extreme grid points out of the hull), else the first the exact path proves; or
+    /// nowhere if it lies weakly inside every candidate. Returns whether it was assigned.
     pub(in crate::hull) fn assign(&mut self, p: u32, candidates: &[FacetId]) -> bool {
         let point = self.points[p as usize];
         let mut best: Option<(FacetId, f64, f64)> = None;
@@ -368,6 +381,13 @@ impl<const D: usize> Hull<D> {
                 let distance = value * facet.inv_norm;
                 if best.is_none_or(|(_, d, _)| distance > d) {
                     best = Some((id, distance, value));
+                }
+                // Unless the strategy asks for the farthest, the first facet the point is
+                // certainly beyond takes it (Qhull's default too): testing every candidate
+                // doubled the partition's cost on input whose points mostly end up inside, as
+                // cube corners with interior points.
+                if !self.partition_farthest {
+                    break;
                 }
             } else if value >= -bound || value.is_nan() {
                 // Undecided unless certainly behind: also when the value is NaN (coordinates so

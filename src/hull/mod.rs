@@ -84,6 +84,9 @@ pub struct Hull<const D: usize> {
     /// When every point lies on one coarse power-of-two grid, the proof that the filter's value
     /// is exact for every side test among them ([`ExactGrid`]); `None` otherwise.
     grid: Option<ExactGrid<D>>,
+    /// Whether an outside point goes to the candidate facet it is farthest beyond rather than to
+    /// the first found ([`Strategy::partitions_to_farthest`]).
+    partition_farthest: bool,
     /// The run being recorded, if any ([`Hull::try_with_strategy_traced`]); `None` costs each
     /// trace hook one branch.
     trace: Option<Box<Trace<D>>>,
@@ -109,7 +112,7 @@ impl<const D: usize> Hull<D> {
         points: &[[f64; D]],
         strategy: S,
     ) -> Result<(Self, S::Output), HullError> {
-        Ok(Self::try_initial(points)?.run(strategy))
+        Ok(Self::try_initial(points, strategy.partitions_to_farthest())?.run(strategy))
     }
 
     /// Runs `strategy` on a hull holding its initial simplex (traced or not).
@@ -156,7 +159,7 @@ impl<const D: usize> Hull<D> {
         strategy: S,
     ) -> Result<S::Output, HullError> {
         self.flat_of.clear();
-        self.initialise(points)?;
+        self.initialise(points, strategy.partitions_to_farthest())?;
         Ok(self.run_in_place(strategy))
     }
 
@@ -203,7 +206,7 @@ impl<const D: usize> Hull<D> {
         if let Err(error) = check_flats(points, flat_of, flat_dim) {
             self.flat_of.clear();
             // An empty point set leaves the hull empty (no live facet).
-            let _ = self.initialise(&[]);
+            let _ = self.initialise(&[], false);
             return Err(error);
         }
         self.rebuild_with_trusted_flats(points, flat_of, flat_dim, strategy)
@@ -229,7 +232,7 @@ impl<const D: usize> Hull<D> {
         self.flat_of.clear();
         self.flat_of.extend_from_slice(flat_of);
         self.flat_dim = flat_dim;
-        self.initialise(points)?;
+        self.initialise(points, strategy.partitions_to_farthest())?;
         Ok(self.run_in_place(strategy))
     }
 

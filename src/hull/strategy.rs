@@ -43,6 +43,17 @@ pub trait Strategy<const D: usize> {
     fn refines_all_normals(&self) -> bool {
         true
     }
+    /// Whether each outside point should go to the candidate facet it lies farthest beyond
+    /// (Qhull's option `Qf`) rather than to the first one found to hold it. Default `false`: any
+    /// facet a point is strictly beyond keeps the engine's invariants, and stopping at the first
+    /// halves the partition's tests; the full hull ([`FarthestPoint`](crate::FarthestPoint))
+    /// takes the default. A partial strategy that grows the hull through the facets of its
+    /// choice, each by its farthest point, keeps points nearer the facet they see most of, and
+    /// reaches its certificate in fewer expansions with `true` (the built-in partial strategies
+    /// return it). Asked once, before the initial partition.
+    fn partitions_to_farthest(&self) -> bool {
+        false
+    }
     /// What a trace of this strategy's run should show beside the hull (its name, query point,
     /// disturbances); asked once by [`Hull::try_with_strategy_traced`], never on an untraced
     /// run. Default: nothing (the engine names the strategy after its type).
@@ -92,6 +103,9 @@ impl<const D: usize, T: ReusableStrategy<D>> Strategy<D> for &mut T {
 
     fn refines_all_normals(&self) -> bool {
         (**self).refines_all_normals()
+    }
+    fn partitions_to_farthest(&self) -> bool {
+        (**self).partitions_to_farthest()
     }
 
     fn trace_context(&self) -> TraceContext<D> {

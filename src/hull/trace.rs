@@ -39,7 +39,7 @@ impl<const D: usize> Hull<D> {
         points: &[[f64; D]],
         strategy: S,
     ) -> Result<(Self, S::Output, Trace<D>), HullError> {
-        let mut hull = Self::try_initial(points)?;
+        let mut hull = Self::try_initial(points, strategy.partitions_to_farthest())?;
         let mut context = strategy.trace_context();
         if context.strategy.is_empty() {
             let name = std::any::type_name::<S>();

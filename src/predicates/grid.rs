@@ -53,7 +53,7 @@ impl<const D: usize> ExactGrid<D> {
         let mut exponent = i32::MAX;
         for p in points {
             for (j, &x) in p.iter().enumerate() {
-                if !(x.abs() <= 1.0) {
+                if x.is_nan() || x.abs() > 1.0 {
                     return None;
                 }
                 if x != 0.0 {

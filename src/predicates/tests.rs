@@ -717,7 +717,7 @@ fn exact_grid_case<const D: usize>() {
     }
     let step = 1.0 / (span as f64).log2().ceil().exp2();
     let mut rng = crate::geometry::Rng::new(D as u64);
-    let mut coordinate = |rng: &mut crate::geometry::Rng| {
+    let coordinate = |rng: &mut crate::geometry::Rng| {
         // Extremes and zeros often, so that cancellations and the largest permanents occur.
         let u = match rng.index(4) {
             0 => 0,

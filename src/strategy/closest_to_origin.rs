@@ -677,6 +677,10 @@ impl<const D: usize, S: PointSource<D>> Strategy<D> for ClosestToOrigin<D, S> {
         }
     }
 
+    fn partitions_to_farthest(&self) -> bool {
+        true
+    }
+
     fn refines_all_normals(&self) -> bool {
         false // only the deciding facet's normal is reported, and it is refined before use
     }

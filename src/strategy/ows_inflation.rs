@@ -576,6 +576,10 @@ impl<const D: usize> Strategy<D> for OwsInflation<'_, D> {
         }
     }
 
+    fn partitions_to_farthest(&self) -> bool {
+        true
+    }
+
     fn refines_all_normals(&self) -> bool {
         false // every facet whose factor is used was refined when its disturbances were assigned
     }
