@@ -753,3 +753,125 @@ fn the_sample_grasps_file_evaluates_by_every_metric() {
     ]);
     assert_eq!(ows.len(), 4);
 }
+
+#[test]
+fn bench_hull_quick_json_has_every_case() {
+    let out = pqh(
+        &["bench", "hull", "--quick", "--repeats", "1", "--json"],
+        None,
+    );
+    let report = json(&out);
+    assert_eq!(report["benchmark"], "hull");
+    assert_eq!(report["preset"], "quick");
+    assert_eq!(report["qhull"], cfg!(feature = "qhull"));
+    assert_eq!(report["failures"], 0);
+    let rows = report["rows"].as_array().unwrap();
+    let cases: Vec<(String, u64)> = rows
+        .iter()
+        .map(|r| {
+            (
+                r["case"].as_str().unwrap().to_string(),
+                r["dimension"].as_u64().unwrap(),
+            )
+        })
+        .collect();
+    let mut expected = Vec::new();
+    for d in 3..=6 {
+        for family in [
+            "cube",
+            "sphere",
+            "corners",
+            "simplex",
+            "shell",
+            "lens",
+            "lattice",
+            "clusters",
+            "duplicates",
+        ] {
+            expected.push((family.to_string(), d));
+        }
+    }
+    for (grid, d) in [
+        ("grid-m6", 3),
+        ("grid-m4", 4),
+        ("grid-m3", 5),
+        ("grid-m3", 6),
+    ] {
+        expected.push((grid.to_string(), d));
+    }
+    for case in [
+        "wrenches-4x8/hull",
+        "wrenches-4x8/volume",
+        "minkowski-3x4/qinf-full",
+        "minkowski-3x4/hull",
+    ] {
+        expected.push((case.to_string(), 6));
+    }
+    assert_eq!(cases, expected);
+    for r in rows {
+        let positive = |key: &str| r[key].as_f64().is_some_and(|x| x.is_finite() && x > 0.0);
+        assert!(positive("pqhull_ms"), "{r}");
+        assert_eq!(r["check"], true, "{r}");
+        assert!(r["pqhull_vertices"].as_u64().unwrap() > 0, "{r}");
+        if cfg!(feature = "qhull") {
+            assert!(positive("qhull_ms"), "{r}");
+            assert!(r["qhull_vertices"].as_u64().unwrap() > 0, "{r}");
+        } else {
+            assert!(r.get("qhull_ms").is_none(), "{r}");
+        }
+    }
+    // The grasps were chosen force closure (Q1); the metric rows carry their values.
+    for r in rows
+        .iter()
+        .filter(|r| r["family"] != "grid" && r["dimension"] == 6)
+    {
+        if r["timed"] != "hull" {
+            assert!(r["value"].as_f64().is_some_and(f64::is_finite), "{r}");
+            assert_eq!(r["force_closure"], true, "{r}");
+        }
+    }
+
+    // The table: one line per row, the summary line with Qhull; filters pick the cases.
+    let out = pqh(
+        &[
+            "bench",
+            "hull",
+            "--quick",
+            "--repeats",
+            "1",
+            "--families",
+            "simplex,grid",
+            "--dimensions",
+            "3",
+        ],
+        None,
+    );
+    assert!(out.status.success(), "{}", stderr(&out));
+    let text = stdout(&out);
+    assert!(
+        text.contains("simplex") && text.contains("grid-m6"),
+        "{text}"
+    );
+    assert!(!text.lines().any(|l| l.starts_with("cube")), "{text}");
+    assert_eq!(
+        text.contains("min qhull/pqhull"),
+        cfg!(feature = "qhull"),
+        "{text}"
+    );
+    // Nothing selected, or an unknown family: usage errors.
+    let out = pqh(
+        &[
+            "bench",
+            "hull",
+            "--families",
+            "minkowski",
+            "--dimensions",
+            "3",
+        ],
+        None,
+    );
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    assert!(stderr(&out).contains("no case matches"), "{}", stderr(&out));
+    let out = pqh(&["bench", "hull", "--families", "cubes"], None);
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+}

@@ -1,6 +1,6 @@
 //! Benchmark workloads, their timing harness and statistics: what `pqh bench gws`,
-//! `pqh bench ows` and `pqh compare` measure, as plain reports a program can read (and
-//! `to_json` for the documents the CLI prints).
+//! `pqh bench ows`, `pqh bench hull` and `pqh compare` measure, as plain reports a program can
+//! read (and `to_json` for the documents the CLI prints).
 //!
 //! * [`workloads`] — the seeded inputs: random grasps on a bar and on a mesh's surface, point
 //!   sets on a sphere and in a cube, a grasp's wrench set.
@@ -8,6 +8,8 @@
 //!   in thread pools of several sizes ([`batch`]).
 //! * [`ows`] — Q_OWS by every method against Q1.
 //! * [`compare`] — the full hull against the partial hull on the point sets.
+//! * [`hull`] — the hull suite: pqhull's full hull against Qhull on `rbox` families, integer
+//!   grids and grasp wrench sets.
 //! * [`stats`] — medians, means, ratios and quantiles.
 //!
 //! Times are wall clock on whatever else the machine is doing: compare rows of one run. Long
@@ -28,6 +30,7 @@
 pub mod batch;
 pub mod compare;
 pub mod gws;
+pub mod hull;
 pub mod ows;
 pub mod runs;
 pub mod stats;

@@ -19,6 +19,13 @@ pub const MAX_THREADS: usize = 256;
 /// and evaluates each by several methods; 100,000 is far more than a stable median needs.
 pub const MAX_BENCH_GRASPS: usize = 100_000;
 
+/// The most timed runs per case of `pqh bench hull --repeats` (the library's
+/// [`MAX_REPEATS`](pqhull::bench::hull::MAX_REPEATS)).
+///
+/// Why: the best of a few runs is what the suite reports; a thousand runs of its slowest case
+/// (about 0.1 s) is already minutes.
+pub const MAX_BENCH_REPEATS: usize = pqhull::bench::hull::MAX_REPEATS;
+
 /// The most Minkowski points per grasp (`Grasp::minkowski_points`) that Q∞ by a full method
 /// (`--method full` or `qhull`) hulls without `--force` (`pqh grasp`) or an explicit
 /// `--full-samples` (`pqh plan`).
@@ -79,6 +86,11 @@ pub fn bench_grasps() -> impl Fn(&str) -> Result<usize, String> + Clone + Send +
 /// Grasps of a benchmark's slow methods (0 turns them off): 0 to [`MAX_BENCH_GRASPS`].
 pub fn bench_subset() -> impl Fn(&str) -> Result<usize, String> + Clone + Send + Sync + 'static {
     count(0, MAX_BENCH_GRASPS)
+}
+
+/// Timed runs per case of `pqh bench hull`: 1 to [`MAX_BENCH_REPEATS`].
+pub fn bench_repeats() -> impl Fn(&str) -> Result<usize, String> + Clone + Send + Sync + 'static {
+    count(1, MAX_BENCH_REPEATS)
 }
 
 /// `pqh demo`'s options are defined in `demo_cmd.rs`; their limits are attached here, on the

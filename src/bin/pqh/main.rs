@@ -2,9 +2,10 @@
 //!
 //! Parsing, I/O and output only; every computation is a call into the `pqhull` library.
 
-// One file per command (`*_cmd.rs`, `bench_ows.rs`); the others are helpers the commands share.
+// One file per command (`*_cmd.rs`, `bench_ows.rs`, `bench_hull.rs`); the others are helpers the commands share.
 // A command file uses helpers only, never another command's file.
 mod bench_cmd;
+mod bench_hull;
 mod bench_ows;
 mod compare_cmd;
 mod demo_cmd;
@@ -71,7 +72,8 @@ enum Command {
     /// Grasp quality (Q1, Q∞, Q_OWS) of grasps given as JSON, one JSON line per grasp
     #[command(long_about = grasp_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
     Grasp(grasp_cmd::GraspArgs),
-    /// Benchmarks: `pqh bench gws` compares every method on random grasps
+    /// Benchmarks: `pqh bench gws` compares every method on random grasps, `pqh bench hull`
+    /// full hulls against Qhull
     #[command(after_help = EXIT_STATUS_HELP)]
     Bench(BenchArgs),
     /// A GraspIt!-like random grasp planner: partial vs full-hull quality evaluation
@@ -105,6 +107,10 @@ enum Which {
     Gws(bench_cmd::GwsArgs),
     /// Q_OWS on random surface grasps of a mesh: partial vs brute force vs ellipsoid, vs Q1
     Ows(bench_ows::OwsArgs),
+    /// Full hulls, pqhull vs Qhull: rbox families in 3-D to 6-D, integer grids, grasp wrench
+    /// sets and Minkowski sums
+    #[command(long_about = bench_hull::LONG_ABOUT)]
+    Hull(bench_hull::HullArgs),
 }
 
 /// The command with every limit attached (see `limits`).
@@ -205,6 +211,9 @@ fn main() -> ExitCode {
         Command::Bench(BenchArgs {
             which: Which::Ows(args),
         }) => bench_ows::run(&args),
+        Command::Bench(BenchArgs {
+            which: Which::Hull(args),
+        }) => bench_hull::run(&args),
         Command::Trace(args) => trace_cmd::run(&args),
         Command::Plan(args) => plan_cmd::run(&args),
     };
