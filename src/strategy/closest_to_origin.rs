@@ -3,7 +3,10 @@
 use super::{Queued, ReusableStrategy, Stats, Step, Strategy};
 use crate::geometry::Support;
 use crate::geometry::vector::{dot, norm};
-use crate::geometry::{min_norm_point, min_norm_point_accurate, nearest_face_in_simplex, rescaled};
+use crate::geometry::{
+    min_norm_point, min_norm_point_accurate, min_norm_point_exact, nearest_face_in_simplex,
+    rescaled,
+};
 use crate::hull::TraceContext;
 use crate::hull::{FacetId, Hull};
 use crate::predicates::Sign;
@@ -421,12 +424,17 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
              supporting plane through it?",
         );
         // Heights along q − x measured from the query, where q − x is known accurately: the
-        // supporting plane through x is at height −|q − x|².
+        // supporting plane through x is at height −|q − x|². For a far query, measured from x
+        // instead (the plane at height 0): p − q would lose every bit of p's offset from x.
         // Along q − x divided by a power of two (see `nearest_point`): exact in direction.
         let direction = rescaled(&closest.offset.map(|c| -c));
-        let query = self.query;
-        let height = |p: [f64; D]| dot(direction, std::array::from_fn(|c| p[c] - query[c]));
-        let level = dot(direction, closest.offset);
+        let origin = if closest.far { x } else { self.query };
+        let height = |p: [f64; D]| dot(direction, std::array::from_fn(|c| p[c] - origin[c]));
+        let level = if closest.far {
+            0.0
+        } else {
+            dot(direction, closest.offset)
+        };
         let mut best: Option<(f64, FacetId, usize)> = None;
         for (g, facet) in hull.facets() {
             for p in facet.outside_set() {
@@ -524,6 +532,24 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
         self.seen_vertices.dedup();
         let vertices = &self.seen_vertices;
         let point = |i: usize| hull.point(vertices[i]);
+        let holder = |support: &[usize]| {
+            let support = support.iter().map(|&i| vertices[i]);
+            self.seen.iter().copied().find(|&id| {
+                let facet_vertices = hull.facet(id).vertices();
+                support.clone().all(|v| facet_vertices.contains(&v))
+            })
+        };
+        let bound = FAR_QUERY * hull.coordinate_bound();
+        if self.query.iter().any(|c| c.abs() > bound) {
+            let nearest = min_norm_point_exact(vertices.len(), point, &self.query, &[]);
+            return Closest {
+                point: nearest.point,
+                offset: nearest.offset,
+                facet: holder(nearest.support()).unwrap_or(fallback),
+                distance: nearest.distance,
+                far: true,
+            };
+        }
         let rough = min_norm_point(vertices.len(), point, &self.query);
         let nearest = min_norm_point_accurate(vertices.len(), point, &self.query, rough.support());
         // Wolfe's optimality test, redone here: no vertex may lie beyond the plane through the
@@ -548,16 +574,12 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
         let slack = 2.0 * (D as f64 + 4.0) * f64::EPSILON * dot(unit, unit).sqrt() * reach;
         let optimal = worst <= slack;
         if optimal {
-            let support = nearest.support().iter().map(|&i| vertices[i]);
-            let holder = self.seen.iter().copied().find(|&id| {
-                let facet_vertices = hull.facet(id).vertices();
-                support.clone().all(|v| facet_vertices.contains(&v))
-            });
             return Closest {
                 point: nearest.point,
                 offset: nearest.offset,
-                facet: holder.unwrap_or(fallback),
+                facet: holder(nearest.support()).unwrap_or(fallback),
                 distance: nearest.distance,
+                far: false,
             };
         }
         let mut best: Option<([f64; D], FacetId, f64, u32)> = None;
@@ -592,6 +614,7 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
                 offset: polished.offset,
                 facet,
                 distance: polished.distance,
+                far: false,
             };
         }
         Closest {
@@ -599,6 +622,7 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
             offset: std::array::from_fn(|c| point[c] - self.query[c]),
             facet,
             distance,
+            far: false,
         }
     }
 
@@ -649,7 +673,17 @@ struct Closest<const D: usize> {
     /// A seen facet holding `point` (or the farthest seen one if none is found).
     facet: FacetId,
     distance: f64,
+    /// The query is far from the hull ([`FAR_QUERY`]): `point` is exact (rounded once) and
+    /// `offset` only relatively accurate, so heights are measured from `point`.
+    far: bool,
 }
+
+/// A query with a coordinate beyond this many times the hull's coordinate bound is *far*: its
+/// nearest point is computed exactly ([`min_norm_point_exact`]). Floating point would place it
+/// only to an ulp of the query's coordinates (q + (x − q)) and, from about 2^10 times the hull's
+/// extent, decide between the faces in rounding (with the square [−1, 1]² and q = (0, 10^170),
+/// every vertex ties and the answer was (1, 0)).
+const FAR_QUERY: f64 = 2.0;
 
 /// Within this fraction of the input's coordinate bound of the boundary, the floating-point
 /// distance to a plane (the rounding of its offset, about D ulps of the input's size, and of a
