@@ -254,6 +254,7 @@ fn implicit_points_are_recorded_as_insertions() {
     let input = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0]];
     let (plain, result, trace) =
         traced_run(&input, ClosestToOrigin::with_source([0.5, 0.0], Corners));
+    let (plain, result) = (plain.unwrap(), result.unwrap());
     same_distance(&plain, &result);
     assert!((result.signed_distance - 0.5).abs() < 1e-12);
     let inserted: Vec<_> = trace

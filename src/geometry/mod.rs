@@ -25,8 +25,8 @@ pub mod vector;
 pub use ellipsoid::{CentredEllipsoid, EllipsoidError};
 pub use gjk::{GJK_ITERATIONS, GJK_TOUCHING, Gjk, GjkVerdict};
 pub use nearest::{
-    Nearest, min_norm_point, min_norm_point_accurate, nearest_face_in_simplex, nearest_in_simplex,
-    rescaled,
+    FAR, Nearest, min_norm_point, min_norm_point_accurate, min_norm_point_exact,
+    nearest_face_in_simplex, nearest_in_simplex, rescaled,
 };
 pub use rng::Rng;
 pub use support::{Support, SupportFn, largest_norm};

@@ -22,6 +22,9 @@
 
 use super::vector::dot;
 
+mod exact;
+pub use exact::min_norm_point_exact;
+
 /// Optimality tolerance: stop when `|x|² − min_j x·p_j ≤ TOL·M·|x|` (`M` = largest `|p_j − q|`).
 const TOL: f64 = 1e-14;
 
@@ -79,6 +82,10 @@ pub fn min_norm_point<const D: usize>(
 /// times the corral's condition, for corrals whose edges, orthogonalised against each other, keep
 /// more than 1e−14 of the longest one's length (others count as dependent).
 ///
+/// A query farther from the points than [`FAR`] times their extent is handed to
+/// [`min_norm_point_exact`]: there the differences that decide the nearest face are below the
+/// rounding of anything measured from the query.
+///
 /// # Panics
 /// If `count == 0` or an index of `start` is `count` or more.
 pub fn min_norm_point_accurate<const D: usize>(
@@ -87,7 +94,32 @@ pub fn min_norm_point_accurate<const D: usize>(
     query: &[f64; D],
     start: &[usize],
 ) -> Nearest<D> {
+    if is_far(count, &point, query) {
+        return min_norm_point_exact(count, point, query, start);
+    }
     wolfe::<D, true>(count, point, query, start)
+}
+
+/// A query is *far* from a point set when its largest coordinate difference from the first point
+/// exceeds `FAR` times the set's extent (the largest coordinate difference of a point from the
+/// first). Beyond it, floating-point Wolfe decides between faces on differences of relative size
+/// below extent/distance, and places the nearest point only to an ulp of the query's distance
+/// (`2^10` ulps of the set's size here); [`min_norm_point_exact`] is exact there.
+pub const FAR: f64 = 1024.0;
+
+/// Whether `query` is [`FAR`] from the points.
+fn is_far<const D: usize>(
+    count: usize,
+    point: &impl Fn(usize) -> [f64; D],
+    query: &[f64; D],
+) -> bool {
+    if count == 0 {
+        return false;
+    }
+    let first = point(0);
+    let spread = |p: &[f64; D]| (0..D).fold(0.0f64, |m, c| m.max((p[c] - first[c]).abs()));
+    let extent = (1..count).fold(0.0f64, |m, i| m.max(spread(&point(i))));
+    spread(query) > FAR * extent
 }
 
 /// Coordinates (of the points and the query together) whose largest magnitude lies outside
@@ -599,11 +631,17 @@ pub fn nearest_in_simplex<const D: usize>(
 
 /// [`nearest_in_simplex`], with the face holding the nearest point (a bit mask of `vertices`).
 /// In a power-of-two unit when the coordinates leave [2^−`SQUARE_SAFE`, 2^`SQUARE_SAFE`], as
-/// [`min_norm_point`] does.
+/// [`min_norm_point`] does; by [`min_norm_point_exact`] for a query [`FAR`] from the simplex.
 pub fn nearest_face_in_simplex<const D: usize>(
     vertices: &[[f64; D]],
     query: &[f64; D],
 ) -> ([f64; D], f64, u32) {
+    if is_far(vertices.len(), &|i| vertices[i], query) {
+        // The projections onto the faces would be decided in rounding: exact Wolfe instead.
+        let nearest = min_norm_point_exact(vertices.len(), |i| vertices[i], query, &[]);
+        let face = nearest.support().iter().fold(0u32, |m, &i| m | 1 << i);
+        return (nearest.point, nearest.distance, face);
+    }
     let magnitude = |p: &[f64; D]| p.iter().fold(0.0f64, |m, x| m.max(x.abs()));
     let largest = vertices
         .iter()

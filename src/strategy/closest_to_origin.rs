@@ -3,11 +3,15 @@
 use super::{Queued, ReusableStrategy, Stats, Step, Strategy};
 use crate::geometry::Support;
 use crate::geometry::vector::{dot, norm};
-use crate::geometry::{min_norm_point, min_norm_point_accurate, nearest_face_in_simplex, rescaled};
+use crate::geometry::{
+    min_norm_point, min_norm_point_accurate, min_norm_point_exact, nearest_face_in_simplex,
+    rescaled,
+};
 use crate::hull::TraceContext;
 use crate::hull::{FacetId, Hull};
 use crate::predicates::Sign;
 use std::collections::BinaryHeap;
+use std::fmt;
 
 /// Grows the hull toward a query point (default: the origin) and stops as soon as the facet nearest
 /// that point is certain, returning the signed distance from the point to the boundary of the
@@ -47,13 +51,24 @@ use std::collections::BinaryHeap;
 /// assert!((outside.nearest_point[1] + 1.0).abs() < 1e-12);
 /// # Ok::<(), pqhull::HullError>(())
 /// ```
+///
+/// # Output
+///
+/// Without a point source ([`new`](Self::new), [`towards`](Self::towards)) the run gives a
+/// [`DistanceResult`]. With one ([`with_source`](Self::with_source)) it gives
+/// `Result<DistanceResult, SourceError>`: a source that breaks [`PointSource`]'s contract — a
+/// point not strictly beyond the facet it was asked about, or outside the hull's coordinate
+/// range — stops the run with a [`SourceError`] naming the facet and the point (the partial
+/// hull is left valid, without that point).
 #[derive(Clone, Debug)]
-pub struct ClosestToOrigin<const D: usize, S: PointSource<D> = NoSource> {
+pub struct ClosestToOrigin<const D: usize, S = NoSource> {
     query: [f64; D],
     source: S,
     queue: BinaryHeap<Entry>,
     phase: Phase,
     answer: Option<(f64, FacetId, [f64; D])>,
+    /// The contract the source broke, which stopped the run.
+    error: Option<SourceError<D>>,
     /// Scratch: the facets the query sees (outside phase) or that are about as near as the
     /// deciding one (inside, near the boundary), and the seen facets' vertices.
     seen: Vec<FacetId>,
@@ -90,7 +105,10 @@ pub struct DistanceResult<const D: usize> {
     pub closest_facet: FacetId,
     /// The deciding facet's vertices (input indices).
     pub closest_facet_vertices: [usize; D],
-    /// The point of the hull boundary nearest the query point.
+    /// The point of the hull boundary nearest the query point. For a query with a coordinate
+    /// beyond twice the input's [`coordinate_bound`](Hull::coordinate_bound), the exact one
+    /// rounded to the nearest `f64` in each coordinate (so a point of the hull to half an ulp);
+    /// nearer, to a few ulps of the query's and the input's coordinates.
     pub nearest_point: [f64; D],
     /// Work done by the partial hull.
     pub stats: Stats,
@@ -131,31 +149,178 @@ impl<const D: usize> DistanceResult<D> {
 /// }
 /// let input = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0]];
 /// let strategy = ClosestToOrigin::with_source([0.5, 0.0], Corners);
+/// // With a source, the run's output is a `Result`: `SourceError` if the source breaks its
+/// // contract.
 /// let (_, result) = Hull::try_with_strategy(&input, strategy)?;
+/// let result = result?;
 /// // The triangle alone would give 0.25/√2 ≈ 0.18; the square gives 0.5.
 /// assert!((result.signed_distance - 0.5).abs() < 1e-12);
-/// # Ok::<(), pqhull::HullError>(())
+/// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
+///
+/// # Contract
+///
+/// Every point returned — by [`beyond`](Self::beyond) or by
+/// [`support_point`](Support::support_point) — must be finite and within the hull's coordinate
+/// range ([`Hull::coordinate_bound`]: seed the input with the set's extreme points along every
+/// axis), and a point from `beyond` must be strictly beyond the facet asked about. The strategy
+/// checks both exactly; a point that breaks them ends the run with a [`SourceError`] (it used to
+/// panic).
 pub trait PointSource<const D: usize>: Support<D> {
     /// A point of the implicit set strictly beyond facet `id` of `hull` (by the exact
     /// [`Hull::side_of`]), or `None` only when there is none.
     fn beyond(&mut self, hull: &Hull<D>, id: FacetId) -> Option<[f64; D]>;
 }
 
-/// No implicit points: the hull's input is the whole set.
+/// No implicit points: the hull's input is the whole set. The default source of
+/// [`ClosestToOrigin`], whose run then cannot fail (it gives a bare [`DistanceResult`]); it is not
+/// a [`PointSource`].
 #[derive(Clone, Copy, Debug, Default)]
 pub struct NoSource;
-
-impl<const D: usize> PointSource<D> for NoSource {
-    fn beyond(&mut self, _: &Hull<D>, _: FacetId) -> Option<[f64; D]> {
-        None
-    }
-}
 
 impl<const D: usize> Support<D> for NoSource {
     fn support_point(&mut self, _: &[f64; D]) -> Option<[f64; D]> {
         None
     }
+}
+
+/// What the strategy asks of its source: nothing of [`NoSource`], the [`PointSource`] otherwise.
+/// Public only in name (this module is private): it lets one implementation serve both.
+pub trait Implicit<const D: usize> {
+    /// [`PointSource::beyond`].
+    fn beyond(&mut self, hull: &Hull<D>, id: FacetId) -> Option<[f64; D]>;
+    /// [`Support::support_point`].
+    fn support_point(&mut self, direction: &[f64; D]) -> Option<[f64; D]>;
+}
+
+impl<const D: usize> Implicit<D> for NoSource {
+    fn beyond(&mut self, _: &Hull<D>, _: FacetId) -> Option<[f64; D]> {
+        None
+    }
+    fn support_point(&mut self, _: &[f64; D]) -> Option<[f64; D]> {
+        None
+    }
+}
+
+impl<const D: usize, S: PointSource<D>> Implicit<D> for S {
+    fn beyond(&mut self, hull: &Hull<D>, id: FacetId) -> Option<[f64; D]> {
+        PointSource::beyond(self, hull, id)
+    }
+    fn support_point(&mut self, direction: &[f64; D]) -> Option<[f64; D]> {
+        Support::support_point(self, direction)
+    }
+}
+
+/// A [`PointSource`] broke its contract: what it returned, and for which facet. The run stopped
+/// there; the partial hull is valid and does not hold the point.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum SourceError<const D: usize> {
+    /// [`PointSource::beyond`] returned a point that is not strictly beyond the facet it was
+    /// asked about (exact test).
+    NotBeyond {
+        /// The facet asked about.
+        facet: FacetId,
+        /// Its vertices (input indices).
+        facet_vertices: [usize; D],
+        /// The point returned.
+        point: [f64; D],
+        /// Its exact side of the facet's plane: [`Sign::Zero`] on it, [`Sign::Negative`] beneath.
+        side: Sign,
+    },
+    /// [`PointSource::beyond`] returned a point with a coordinate that is not finite or is
+    /// larger in magnitude than the hull's [`coordinate_bound`](Hull::coordinate_bound).
+    OutOfRange {
+        /// The facet asked about.
+        facet: FacetId,
+        /// Its vertices (input indices).
+        facet_vertices: [usize; D],
+        /// The point returned.
+        point: [f64; D],
+        /// The hull's coordinate bound.
+        bound: f64,
+    },
+    /// [`Support::support_point`] returned, for the outside certificate's direction, a point
+    /// with a coordinate that is not finite or is beyond the hull's coordinate bound: the
+    /// certificate could not be checked against it.
+    SupportOutOfRange {
+        /// The direction asked about.
+        direction: [f64; D],
+        /// The point returned.
+        point: [f64; D],
+        /// The hull's coordinate bound.
+        bound: f64,
+    },
+    /// The hull holds as many points as its indices can address (`u32::MAX`): the point
+    /// returned for the facet could not be added.
+    TooManyPoints {
+        /// The facet asked about.
+        facet: FacetId,
+        /// The point returned.
+        point: [f64; D],
+    },
+}
+
+impl<const D: usize> fmt::Display for SourceError<D> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            SourceError::NotBeyond {
+                facet,
+                facet_vertices,
+                point,
+                side,
+            } => {
+                let side = match side {
+                    Sign::Zero => "on its plane",
+                    _ => "beneath it",
+                };
+                write!(
+                    f,
+                    "PointSource::beyond returned {point:?} for facet {} (vertices \
+                     {facet_vertices:?}), which is not strictly beyond it: the exact test puts \
+                     it {side}",
+                    facet.index()
+                )
+            }
+            SourceError::OutOfRange {
+                facet,
+                facet_vertices,
+                point,
+                bound,
+            } => write!(
+                f,
+                "PointSource::beyond returned {point:?} for facet {} (vertices \
+                 {facet_vertices:?}), outside the hull's coordinate range (finite, magnitude at \
+                 most {bound:e}: seed the input with the set's extreme points along every axis)",
+                facet.index()
+            ),
+            SourceError::SupportOutOfRange {
+                direction,
+                point,
+                bound,
+            } => write!(
+                f,
+                "Support::support_point returned {point:?} for direction {direction:?}, outside \
+                 the hull's coordinate range (finite, magnitude at most {bound:e}: seed the \
+                 input with the set's extreme points along every axis)"
+            ),
+            SourceError::TooManyPoints { facet, point } => write!(
+                f,
+                "PointSource::beyond returned {point:?} for facet {}, but the hull already \
+                 holds as many points as it can address ({})",
+                facet.index(),
+                u32::MAX
+            ),
+        }
+    }
+}
+
+impl<const D: usize> std::error::Error for SourceError<D> {}
+
+/// Whether every coordinate of `point` is finite and at most `bound` in magnitude (the range
+/// [`Hull::insert_beyond`] accepts).
+fn in_range<const D: usize>(point: &[f64; D], bound: f64) -> bool {
+    point.iter().all(|x| x.abs() <= bound)
 }
 
 impl<const D: usize> Default for ClosestToOrigin<D> {
@@ -172,19 +337,28 @@ impl<const D: usize> ClosestToOrigin<D> {
 
     /// Toward `query` (caller's units).
     pub fn towards(query: [f64; D]) -> Self {
-        Self::with_source(query, NoSource)
+        Self::build(query, NoSource)
     }
 }
 
 impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
-    /// Toward `query`, over the hull's input *and* the implicit points of `source`.
+    /// Toward `query`, over the hull's input *and* the implicit points of `source`. The run's
+    /// output is then a `Result`: [`SourceError`] when `source` breaks [`PointSource`]'s
+    /// contract.
     pub fn with_source(query: [f64; D], source: S) -> Self {
+        Self::build(query, source)
+    }
+}
+
+impl<const D: usize, S> ClosestToOrigin<D, S> {
+    fn build(query: [f64; D], source: S) -> Self {
         Self {
             query,
             source,
             queue: BinaryHeap::new(),
             phase: Phase::Nearest,
             answer: None,
+            error: None,
             seen: Vec::new(),
             seen_vertices: Vec::new(),
         }
@@ -202,7 +376,9 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
     pub fn source_mut(&mut self) -> &mut S {
         &mut self.source
     }
+}
 
+impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
     /// Queues facet `id` keyed by how far the query lies beyond it — for a facet whose normal is
     /// not precise, a certified upper bound, so that no facet is popped later than it should be;
     /// its exact key is computed when it reaches the top.
@@ -399,16 +575,43 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
             return true;
         }
         if let Some(point) = self.source.beyond(hull, id) {
-            let inserted = hull.insert_beyond(id, point);
-            assert!(
-                inserted.is_some(),
-                "PointSource::beyond returned a point not strictly beyond the facet, or out of \
-                 the hull's coordinate range"
-            );
-            self.enqueue_created(hull);
+            let facet_vertices = hull.facet(id).vertices();
+            let bound = hull.coordinate_bound();
+            let error = if !in_range(&point, bound) {
+                SourceError::OutOfRange {
+                    facet: id,
+                    facet_vertices,
+                    point,
+                    bound,
+                }
+            } else {
+                match hull.side_of(id, &point) {
+                    Sign::Positive => match hull.insert_beyond(id, point) {
+                        Some(_) => {
+                            self.enqueue_created(hull);
+                            return true;
+                        }
+                        None => SourceError::TooManyPoints { facet: id, point },
+                    },
+                    side => SourceError::NotBeyond {
+                        facet: id,
+                        facet_vertices,
+                        point,
+                        side,
+                    },
+                }
+            };
+            self.fail(hull, error);
             return true;
         }
         false
+    }
+
+    /// Stops the run on a broken source contract.
+    fn fail(&mut self, hull: &mut Hull<D>, error: SourceError<D>) {
+        hull.trace_stop(None, || format!("stopped: {error}"));
+        self.error = Some(error);
+        self.phase = Phase::Done;
     }
 
     /// One step of the outside phase: nearest point of the partial hull, then its certificate.
@@ -421,12 +624,17 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
              supporting plane through it?",
         );
         // Heights along q − x measured from the query, where q − x is known accurately: the
-        // supporting plane through x is at height −|q − x|².
+        // supporting plane through x is at height −|q − x|². For a far query, measured from x
+        // instead (the plane at height 0): p − q would lose every bit of p's offset from x.
         // Along q − x divided by a power of two (see `nearest_point`): exact in direction.
         let direction = rescaled(&closest.offset.map(|c| -c));
-        let query = self.query;
-        let height = |p: [f64; D]| dot(direction, std::array::from_fn(|c| p[c] - query[c]));
-        let level = dot(direction, closest.offset);
+        let origin = if closest.far { x } else { self.query };
+        let height = |p: [f64; D]| dot(direction, std::array::from_fn(|c| p[c] - origin[c]));
+        let level = if closest.far {
+            0.0
+        } else {
+            dot(direction, closest.offset)
+        };
         let mut best: Option<(f64, FacetId, usize)> = None;
         for (g, facet) in hull.facets() {
             for p in facet.outside_set() {
@@ -440,17 +648,29 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
             && let Some(s) = self.source.support_point(&direction)
             && height(s) > level
         {
+            let bound = hull.coordinate_bound();
+            if !in_range(&s, bound) {
+                let error = SourceError::SupportOutOfRange {
+                    direction,
+                    point: s,
+                    bound,
+                };
+                self.fail(hull, error);
+                return Step::Stop;
+            }
             // An implicit point beyond the certificate plane: it is outside the partial hull, so
             // some facet sees it.
             let seen = hull
                 .facets()
                 .map(|(g, _)| g)
                 .find(|&g| hull.side_of(g, &s) == Sign::Positive);
-            if let Some(g) = seen
-                && hull.insert_beyond(g, s).is_some()
-            {
-                self.enqueue_created(hull);
-                return Step::Continue;
+            if let Some(g) = seen {
+                if hull.insert_beyond(g, s).is_some() {
+                    self.enqueue_created(hull);
+                    return Step::Continue;
+                }
+                self.fail(hull, SourceError::TooManyPoints { facet: g, point: s });
+                return Step::Stop;
             }
         }
         match best {
@@ -524,6 +744,24 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
         self.seen_vertices.dedup();
         let vertices = &self.seen_vertices;
         let point = |i: usize| hull.point(vertices[i]);
+        let holder = |support: &[usize]| {
+            let support = support.iter().map(|&i| vertices[i]);
+            self.seen.iter().copied().find(|&id| {
+                let facet_vertices = hull.facet(id).vertices();
+                support.clone().all(|v| facet_vertices.contains(&v))
+            })
+        };
+        let bound = FAR_QUERY * hull.coordinate_bound();
+        if self.query.iter().any(|c| c.abs() > bound) {
+            let nearest = min_norm_point_exact(vertices.len(), point, &self.query, &[]);
+            return Closest {
+                point: nearest.point,
+                offset: nearest.offset,
+                facet: holder(nearest.support()).unwrap_or(fallback),
+                distance: nearest.distance,
+                far: true,
+            };
+        }
         let rough = min_norm_point(vertices.len(), point, &self.query);
         let nearest = min_norm_point_accurate(vertices.len(), point, &self.query, rough.support());
         // Wolfe's optimality test, redone here: no vertex may lie beyond the plane through the
@@ -548,16 +786,12 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
         let slack = 2.0 * (D as f64 + 4.0) * f64::EPSILON * dot(unit, unit).sqrt() * reach;
         let optimal = worst <= slack;
         if optimal {
-            let support = nearest.support().iter().map(|&i| vertices[i]);
-            let holder = self.seen.iter().copied().find(|&id| {
-                let facet_vertices = hull.facet(id).vertices();
-                support.clone().all(|v| facet_vertices.contains(&v))
-            });
             return Closest {
                 point: nearest.point,
                 offset: nearest.offset,
-                facet: holder.unwrap_or(fallback),
+                facet: holder(nearest.support()).unwrap_or(fallback),
                 distance: nearest.distance,
+                far: false,
             };
         }
         let mut best: Option<([f64; D], FacetId, f64, u32)> = None;
@@ -592,6 +826,7 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
                 offset: polished.offset,
                 facet,
                 distance: polished.distance,
+                far: false,
             };
         }
         Closest {
@@ -599,6 +834,7 @@ impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
             offset: std::array::from_fn(|c| point[c] - self.query[c]),
             facet,
             distance,
+            far: false,
         }
     }
 
@@ -649,7 +885,17 @@ struct Closest<const D: usize> {
     /// A seen facet holding `point` (or the farthest seen one if none is found).
     facet: FacetId,
     distance: f64,
+    /// The query is far from the hull ([`FAR_QUERY`]): `point` is exact (rounded once) and
+    /// `offset` only relatively accurate, so heights are measured from `point`.
+    far: bool,
 }
+
+/// A query with a coordinate beyond this many times the hull's coordinate bound is *far*: its
+/// nearest point is computed exactly ([`min_norm_point_exact`]). Floating point would place it
+/// only to an ulp of the query's coordinates (q + (x − q)) and, from about 2^10 times the hull's
+/// extent, decide between the faces in rounding (with the square [−1, 1]² and q = (0, 10^170),
+/// every vertex ties and the answer was (1, 0)).
+const FAR_QUERY: f64 = 2.0;
 
 /// Within this fraction of the input's coordinate bound of the boundary, the floating-point
 /// distance to a plane (the rounding of its offset, about D ulps of the input's size, and of a
@@ -657,24 +903,70 @@ struct Closest<const D: usize> {
 /// are then taken from the exact determinants. 2^-33 ≈ 1.2e−10.
 const NEAR_BOUNDARY: f64 = 1.0 / (1u64 << 33) as f64;
 
-impl<const D: usize, S: PointSource<D>> Strategy<D> for ClosestToOrigin<D, S> {
-    type Output = DistanceResult<D>;
-
-    fn start(&mut self, hull: &Hull<D>) {
+impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
+    fn start_run(&mut self, hull: &Hull<D>) {
         self.queue.clear();
         self.phase = Phase::Nearest;
         self.answer = None;
+        self.error = None;
         for (id, _) in hull.facets() {
             self.enqueue(hull, id);
         }
     }
 
-    fn step(&mut self, hull: &mut Hull<D>) -> Step {
+    fn step_run(&mut self, hull: &mut Hull<D>) -> Step {
         match self.phase {
             Phase::Nearest => self.step_nearest(hull),
             Phase::Outside => self.step_outside(hull),
             Phase::Done => Step::Stop,
         }
+    }
+
+    fn context(&self) -> TraceContext<D> {
+        TraceContext {
+            strategy: "ClosestToOrigin".to_string(),
+            query: Some(self.query),
+            disturbances: Vec::new(),
+        }
+    }
+
+    /// The answer of the run that just stopped, or the contract its source broke.
+    fn result(&self, hull: &Hull<D>) -> Result<DistanceResult<D>, SourceError<D>> {
+        if let Some(error) = &self.error {
+            return Err(error.clone());
+        }
+        let (signed_distance, closest_facet, nearest_point) =
+            self.answer.expect("the strategy stops only with an answer");
+        Ok(DistanceResult {
+            signed_distance,
+            closest_facet,
+            closest_facet_vertices: hull.facet(closest_facet).vertices(),
+            nearest_point,
+            stats: hull.stats(),
+        })
+    }
+}
+
+impl<const D: usize> ClosestToOrigin<D> {
+    /// The answer of a run without a source, which cannot fail.
+    fn plain_result(&self, hull: &Hull<D>) -> DistanceResult<D> {
+        match self.result(hull) {
+            Ok(result) => result,
+            Err(error) => unreachable!("NoSource returns no point: {error}"),
+        }
+    }
+}
+
+/// Without a point source: the run cannot fail.
+impl<const D: usize> Strategy<D> for ClosestToOrigin<D> {
+    type Output = DistanceResult<D>;
+
+    fn start(&mut self, hull: &Hull<D>) {
+        self.start_run(hull);
+    }
+
+    fn step(&mut self, hull: &mut Hull<D>) -> Step {
+        self.step_run(hull)
     }
 
     fn partitions_to_farthest(&self) -> bool {
@@ -686,11 +978,36 @@ impl<const D: usize, S: PointSource<D>> Strategy<D> for ClosestToOrigin<D, S> {
     }
 
     fn trace_context(&self) -> TraceContext<D> {
-        TraceContext {
-            strategy: "ClosestToOrigin".to_string(),
-            query: Some(self.query),
-            disturbances: Vec::new(),
-        }
+        self.context()
+    }
+
+    fn finish(self, hull: &Hull<D>) -> Self::Output {
+        self.plain_result(hull)
+    }
+}
+
+/// With a point source: [`SourceError`] when the source breaks [`PointSource`]'s contract.
+impl<const D: usize, S: PointSource<D>> Strategy<D> for ClosestToOrigin<D, S> {
+    type Output = Result<DistanceResult<D>, SourceError<D>>;
+
+    fn start(&mut self, hull: &Hull<D>) {
+        self.start_run(hull);
+    }
+
+    fn step(&mut self, hull: &mut Hull<D>) -> Step {
+        self.step_run(hull)
+    }
+
+    fn partitions_to_farthest(&self) -> bool {
+        true
+    }
+
+    fn refines_all_normals(&self) -> bool {
+        false // only the deciding facet's normal is reported, and it is refined before use
+    }
+
+    fn trace_context(&self) -> TraceContext<D> {
+        self.context()
     }
 
     fn finish(self, hull: &Hull<D>) -> Self::Output {
@@ -700,24 +1017,16 @@ impl<const D: usize, S: PointSource<D>> Strategy<D> for ClosestToOrigin<D, S> {
 
 /// A borrowed `ClosestToOrigin` runs the same way and keeps its buffers (the facet queue, the
 /// outside-phase scratch) for the next run (see [`ReusableStrategy`]'s example).
-impl<const D: usize, S: PointSource<D>> ReusableStrategy<D> for ClosestToOrigin<D, S> {
+impl<const D: usize> ReusableStrategy<D> for ClosestToOrigin<D> {
     fn output(&self, hull: &Hull<D>) -> DistanceResult<D> {
-        self.result(hull)
+        self.plain_result(hull)
     }
 }
 
-impl<const D: usize, S: PointSource<D>> ClosestToOrigin<D, S> {
-    /// The answer of the run that just stopped.
-    fn result(&self, hull: &Hull<D>) -> DistanceResult<D> {
-        let (signed_distance, closest_facet, nearest_point) =
-            self.answer.expect("the strategy stops only with an answer");
-        DistanceResult {
-            signed_distance,
-            closest_facet,
-            closest_facet_vertices: hull.facet(closest_facet).vertices(),
-            nearest_point,
-            stats: hull.stats(),
-        }
+/// As without a source.
+impl<const D: usize, S: PointSource<D>> ReusableStrategy<D> for ClosestToOrigin<D, S> {
+    fn output(&self, hull: &Hull<D>) -> Self::Output {
+        self.result(hull)
     }
 }
 

@@ -500,7 +500,9 @@ pub(super) fn partial(
     });
     let h = hull.get_or_insert_with(Hull::empty);
     let snapped = h.rebuild_with_strategy(seeds, &mut *nearest);
-    if let Ok(result) = snapped {
+    // The source keeps its contract (its points are checked exactly, and within the seeds'
+    // range); should it not, the raw sum below decides.
+    if let Ok(Ok(result)) = snapped {
         let source = nearest.source_mut();
         let raw_point = |v: usize| source.raw_point(&h.point(v));
         if result.signed_distance > 0.0
@@ -539,7 +541,7 @@ pub(super) fn partial(
         source.support_point(d).expect("a contact has cone edges")
     });
     match h.rebuild_with_strategy(seeds, &mut *nearest) {
-        Ok(result) => Ok(Quality::new(
+        Ok(Ok(result)) => Ok(Quality::new(
             result.signed_distance,
             result.closest_facet_vertices.iter().map(|&v| h.point(v)),
             result.stats,
@@ -552,6 +554,10 @@ pub(super) fn partial(
             Ok(q.banded(scale))
         }
         Err(e) => unreachable!("raw wrenches are checked finite: {e}"),
+        Ok(Err(e)) => unreachable!(
+            "the Minkowski source returns only points strictly beyond (exact test) and within \
+             its seeds' range: {e}"
+        ),
     }
 }
 
