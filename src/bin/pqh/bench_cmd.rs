@@ -158,14 +158,11 @@ pub fn run(args: &GwsArgs) -> Result<(), CliError> {
         e => CliError::Usage(e.to_string()),
     })?;
     drop(bars);
-    let stdout = std::io::stdout();
-    let mut out = std::io::BufWriter::new(stdout.lock());
-    if args.json {
-        writeln!(out, "{}", report.to_json())?;
-    } else {
-        print_tables(&mut out, &report)?;
-    }
-    out.flush()?;
+    crate::format::write_report(
+        args.json,
+        || report.to_json(),
+        |out| print_tables(out, &report),
+    )?;
     Ok(())
 }
 

@@ -79,14 +79,11 @@ pub fn run(args: &HullArgs) -> Result<(), CliError> {
     })
     .map_err(|e| CliError::Usage(e.to_string()))?;
     drop(bars);
-    let stdout = std::io::stdout();
-    let mut out = std::io::BufWriter::new(stdout.lock());
-    if args.json {
-        writeln!(out, "{}", report.to_json())?;
-    } else {
-        print_table(&mut out, &report)?;
-    }
-    out.flush()?;
+    crate::format::write_report(
+        args.json,
+        || report.to_json(),
+        |out| print_table(out, &report),
+    )?;
     match report.failures() {
         0 => Ok(()),
         n => Err(CliError::Geometry(format!(
