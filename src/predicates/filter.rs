@@ -1,6 +1,7 @@
 //! The floating-point filter: a cached hyperplane with a certified error bound.
 
-use super::{Sign, exact, wide::ExactPlane};
+use super::minors::{MinorScalar, Tracked, minors_of};
+use super::{Sign, double_double::DdPlane, exact, wide::ExactPlane};
 use std::sync::OnceLock;
 
 /// Unit roundoff of `f64` (round to nearest).
@@ -28,62 +29,6 @@ fn grid_exponent<'a>(values: impl Iterator<Item = &'a f64>) -> i32 {
         .unwrap_or(i32::MAX)
 }
 
-/// The number of elements of every subset of 0..8 given as a bit mask (a table: `count_ones` is
-/// not one instruction on baseline x86-64, and [`FacetPlane::new`] asks it 2^D times per facet).
-const SUBSET_SIZE: [u8; 256] = {
-    let mut table = [0u8; 256];
-    let mut mask = 1;
-    while mask < 256 {
-        table[mask] = table[mask >> 1] + (mask & 1) as u8;
-        mask += 1;
-    }
-    table
-};
-
-/// The (D−1)×(D−1) minors of `rows[1..D]` omitting each column j, and the permanents of
-/// `magnitudes` behind them, by a dynamic programme over column subsets: `minor[S]` is the
-/// determinant of rows 1..=k restricted to the k columns of the bit set S (ascending), `perm[S]`
-/// the matching permanent of absolute values. Masks are visited in increasing order, so S \ {j}
-/// (a smaller number) is always ready before S. `N` ≥ 2^D is the table size.
-fn cofactor_minors<const D: usize, const N: usize>(
-    rows: &[[f64; D]; D],
-    magnitudes: &[[f64; D]; D],
-) -> ([f64; D], [f64; D]) {
-    let mut minor = [0.0f64; N];
-    let mut perm = [0.0f64; N];
-    minor[0] = 1.0;
-    perm[0] = 1.0;
-    let full = (1usize << D) - 1;
-    for mask in 1..full {
-        let k = SUBSET_SIZE[mask] as usize;
-        if k >= D {
-            continue;
-        }
-        // Row e_k, expanded as the last of the k rows.
-        let (row, magnitude) = (&rows[k], &magnitudes[k]);
-        // Sign of column position t in S is (−1)^((k−1)+t).
-        let mut negative = (k - 1) % 2 == 1;
-        let mut m = 0.0;
-        let mut q = 0.0;
-        let mut bits = mask;
-        while bits != 0 {
-            let j = bits.trailing_zeros() as usize;
-            bits &= bits - 1;
-            let sub = mask & !(1 << j);
-            let term = row[j] * minor[sub];
-            m = if negative { m - term } else { m + term };
-            q += magnitude[j] * perm[sub];
-            negative = !negative;
-        }
-        minor[mask] = m;
-        perm[mask] = q;
-    }
-    (
-        std::array::from_fn(|j| minor[full & !(1 << j)]),
-        std::array::from_fn(|j| perm[full & !(1 << j)]),
-    )
-}
-
 /// Relative inflation covering the roundings of the bound computation itself (at most ~30
 /// operations on non-negative numbers, each with relative error `u = 2^-53`: `30u < 2^-40`).
 const BOUND_INFLATION: f64 = 1.0 + 1.0 / (1u64 << 40) as f64;
@@ -103,9 +48,19 @@ pub struct FacetPlane<const D: usize> {
     permanents: [f64; D],
     /// `UNDERFLOW_SLACK` if every vertex coordinate is in `[−1, 1]`, `+∞` otherwise (filter off).
     slack: f64,
-    /// Exact integer cofactors, built the first time the filter fails on this plane (D ≥ 4; for
-    /// D ≤ 3 `robust` is faster); `None` inside when the vertices do not fit (then every slow-path
-    /// test computes a full determinant).
+    /// The slower stages, allocated the first time the filter fails on this plane (so that a
+    /// plane the filter always decides carries one pointer's worth of them).
+    refined: OnceLock<Box<Refined<D>>>,
+}
+
+/// The stages behind the filter, each built on first use.
+#[derive(Clone, Debug, Default)]
+struct Refined<const D: usize> {
+    /// The double-double plane (D ≥ 4; for D ≤ 3 `robust` is faster); `None` inside when a
+    /// vertex coordinate is outside `[−1, 1]`.
+    dd: OnceLock<Option<DdPlane<D>>>,
+    /// Exact integer cofactors (D ≥ 4); `None` inside when the vertices do not fit (then every
+    /// exact test computes a full determinant).
     exact: OnceLock<Option<Box<ExactPlane<D>>>>,
 }
 
@@ -125,23 +80,19 @@ impl<const D: usize> FacetPlane<D> {
         let base = vertices[0];
         let in_range = vertices.iter().flatten().all(|x| x.abs() <= 1.0);
 
-        // The rows e_k = v_k − v0 (rounded) and their magnitudes, once (the expansion reads each
+        // The rows e_k = v_k − v0 (rounded) with their magnitudes, once (the expansion reads each
         // entry up to 2^(D−2) times).
-        let mut rows = [[0.0f64; D]; D];
-        let mut magnitudes = [[0.0f64; D]; D];
+        let mut rows = [[Tracked::ZERO; D]; D];
         for k in 1..D {
             for j in 0..D {
-                rows[k][j] = vertices[k][j] - base[j];
-                magnitudes[k][j] = rows[k][j].abs();
+                let value = vertices[k][j] - base[j];
+                rows[k][j] = Tracked {
+                    value,
+                    magnitude: value.abs(),
+                };
             }
         }
-        // Tables of 2^D entries: 64 up to D = 6, else 256 (zeroing 4 KB per facet was a
-        // measurable share of a 6-D hull's time).
-        let (minor, perm) = if D <= 6 {
-            cofactor_minors::<D, 64>(&rows, &magnitudes)
-        } else {
-            cofactor_minors::<D, 256>(&rows, &magnitudes)
-        };
+        let minors = minors_of(&rows);
 
         // Error analysis (why these constants are safe; u = 2^-53).
         // * Entries: ê = fl(v_k − v0) = (v_k − v0)(1 + δ), |δ| ≤ u (a difference that underflows is
@@ -165,14 +116,11 @@ impl<const D: usize> FacetPlane<D> {
         let mut error = [0.0; D];
         let mut permanents = [0.0; D];
         for j in 0..D {
-            let c = if (D - 1 + j) % 2 == 1 {
-                -minor[j]
-            } else {
-                minor[j]
-            };
+            let Tracked { value, magnitude } = minors[j];
+            let c = if (D - 1 + j) % 2 == 1 { -value } else { value };
             cofactors[j] = c;
-            permanents[j] = perm[j];
-            error[j] = c_perm * perm[j] + c_cof * c.abs();
+            permanents[j] = magnitude;
+            error[j] = c_perm * magnitude + c_cof * c.abs();
         }
         FacetPlane {
             base,
@@ -184,7 +132,7 @@ impl<const D: usize> FacetPlane<D> {
             } else {
                 f64::INFINITY
             },
-            exact: OnceLock::new(),
+            refined: OnceLock::new(),
         }
     }
 
@@ -235,7 +183,7 @@ impl<const D: usize> FacetPlane<D> {
             error: self.error,
             permanents: self.permanents,
             slack: self.slack,
-            exact: OnceLock::new(),
+            refined: OnceLock::new(),
         }
     }
 
@@ -284,11 +232,20 @@ impl<const D: usize> FacetPlane<D> {
             if self.value_is_exact(&vertices, p) {
                 return exact::sign_of(value);
             }
-            if D >= 4
-                && p.iter().all(|x| x.is_finite())
-                && let Some(sign) = self.exact_plane(&vertices).and_then(|plane| plane.side(p))
-            {
-                return sign;
+            if D >= 4 && p.iter().all(|x| x.is_finite()) {
+                let refined = self.refined();
+                let dd = refined
+                    .dd
+                    .get_or_init(|| DdPlane::new(&vertices, &self.permanents));
+                if let Some(sign) = dd
+                    .as_ref()
+                    .and_then(|plane| plane.sign(&self.base, p, self.slack))
+                {
+                    return sign;
+                }
+                if let Some(sign) = self.exact_plane(&vertices).and_then(|plane| plane.side(p)) {
+                    return sign;
+                }
             }
             exact::orientation(&vertices, p)
         }
@@ -373,9 +330,29 @@ impl<const D: usize> FacetPlane<D> {
 
     /// The cached exact plane, built on first use.
     fn exact_plane(&self, vertices: &[[f64; D]; D]) -> Option<&ExactPlane<D>> {
-        self.exact
+        self.refined()
+            .exact
             .get_or_init(|| ExactPlane::new(vertices).map(Box::new))
             .as_deref()
+    }
+
+    /// The double-double plane through the same vertices, as [`side`](Self::side) builds it,
+    /// with the base and the slack its evaluation takes (for the tests of the second stage).
+    #[cfg(test)]
+    pub(in crate::predicates) fn double_double(
+        &self,
+        vertices: &[[f64; D]; D],
+    ) -> (Option<DdPlane<D>>, [f64; D], f64) {
+        (
+            DdPlane::new(vertices, &self.permanents),
+            self.base,
+            self.slack,
+        )
+    }
+
+    /// The slower stages' cache, allocated on first use.
+    fn refined(&self) -> &Refined<D> {
+        self.refined.get_or_init(Box::default)
     }
 
     /// The cofactor vector `C`: `det[v1 − v0; …; v(D−1) − v0; p − v0] = Σ_j C_j·(p_j − v0_j)`

@@ -22,13 +22,15 @@
 //! * otherwise, and for every D ≥ 4: coordinates are scaled by powers of two into integers
 //!   (exactly: every `f64` is an integer times a power of two), and the sign of the integer
 //!   determinant of differences is found by a Laplace expansion in allocation-free fixed-width
-//!   integers when every column fits in `i64` (each column scaled by its own power of two), by
+//!   integers when every column fits in `i128` (each column scaled by its own power of two), by
 //!   fraction-free Bareiss elimination in `BigInt` otherwise.
 //!
 //! [`FacetPlane`] is the fast path used by the hull engine: it caches the cofactors of the
 //! facet, so that evaluating the determinant for a new `p` is a D-term dot product, together with
 //! a certified error bound ([`FacetPlane::evaluate`]). [`FacetPlane::side`] returns the sign of the
-//! approximation when it exceeds the bound, and otherwise falls back on [`orientation`].
+//! approximation when it exceeds the bound; otherwise (D ≥ 4) the same plane in double-double
+//! arithmetic with its own certified bound (~2^−101 relative), then exact integer cofactors, both
+//! built once per plane and kept, and last [`orientation`].
 //!
 //! **Precondition of the filter**: the error bound is finite only when every coordinate (of the
 //! vertices and of `p`) is in `[−1, 1]` — the hull engine scales every input by a power of two
@@ -62,9 +64,11 @@
 //! assert_eq!(plane.cofactors(), &[0.0, 0.0, 1.0]);
 //! ```
 
+mod double_double;
 mod exact;
 mod filter;
 mod grid;
+mod minors;
 #[cfg(test)]
 mod tests;
 mod wide;

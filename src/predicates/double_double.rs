@@ -1,0 +1,275 @@
+//! The second stage of the side test: the facet's hyperplane in double-double arithmetic, with a
+//! certified error bound.
+//!
+//! Between the `f64` filter (relative accuracy ~2^-53 of the permanent) and exact integer
+//! arithmetic sits a large class of inputs: points that are *nearly* on a facet's hyperplane
+//! because the caller's data are degenerate only up to rounding — the raw wrenches of a contact,
+//! which lie in one plane up to the rounding of their torques, and Minkowski sums of them. Their
+//! determinants are around 2^-53 of the permanent: too small for the filter, and every one sent
+//! to the exact path cost the exact cofactors of its facet (most of a raw wrench hull's time).
+//! Double-double arithmetic (each value an unevaluated sum `hi + lo` of two `f64`) carries about
+//! 2^-101 relative accuracy at ~20 `f64` operations per operation, so it decides those signs with
+//! a margin of ~2^48, and leaves to the exact path only the determinants that are zero or within
+//! ~2^-95 of the permanent.
+//!
+//! No maintained crate offers double-double arithmetic with the *rigorous* per-operation bounds
+//! this certificate needs (the `twofloat` and `qd` ports document no bounds), hence the few
+//! functions below, each from the literature with its proven bound.
+//!
+//! # Error model
+//!
+//! With `u = 2^-53`, every operation below returns `(x ∘ y)(1 + δ)` with `|δ| ≤ U2 = 2^-101 =
+//! 32u²`, barring underflow (treated as for the filter, by an absolute slack):
+//! * [`add`] is Joldes, Muller and Popescu's *AccurateDWPlusDW* (ACM TOMS 44(2), 2017, Algorithm
+//!   6): `|δ| ≤ 3u² + 13u³`;
+//! * [`mul`] is their *DWTimesDW1* (Algorithm 10, Dekker's product), with Veltkamp's splitting
+//!   for the exact product of the high parts: `|δ| ≤ 7u²` (CRlibm's `Mul22`, the same algorithm,
+//!   documents `2^-102 = 16u²`);
+//! * the difference of two `f64` is exact as a double-double ([`two_sum`]).
+//!
+//! Splitting is exact for `|x| ≤ 2^996`; the plane is only built for coordinates in `[−1, 1]`,
+//! where every minor is below `D!·2^D`.
+
+use super::Sign;
+use super::minors::{MinorScalar, minors_of};
+
+/// The per-operation relative error bound of the model, `2^-101` (over four times the proven
+/// bounds of [`add`] and [`mul`]).
+const U2: f64 = 3.944304526105059e-31; // 2^-101
+
+/// Unit roundoff of `f64` (round to nearest).
+const U: f64 = f64::EPSILON / 2.0;
+
+/// `2^27 + 1`, Veltkamp's splitting constant for 53-bit significands.
+const SPLITTER: f64 = 134_217_729.0;
+
+/// An unevaluated sum `hi + lo` with `|lo| ≤ ulp(hi)/2` (after normalisation).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(in crate::predicates) struct Dd {
+    hi: f64,
+    lo: f64,
+}
+
+/// `(s, e)` with `s = fl(a + b)` and `s + e = a + b` exactly (Knuth's TwoSum, no precondition).
+#[inline(always)]
+fn two_sum(a: f64, b: f64) -> Dd {
+    let s = a + b;
+    let a1 = s - b;
+    let b1 = s - a1;
+    Dd {
+        hi: s,
+        lo: (a - a1) + (b - b1),
+    }
+}
+
+/// TwoSum when `|a| ≥ |b|` (or `a` is zero): three operations (Dekker's Fast2Sum).
+#[inline(always)]
+fn fast_two_sum(a: f64, b: f64) -> Dd {
+    let s = a + b;
+    Dd {
+        hi: s,
+        lo: b - (s - a),
+    }
+}
+
+/// Veltkamp's split of `a` into two halves of at most 26 significant bits each.
+#[inline(always)]
+fn split(a: f64) -> (f64, f64) {
+    let c = SPLITTER * a;
+    let hi = c - (c - a);
+    (hi, a - hi)
+}
+
+/// `(p, e)` with `p = fl(a·b)` and `p + e = a·b` exactly (Dekker's TwoProduct; exact barring
+/// underflow and overflow). Written without `mul_add`, which is a library call where the target
+/// has no FMA instruction.
+#[inline(always)]
+fn two_prod(a: f64, b: f64) -> Dd {
+    let p = a * b;
+    let (ah, al) = split(a);
+    let (bh, bl) = split(b);
+    Dd {
+        hi: p,
+        lo: ((ah * bh - p) + ah * bl + al * bh) + al * bl,
+    }
+}
+
+/// `x + y` (AccurateDWPlusDW).
+#[inline(always)]
+fn add(x: Dd, y: Dd) -> Dd {
+    let s = two_sum(x.hi, y.hi);
+    let t = two_sum(x.lo, y.lo);
+    let v = fast_two_sum(s.hi, s.lo + t.hi);
+    fast_two_sum(v.hi, t.lo + v.lo)
+}
+
+/// `x·y` (DWTimesDW1).
+#[inline(always)]
+fn mul(x: Dd, y: Dd) -> Dd {
+    let c = two_prod(x.hi, y.hi);
+    let cross = x.hi * y.lo + x.lo * y.hi;
+    fast_two_sum(c.hi, c.lo + cross)
+}
+
+impl Dd {
+    fn neg(self) -> Dd {
+        Dd {
+            hi: -self.hi,
+            lo: -self.lo,
+        }
+    }
+
+    /// The exact difference `a − b`.
+    fn difference(a: f64, b: f64) -> Dd {
+        two_sum(a, -b)
+    }
+}
+
+impl MinorScalar for Dd {
+    const ONE: Self = Dd { hi: 1.0, lo: 0.0 };
+    const ZERO: Self = Dd { hi: 0.0, lo: 0.0 };
+    #[inline(always)]
+    fn accumulate(acc: Self, entry: Self, minor: Self, negative: bool) -> Self {
+        let term = mul(entry, minor);
+        add(acc, if negative { term.neg() } else { term })
+    }
+}
+
+/// A facet's hyperplane in double-double: the cofactors of the last row of
+/// `[v1 − v0; …; v(D−1) − v0; ·]` and per-coordinate error coefficients, so that
+/// `Σ_j C_j·(p_j − v0_j)` approximates the orientation determinant with a certified bound
+/// `Σ_j err_j·|p_j − v0_j| + slack`.
+#[derive(Clone, Debug)]
+pub(in crate::predicates) struct DdPlane<const D: usize> {
+    cofactors: [Dd; D],
+    error: [f64; D],
+}
+
+impl<const D: usize> DdPlane<D> {
+    /// The plane through `vertices`, every coordinate in `[−1, 1]` (`None` otherwise), with the
+    /// permanents of |minor| behind each cofactor as the filter computed them.
+    ///
+    /// Error analysis: the rows `v_k − v0` are exact double-doubles, so only the expansion and the
+    /// final dot product round. Under the model `fl(x ∘ y) = (x ∘ y)(1 + δ)`, `|δ| ≤ U2`, the
+    /// analysis of [`FacetPlane::new`](super::FacetPlane::new) applies word for word with `u`
+    /// replaced by `U2` and without the rounding of the entries: the same coefficients
+    /// `2(D² + 4D + 8)·U2` on the permanent and `(D + 3)·U2` on |C_j| are safe. The permanents
+    /// are the filter's, computed in `f64` from rounded entries: their relative error (below
+    /// `(D² + D)u`) is absorbed by the factor-four margin.
+    pub(in crate::predicates) fn new(
+        vertices: &[[f64; D]; D],
+        permanents: &[f64; D],
+    ) -> Option<Self> {
+        if !vertices.iter().flatten().all(|x| x.abs() <= 1.0) {
+            return None;
+        }
+        let base = vertices[0];
+        let mut rows = [[Dd::ZERO; D]; D];
+        for k in 1..D {
+            for j in 0..D {
+                rows[k][j] = Dd::difference(vertices[k][j], base[j]);
+            }
+        }
+        let minors = minors_of(&rows);
+        let d = D as f64;
+        let (c_perm, c_cof) = (2.0 * (d * d + 4.0 * d + 8.0) * U2, (d + 3.0) * U2);
+        let mut cofactors = [Dd::ZERO; D];
+        let mut error = [0.0; D];
+        for j in 0..D {
+            let c = if (D - 1 + j) % 2 == 1 {
+                minors[j].neg()
+            } else {
+                minors[j]
+            };
+            cofactors[j] = c;
+            // |C| ≤ |hi|(1 + u): the factor covers the low part.
+            error[j] = (c_perm * permanents[j] + c_cof * c.hi.abs()) * (1.0 + 2.0 * U);
+        }
+        Some(DdPlane { cofactors, error })
+    }
+
+    /// The double-double value of `det[v1 − v0; …; p − v0]` (as `(hi, lo)`) and a certified
+    /// bound on its error: `|hi + lo − det| ≤ bound`. `base` is `v0`; `slack` the filter's
+    /// absolute underflow slack (finite: the vertices are in `[−1, 1]`). `None` unless every
+    /// coordinate of `p` is in `[−1, 1]`.
+    ///
+    /// The bound adds `Σ err_j·|d_j|` (cofactor errors and the dot product's `D` roundings are in
+    /// `err_j`, see [`new`](Self::new)), inflated by `1 + 2^-40` for its own `f64` roundings and
+    /// for `|d_j| ≤ |fl(d_j)|(1 + u)`, and the underflow slack: the filter's argument holds for
+    /// the ~20 `f64` operations of each double-double one (`(2·8)^9 · 20 · 2^-1075 < 2^-1000`).
+    #[inline]
+    pub(in crate::predicates) fn evaluate(
+        &self,
+        base: &[f64; D],
+        p: &[f64; D],
+        slack: f64,
+    ) -> Option<((f64, f64), f64)> {
+        if !p.iter().all(|x| x.abs() <= 1.0) {
+            return None;
+        }
+        let mut value = Dd::ZERO;
+        let mut bound = 0.0;
+        for j in 0..D {
+            let d = Dd::difference(p[j], base[j]);
+            value = add(value, mul(self.cofactors[j], d));
+            bound += self.error[j] * d.hi.abs();
+        }
+        let bound = bound * (1.0 + 1.0 / (1u64 << 40) as f64) + slack;
+        Some(((value.hi, value.lo), bound))
+    }
+
+    /// The sign of `det[v1 − v0; …; p − v0]` when the double-double value exceeds its bound
+    /// ([`evaluate`](Self::evaluate)), `None` otherwise.
+    #[inline]
+    pub(in crate::predicates) fn sign(
+        &self,
+        base: &[f64; D],
+        p: &[f64; D],
+        slack: f64,
+    ) -> Option<Sign> {
+        let ((hi, _), bound) = self.evaluate(base, p, slack)?;
+        // |hi + lo| ≥ |hi|·(1 − u) after normalisation; 2^-50 covers it.
+        if hi.abs() * (1.0 - 1.0 / (1u64 << 50) as f64) > bound {
+            Some(if hi > 0.0 {
+                Sign::Positive
+            } else {
+                Sign::Negative
+            })
+        } else {
+            None
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn two_prod_and_two_sum_are_exact() {
+        // (1 + 2^-30)² = 1 + 2^-29 + 2^-60: the last term is the error of the rounded product.
+        let a = 1.0 + 2f64.powi(-30);
+        let p = two_prod(a, a);
+        assert_eq!((p.hi, p.lo), (1.0 + 2f64.powi(-29), 2f64.powi(-60)));
+        let s = two_sum(1.0, 2f64.powi(-80));
+        assert_eq!((s.hi, s.lo), (1.0, 2f64.powi(-80)));
+    }
+
+    #[test]
+    fn products_and_sums_carry_about_a_hundred_bits() {
+        // (1 + 2^-60)·(1 − 2^-60) = 1 − 2^-120: hi 1, lo −2^-120 up to ~2^-101 relative.
+        let x = Dd {
+            hi: 1.0,
+            lo: 2f64.powi(-60),
+        };
+        let y = Dd {
+            hi: 1.0,
+            lo: -(2f64.powi(-60)),
+        };
+        let z = mul(x, y);
+        assert_eq!(z.hi, 1.0);
+        assert!((z.lo + 2f64.powi(-120)).abs() <= U2);
+        let w = add(x, y);
+        assert_eq!((w.hi, w.lo), (2.0, 0.0));
+    }
+}
