@@ -60,8 +60,9 @@ struct Refined<const D: usize> {
     /// vertex coordinate is outside `[−1, 1]`.
     dd: OnceLock<Option<DdPlane<D>>>,
     /// Exact integer cofactors (D ≥ 4); `None` inside when the vertices do not fit (then every
-    /// exact test computes a full determinant).
-    exact: OnceLock<Option<Box<ExactPlane<D>>>>,
+    /// exact test computes a full determinant). Inline (about 1 KB in 6-D), so that a plane
+    /// allocates once whatever the stages it needs.
+    exact: OnceLock<Option<ExactPlane<D>>>,
 }
 
 impl<const D: usize> FacetPlane<D> {
@@ -332,8 +333,8 @@ impl<const D: usize> FacetPlane<D> {
     fn exact_plane(&self, vertices: &[[f64; D]; D]) -> Option<&ExactPlane<D>> {
         self.refined()
             .exact
-            .get_or_init(|| ExactPlane::new(vertices).map(Box::new))
-            .as_deref()
+            .get_or_init(|| ExactPlane::new(vertices))
+            .as_ref()
     }
 
     /// The double-double plane through the same vertices, as [`side`](Self::side) builds it,
