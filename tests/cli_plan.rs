@@ -16,14 +16,13 @@ fn pqh(args: &[&str]) -> Output {
 /// A bar [−0.5, 0.5] × [−0.2, 0.2] × [−0.1, 0.1], counter-clockwise seen from outside.
 fn bar_obj() -> PathBuf {
     let path = temp("bar.obj");
-    std::fs::write(
+    cli_support::write_atomically(
         &path,
         "v -0.5 -0.2 -0.1\nv 0.5 -0.2 -0.1\nv 0.5 0.2 -0.1\nv -0.5 0.2 -0.1\n\
          v -0.5 -0.2 0.1\nv 0.5 -0.2 0.1\nv 0.5 0.2 0.1\nv -0.5 0.2 0.1\n\
          f 1 4 3\nf 1 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\n\
          f 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n",
-    )
-    .expect("write the bar");
+    );
     path
 }
 

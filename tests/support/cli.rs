@@ -30,6 +30,15 @@ pub fn temp(name: &str) -> PathBuf {
 /// Writes `contents` to [`temp`]`(name)` and returns its path.
 pub fn file(name: &str, contents: &str) -> PathBuf {
     let path = temp(name);
-    std::fs::write(&path, contents).expect("write test input");
+    write_atomically(&path, contents);
     path
+}
+
+/// Writes `contents` to `path` through a file of this process's own, renamed into place: tests
+/// of one binary run in parallel processes (nextest), and one writing a shared input while
+/// another reads it let the reader see it truncated ("mesh is empty").
+pub fn write_atomically(path: &std::path::Path, contents: &str) {
+    let staging = path.with_extension(format!("{}.partial", std::process::id()));
+    std::fs::write(&staging, contents).expect("write test input");
+    std::fs::rename(&staging, path).expect("move test input into place");
 }
