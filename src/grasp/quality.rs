@@ -60,10 +60,10 @@ use super::flatness::{FLAT, Flatness};
 use super::snap::{SnappedCones, pyramid_labels, snapped_union};
 use crate::geometry::{
     GJK_ITERATIONS, GJK_TOUCHING, Gjk, GjkVerdict, largest_norm, min_norm_point,
-    min_norm_point_accurate, nearest_in_simplex,
+    min_norm_point_accurate,
 };
 use crate::predicates::times_power_of_two;
-use crate::strategy::{ClosestToOrigin, Stats};
+use crate::strategy::{ClosestToOrigin, Complete, Stats};
 use crate::{Hull, HullError};
 use std::time::Instant;
 
@@ -705,7 +705,37 @@ fn partial_q1(
     if let Some(quality) = flat_q1(w, started, &mut buffers.flatness) {
         return quality;
     }
-    match HullBuffers::build(&mut buffers.hull, w, pyramids, &mut buffers.nearest) {
+    nearest_q1(w, pyramids, started, buffers, false)
+}
+
+/// Q1 of `w` from the full hull; `pyramids` as in [`HullBuffers::build`].
+fn full_q1(
+    w: &[[f64; 6]],
+    pyramids: Option<&[u32]>,
+    started: Instant,
+    buffers: &mut HullBuffers,
+) -> Quality {
+    nearest_q1(w, pyramids, started, buffers, true)
+}
+
+/// Q1 of `w` by [`ClosestToOrigin`] on the partial hull it grows, or (`full`) on the full hull
+/// ([`Complete`]): one exact computation of the distance for both methods, inside (the nearest
+/// facet, certified, its distance from the exact determinants near the boundary) and outside
+/// (the exact nearest point), so the full method is exact by the same argument as the default.
+fn nearest_q1(
+    w: &[[f64; 6]],
+    pyramids: Option<&[u32]>,
+    started: Instant,
+    buffers: &mut HullBuffers,
+    full: bool,
+) -> Quality {
+    let HullBuffers { hull, nearest, .. } = buffers;
+    let built = if full {
+        HullBuffers::build(hull, w, pyramids, Complete::new(nearest))
+    } else {
+        HullBuffers::build(hull, w, pyramids, nearest)
+    };
+    match built {
         Ok((_, result)) => Quality::new(
             result.signed_distance,
             result.closest_facet_vertices.iter().map(|&v| w[v]),
@@ -716,64 +746,6 @@ fn partial_q1(
         }
         Err(e) => unreachable!("snapped wrenches are finite and few: {e}"),
     }
-}
-
-/// Q1 of `w` from the full hull; `pyramids` as in [`HullBuffers::build`].
-fn full_q1(
-    w: &[[f64; 6]],
-    pyramids: Option<&[u32]>,
-    started: Instant,
-    buffers: &mut HullBuffers,
-) -> Quality {
-    let strategy = crate::FarthestPoint::new();
-    let hull = match HullBuffers::build(&mut buffers.hull, w, pyramids, strategy) {
-        Ok((hull, ())) => hull,
-        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
-            return degenerate(w, started);
-        }
-        Err(e) => unreachable!("snapped wrenches are finite and few: {e}"),
-    };
-    let origin = [0.0; 6];
-    let stats = hull.stats();
-    let mut beyond = false;
-    let mut on_boundary = false;
-    let mut nearest: Option<(f64, crate::FacetId)> = None;
-    for (id, facet) in hull.facets() {
-        match hull.side_of(id, &origin) {
-            crate::predicates::Sign::Positive => beyond = true,
-            crate::predicates::Sign::Zero => on_boundary = true,
-            crate::predicates::Sign::Negative => {}
-        }
-        let distance = -facet.signed_distance(&origin);
-        if nearest.is_none_or(|(d, _)| distance < d) {
-            nearest = Some((distance, id));
-        }
-    }
-    if !beyond {
-        let (distance, id) = nearest.expect("a hull has facets");
-        // Strictly inside by the exact test but within rounding of the plane: 0 is then within
-        // the rounding of the true (tiny) distance, and the band says "not force closure".
-        let value = if on_boundary { 0.0 } else { distance.max(0.0) };
-        let deciding = hull.facet(id).vertices().map(|v| w[v]);
-        return Quality::new(value, deciding.into_iter(), stats);
-    }
-    // Outside: the nearest point over every facet the origin sees (exhaustive).
-    let mut best: Option<(f64, [usize; 6])> = None;
-    for (id, facet) in hull.facets() {
-        if hull.side_of(id, &origin) != crate::predicates::Sign::Positive {
-            continue;
-        }
-        if best.is_some_and(|(d, _)| facet.signed_distance(&origin) >= d) {
-            continue; // the plane is already farther than the best point
-        }
-        let simplex = facet.vertices().map(|v| w[v]);
-        let (_, d) = nearest_in_simplex(&simplex, &origin);
-        if best.is_none_or(|(b, _)| d < b) {
-            best = Some((d, facet.vertices()));
-        }
-    }
-    let (distance, vertices) = best.expect("the origin sees a facet");
-    Quality::new(-distance, vertices.iter().map(|&v| w[v]), stats)
 }
 
 /// [`QualityError::UnsupportedMethod`], typed as any result.

@@ -20,10 +20,14 @@
 
 use super::Grasp;
 use crate::geometry::vector::{add, scale as scaled_by, sub};
+use crate::predicates::times_power_of_two;
 use std::f64::consts::PI;
 
 /// Bits kept by the snapping (see the module docs for why 24).
 const BITS: i32 = 24;
+
+/// The finest grid: its products by the angles' grid `2^−BITS` are multiples of `2^−1074`.
+const MIN_GRID_EXPONENT: i32 = -1074 + BITS;
 
 /// The snapped generators of every pyramid: `[u, v, s]` per pyramid, and the snapped (cos, sin)
 /// of every edge angle. A hard contact is one pyramid; a soft contact (torsion γ) two, with
@@ -86,8 +90,12 @@ impl SnappedCones {
                 .fold(0.0f64, f64::max);
             if largest > 0.0 {
                 // 2^e > largest, so snapped values are integers below 2^24 in units of the grid.
+                // The grid is at least 2^(−1074 + 24), so that the products by the angles (in
+                // units of 2^−24) stay multiples of the smallest subnormal: exact, even in a
+                // column of subnormal torques (a contact at y = 1e−310). There the snapped values
+                // are below 2^24 units all the more. (`powi` is not used: 2^−1053 by it is 0.)
                 let e = largest.log2().floor() as i32 + 1;
-                *g = 2f64.powi(e - BITS);
+                *g = times_power_of_two(1.0, (e - BITS).max(MIN_GRID_EXPONENT));
             }
         }
         for generator in &mut self.generators {

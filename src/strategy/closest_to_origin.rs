@@ -3,10 +3,7 @@
 use super::{Queued, ReusableStrategy, Stats, Step, Strategy};
 use crate::geometry::Support;
 use crate::geometry::vector::{dot, norm};
-use crate::geometry::{
-    min_norm_point, min_norm_point_accurate, min_norm_point_exact, nearest_face_in_simplex,
-    rescaled,
-};
+use crate::geometry::{min_norm_point, min_norm_point_accurate, min_norm_point_exact, rescaled};
 use crate::hull::TraceContext;
 use crate::hull::{FacetId, Hull};
 use crate::predicates::Sign;
@@ -794,46 +791,17 @@ impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
                 far: false,
             };
         }
-        let mut best: Option<([f64; D], FacetId, f64, u32)> = None;
-        for &id in &self.seen {
-            let simplex = hull.facet(id).vertices().map(|v| hull.point(v));
-            let (x, d, face) = nearest_face_in_simplex(&simplex, &self.query);
-            if best.is_none_or(|(_, _, b, _)| d < b) {
-                best = Some((x, id, d, face));
-            }
-        }
-        let (point, facet, distance, face) = best.expect("at least one facet is seen");
-        // The nearest face, found in floating point, measured again with an accurate residual.
-        let vertices = hull.facet(facet).vertices();
-        let mut members = [0usize; 9];
-        let mut count = 0;
-        for (i, &v) in vertices.iter().enumerate() {
-            if face & (1 << i) != 0 {
-                members[count] = v;
-                count += 1;
-            }
-        }
-        let start: [usize; 9] = std::array::from_fn(|i| i);
-        let polished = min_norm_point_accurate(
-            count,
-            |i| hull.point(members[i]),
-            &self.query,
-            &start[..count],
-        );
-        if polished.distance <= distance {
-            return Closest {
-                point: polished.point,
-                offset: polished.offset,
-                facet,
-                distance: polished.distance,
-                far: false,
-            };
-        }
+        // Wolfe's floating-point run failed its own test (nearly coincident points, or
+        // coordinates of very different magnitudes — torques 1e8 times the forces — that its
+        // linear algebra cannot resolve): the nearest point exactly, rounded once. Projecting on
+        // faces in floating point instead (as before) dropped the faces whose pivots looked
+        // negligible and answered 0.3 for a distance of 7e−17.
+        let exact = min_norm_point_exact(vertices.len(), point, &self.query, nearest.support());
         Closest {
-            point,
-            offset: std::array::from_fn(|c| point[c] - self.query[c]),
-            facet,
-            distance,
+            point: exact.point,
+            offset: exact.offset,
+            facet: holder(exact.support()).unwrap_or(fallback),
+            distance: exact.distance,
             far: false,
         }
     }

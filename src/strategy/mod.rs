@@ -40,10 +40,12 @@
 //! ```
 
 mod closest_to_origin;
+mod complete;
 mod ows_inflation;
 
 pub use crate::hull::{FarthestPoint, ReusableStrategy, Stats, Step, Strategy};
 pub use closest_to_origin::{ClosestToOrigin, DistanceResult, NoSource, PointSource, SourceError};
+pub use complete::Complete;
 pub use ows_inflation::{OwsInflation, OwsResult, inflation_factor};
 pub use ows_inflation::{exact_factor, factor_lower_bound};
 
