@@ -9,7 +9,7 @@ use numpy::{
 };
 use pqhull::grasp::metrics::{Score, Scorer};
 use pqhull::grasp::ows::{ObjectWrenchSpace as Space, evaluate_ows_batch};
-use pqhull::grasp::quality::{Method, Metric, QualityError, evaluate_batch};
+use pqhull::grasp::quality::{Method, Metric, NameError, QualityError, evaluate_batch};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
 use pyo3::prelude::*;
 
@@ -106,49 +106,31 @@ fn check_contacts(what: &str, shape: &[usize], m: Option<usize>) -> PyResult<()>
     Ok(())
 }
 
-/// The batch's metric from its name, `with_zero_wrench` (Q∞) and the wrench `resist` takes.
+/// The batch's metric from its name (the library's vocabulary, [`Metric`]'s `FromStr`),
+/// `with_zero_wrench` (Q∞) and the wrench `resist` takes.
 fn metric_of(name: &str, with_zero_wrench: bool, wrench: Option<&[f64]>) -> PyResult<Metric> {
     if wrench.is_some() && name != "resist" {
         return Err(errors::input("wrench= is for metric \"resist\""));
     }
-    Ok(match name {
-        "q1" => Metric::Q1,
-        "qinf" => Metric::QInf { with_zero_wrench },
-        "ows" => Metric::Ows,
-        "resist" => {
-            let w = wrench.ok_or_else(|| errors::input("metric \"resist\" needs wrench="))?;
-            let wrench = w.try_into().map_err(|_| {
-                errors::input(format!("wrench must have 6 numbers, not {}", w.len()))
-            })?;
-            Metric::Resist { wrench }
-        }
-        "volume" => Metric::Volume,
-        "sigma-min" => Metric::SigmaMin,
-        "isotropy" => Metric::Isotropy,
-        other => {
-            return Err(errors::input(format!(
-                "metric {other:?}: one of \"q1\", \"qinf\", \"ows\", \"resist\", \"volume\", \
-                 \"sigma-min\", \"isotropy\""
-            )));
-        }
-    })
+    if name == "resist" {
+        let w = wrench.ok_or_else(|| errors::input("metric \"resist\" needs wrench="))?;
+        let wrench = w
+            .try_into()
+            .map_err(|_| errors::input(format!("wrench must have 6 numbers, not {}", w.len())))?;
+        return Ok(Metric::Resist { wrench });
+    }
+    match name.parse::<Metric>() {
+        Ok(Metric::QInf { .. }) if name == "qinf" => Ok(Metric::QInf { with_zero_wrench }),
+        Ok(metric) => Ok(metric),
+        Err(e) => Err(errors::input(e.to_string())),
+    }
 }
 
-/// A method by its Python name, checked against `metric`.
+/// A method by its name ([`Method`]'s `FromStr`), checked against `metric`.
 pub(crate) fn method_of(name: &str, metric: Metric) -> PyResult<Method> {
-    let method = match name {
-        "partial" => Method::Partial,
-        "full" => Method::Full,
-        "qhull" => Method::Qhull,
-        "partial-rays" => Method::PartialRays,
-        "ellipsoid" => Method::Ellipsoid,
-        other => {
-            return Err(errors::input(format!(
-                "method {other:?}: one of \"partial\", \"full\", \"qhull\", \"partial-rays\", \
-                 \"ellipsoid\""
-            )));
-        }
-    };
+    let method: Method = name
+        .parse()
+        .map_err(|e: NameError| errors::input(e.to_string()))?;
     if !method.supports(metric) {
         return Err(errors::quality(QualityError::UnsupportedMethod {
             method,

@@ -72,7 +72,7 @@ mod minkowski;
 mod vocabulary;
 pub use error::QualityError;
 pub use minkowski::MINKOWSKI_MATERIALISE_LIMIT;
-pub use vocabulary::{Method, Metric};
+pub use vocabulary::{Method, Metric, NameError};
 
 /// Up to seven wrenches: a facet's six, or the points spanning a nearest face.
 const MAX_DECIDING: usize = 7;

@@ -140,3 +140,47 @@ fn available(method: Method) -> Result<Method, CliError> {
     }
     Ok(method)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every `--metric` and `--method` value is the library's name for what it maps to, so the
+    /// CLI, the library and Python read one vocabulary.
+    #[test]
+    fn the_values_are_the_library_names() {
+        for arg in MethodArg::value_variants() {
+            let name = arg
+                .to_possible_value()
+                .expect("not skipped")
+                .get_name()
+                .to_string();
+            assert_eq!(name.parse::<Method>(), Ok(arg.method()), "--method {name}");
+        }
+        assert_eq!("brute".parse::<Method>(), Ok(MethodArg::Full.method()));
+        for arg in GwsMethodArg::value_variants() {
+            let name = arg
+                .to_possible_value()
+                .expect("not skipped")
+                .get_name()
+                .to_string();
+            let method: Method = name.parse().expect("a library method");
+            if let Ok(m) = arg.method() {
+                assert_eq!(m, method, "--methods {name}");
+            }
+        }
+        for arg in MetricArg::value_variants() {
+            let name = arg
+                .to_possible_value()
+                .expect("not skipped")
+                .get_name()
+                .to_string();
+            let wrench = (*arg == MetricArg::Resist).then_some("1,0,0,0,0,0");
+            let metric = arg.metric(false, wrench).expect("a metric");
+            assert_eq!(metric.name(), name, "--metric {name}");
+            if *arg != MetricArg::Resist {
+                assert_eq!(name.parse::<Metric>(), Ok(metric), "--metric {name}");
+            }
+        }
+    }
+}

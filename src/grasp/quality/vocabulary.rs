@@ -1,5 +1,9 @@
 //! The names of what is computed ([`Metric`]) and how ([`Method`]): one vocabulary for the
-//! evaluators, the planner and `pqh`.
+//! evaluators, the planner, `pqh` and the Python package, read by [`FromStr`] and written by
+//! [`Display`](fmt::Display).
+
+use std::fmt;
+use std::str::FromStr;
 
 /// A grasp-quality metric: the one vocabulary of the evaluators, the planner and `pqh`.
 ///
@@ -59,6 +63,101 @@ impl Metric {
     }
 }
 
+impl Metric {
+    /// The names [`FromStr`] reads: every metric without a parameter (`resist` needs its
+    /// wrench: build [`Metric::Resist`] directly).
+    pub const NAMES: [&'static str; 7] = [
+        "q1",
+        "qinf",
+        "qinf0",
+        "ows",
+        "volume",
+        "sigma-min",
+        "isotropy",
+    ];
+}
+
+/// `"qinf0"` is Q∞ with the zero wrench in every contact's set.
+///
+/// ```
+/// use pqhull::grasp::quality::Metric;
+/// assert_eq!("qinf0".parse(), Ok(Metric::QInf { with_zero_wrench: true }));
+/// assert_eq!(Metric::SigmaMin.to_string(), "sigma-min");
+/// let err = "resist".parse::<Metric>().unwrap_err();
+/// assert!(err.to_string().contains("wrench"));
+/// ```
+impl FromStr for Metric {
+    type Err = NameError;
+
+    fn from_str(name: &str) -> Result<Self, NameError> {
+        Ok(match name {
+            "q1" => Metric::Q1,
+            "qinf" => Metric::QInf {
+                with_zero_wrench: false,
+            },
+            "qinf0" => Metric::QInf {
+                with_zero_wrench: true,
+            },
+            "ows" => Metric::Ows,
+            "volume" => Metric::Volume,
+            "sigma-min" => Metric::SigmaMin,
+            "isotropy" => Metric::Isotropy,
+            "resist" => return Err(NameError::NeedsWrench),
+            _ => return Err(NameError::unknown("metric", name, &Metric::NAMES)),
+        })
+    }
+}
+
+impl fmt::Display for Metric {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// A name [`Metric`] or [`Method`] does not read.
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum NameError {
+    /// Not a name of the vocabulary.
+    Unknown {
+        /// `"metric"` or `"method"`.
+        kind: &'static str,
+        /// The name given.
+        name: String,
+        /// The names accepted.
+        expected: &'static [&'static str],
+    },
+    /// `resist`: wrench resistance needs the wrench to resist ([`Metric::Resist`]).
+    NeedsWrench,
+}
+
+impl NameError {
+    fn unknown(kind: &'static str, name: &str, expected: &'static [&'static str]) -> Self {
+        NameError::Unknown {
+            kind,
+            name: name.to_string(),
+            expected,
+        }
+    }
+}
+
+impl fmt::Display for NameError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            NameError::Unknown {
+                kind,
+                name,
+                expected,
+            } => write!(f, "unknown {kind} {name:?}: one of {}", expected.join(", ")),
+            NameError::NeedsWrench => {
+                f.write_str("metric resist needs the wrench to resist (fx, fy, fz, tx, ty, tz)")
+            }
+        }
+    }
+}
+
+impl std::error::Error for NameError {}
+
 /// How a metric is computed. Every metric takes [`Partial`](Method::Partial) (the default) and
 /// [`Full`](Method::Full) (for the volume and the grasp-matrix metrics, the method computes only
 /// the force-closure verdict, Q1's: see [`Scorer`](crate::grasp::metrics::Scorer)); the others
@@ -101,6 +200,19 @@ impl Method {
         }
     }
 
+    /// Every method, in the order `pqh` lists them.
+    pub const ALL: [Method; 5] = [
+        Method::Partial,
+        Method::Full,
+        Method::Qhull,
+        Method::PartialRays,
+        Method::Ellipsoid,
+    ];
+
+    /// Their names, in the same order ([`FromStr`] also reads `brute` for
+    /// [`Full`](Method::Full), the seed paper's name for Q_OWS by every facet).
+    pub const NAMES: [&'static str; 5] = ["partial", "full", "qhull", "partial-rays", "ellipsoid"];
+
     /// Whether `metric` can be computed this way.
     pub fn supports(self, metric: Metric) -> bool {
         match self {
@@ -110,5 +222,54 @@ impl Method {
             // No ellipsoid encloses a single disturbance: not for Resist.
             Method::Ellipsoid => metric == Metric::Ows,
         }
+    }
+}
+
+/// ```
+/// use pqhull::grasp::quality::Method;
+/// assert_eq!("partial-rays".parse(), Ok(Method::PartialRays));
+/// assert_eq!("brute".parse(), Ok(Method::Full));
+/// assert_eq!(Method::Ellipsoid.to_string(), "ellipsoid");
+/// assert!("fast".parse::<Method>().unwrap_err().to_string().contains("partial, full"));
+/// ```
+impl FromStr for Method {
+    type Err = NameError;
+
+    fn from_str(name: &str) -> Result<Self, NameError> {
+        if name == "brute" {
+            return Ok(Method::Full);
+        }
+        Method::ALL
+            .into_iter()
+            .find(|m| m.name() == name)
+            .ok_or_else(|| NameError::unknown("method", name, &Method::NAMES))
+    }
+}
+
+impl fmt::Display for Method {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_name_reads_back() {
+        for method in Method::ALL {
+            assert_eq!(method.to_string().parse(), Ok(method));
+        }
+        assert_eq!(Method::ALL.map(Method::name), Method::NAMES);
+        for name in Metric::NAMES {
+            let metric: Metric = name.parse().unwrap();
+            assert_eq!(metric.to_string(), name);
+        }
+        let resist = Metric::Resist { wrench: [1.0; 6] };
+        assert_eq!(
+            resist.to_string().parse::<Metric>(),
+            Err(NameError::NeedsWrench)
+        );
     }
 }
