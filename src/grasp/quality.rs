@@ -656,16 +656,22 @@ impl Explicit<'_> {
             return quality;
         }
         let strategy = crate::FarthestPoint::new();
+        // The full hull's work, reported whichever step gives the value (a GJK answer too: the
+        // full method built the hull first, and its counters should say so).
+        let mut full_stats = None;
         if let Ok((h, ())) =
             HullBuffers::build(&mut buffers.hull, self.snapped, self.pyramids, strategy)
-            && h.facets()
-                .all(|(id, _)| h.side_of(id, &[0.0; 6]) == crate::predicates::Sign::Negative)
-            && let Some(quality) = self.certify(h, &mut buffers.bracket)
         {
-            return quality;
+            full_stats = Some(h.stats());
+            if h.facets()
+                .all(|(id, _)| h.side_of(id, &[0.0; 6]) == crate::predicates::Sign::Negative)
+                && let Some(quality) = self.certify(h, &mut buffers.bracket)
+            {
+                return quality;
+            }
         }
         if let Some((distance, inserted)) = certified_outside(self.raw, &mut buffers.gjk) {
-            let stats = no_hull_stats(1 + inserted, started);
+            let stats = full_stats.unwrap_or_else(|| no_hull_stats(1 + inserted, started));
             return Quality::new(-distance, buffers.gjk.face().iter().copied(), stats);
         }
         full_q1(self.raw, None, started, buffers)

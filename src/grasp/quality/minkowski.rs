@@ -614,12 +614,16 @@ pub(super) fn full(
     };
     let strategy = crate::FarthestPoint::new();
     let snapped = HullBuffers::build(&mut buffers.hull, out, None, strategy);
-    if let Ok((h, ())) = snapped
-        && h.facets()
+    // The full hull's work, reported by a GJK answer too (as for Q1's full method).
+    let mut full_stats = None;
+    if let Ok((h, ())) = snapped {
+        full_stats = Some(h.stats());
+        if h.facets()
             .all(|(id, _)| h.side_of(id, &[0.0; 6]) == Sign::Negative)
-        && let Some(quality) = certify_sum(h, cones, &raw_sets, tuple_sum, &mut buffers.bracket)
-    {
-        return Ok(quality);
+            && let Some(quality) = certify_sum(h, cones, &raw_sets, tuple_sum, &mut buffers.bracket)
+        {
+            return Ok(quality);
+        }
     }
     let mut seeds = Vec::new();
     seed_points(&mut seeds, |d| sum_support(&raw_sets, d));
@@ -631,7 +635,7 @@ pub(super) fn full(
         GJK_ITERATIONS,
         GJK_TOUCHING,
     ) {
-        let stats = no_hull_stats(seeds.len() + inserted, started);
+        let stats = full_stats.unwrap_or_else(|| no_hull_stats(seeds.len() + inserted, started));
         let face = buffers.gjk.face().iter().copied();
         return Ok(Quality::new(-distance, face, stats).banded(scale));
     }
