@@ -4,10 +4,10 @@
 //!
 //! Every input is generated here, seeded; nothing is read from disk. Each case is timed as
 //! pqhull's call (best of [`HullBenchConfig::repeats`] runs, wall clock, one thread) and as
-//! [`qhull_facet_count`](crate::qhull_baseline::qhull_facet_count) on the same points (Qhull's
+//! `qhull_baseline::qhull_facet_count` on the same points (Qhull's
 //! defaults plus `Qt`: all of Qhull's work; cargo feature `qhull`), the two runs interleaved.
 //! Untimed, once: the vertex counts of both hulls
-//! ([`Hull::vertex_indices`], [`qhull_stats`](crate::qhull_baseline::qhull_stats)) and
+//! ([`Hull::vertex_indices`], `qhull_baseline::qhull_stats`) and
 //! [`Hull::check`] on pqhull's.
 //!
 //! | workload | points | pqhull's timed call |
@@ -388,9 +388,9 @@ impl std::error::Error for HullBenchError {}
 /// Qhull's figures of one row.
 #[derive(Clone, Debug, PartialEq)]
 pub struct QhullColumns {
-    /// Best wall time of [`qhull_facet_count`](crate::qhull_baseline::qhull_facet_count), ms.
+    /// Best wall time of `qhull_baseline::qhull_facet_count`, ms.
     pub ms: f64,
-    /// Vertices of Qhull's hull ([`qhull_stats`](crate::qhull_baseline::qhull_stats), untimed).
+    /// Vertices of Qhull's hull (`qhull_baseline::qhull_stats`, untimed).
     pub vertices: usize,
     /// Facets of Qhull's triangulated hull.
     pub facets: usize,

@@ -85,7 +85,7 @@ pub struct GwsArgs {
         default_value = "zero-wrench,plain"
     )]
     pub qinf: Vec<QinfVariant>,
-    /// Batch pool sizes, comma separated, each 1 to 256 [default: 1,<available parallelism>]
+    /// Batch pool sizes, comma separated, each 1 to 256 (default: 1 and the available parallelism)
     #[arg(long, value_delimiter = ',', value_name = "N,...",
           value_parser = crate::limits::threads())]
     pub threads: Option<Vec<usize>>,
