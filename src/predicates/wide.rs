@@ -50,6 +50,14 @@ impl Wide {
         }
     }
 
+    /// Copies the sign bit of limb `from − 1` into the limbs `from..to`.
+    fn sign_extend_to(&mut self, from: usize, to: usize) {
+        let fill = if self.is_negative(from) { u64::MAX } else { 0 };
+        for limb in &mut self.0[from..to.max(from)] {
+            *limb = fill;
+        }
+    }
+
     /// Copies the sign bit of limb `len − 1` into every limb above it.
     fn sign_extend(&mut self, len: usize) {
         let fill = if self.is_negative(len) { u64::MAX } else { 0 };
@@ -133,17 +141,17 @@ impl Wide {
 }
 
 /// The difference matrix `[p1 − p0; p2 − p0; …]` of `points` (rows beyond `points.len() − 1` stay
-/// zero) with every column scaled to integers, the scaling exponent of each column, and the sum
-/// over columns of the bit length of the column's largest entry (a minor over any set of columns
-/// is below 8!·2^bits < 2^(bits + 16)); `None` when some scaled coordinate does not fit in 126
-/// bits (the caller then uses `BigInt`).
+/// zero) with every column scaled to integers, the scaling exponent of each column, and the bit
+/// length of each column's largest entry (a minor over any set of columns is below
+/// 8!·2^(Σ bits) < 2^(Σ bits + 16)); `None` when some scaled coordinate does not fit in 126 bits
+/// (the caller then uses `BigInt`).
 ///
 /// # Panics
 /// If a coordinate is not finite.
-fn integer_rows<const D: usize>(points: &[&[f64; D]]) -> Option<([[i128; D]; D], [i32; D], u32)> {
+fn integer_columns<const D: usize>(points: &[&[f64; D]]) -> Option<IntegerColumns<D>> {
     let mut matrix = [[0i128; D]; D];
     let mut exponents = [0i32; D];
-    let mut bits = 0u32;
+    let mut column_bits = [0u32; D];
     for c in 0..D {
         let emin = points
             .iter()
@@ -160,9 +168,40 @@ fn integer_rows<const D: usize>(points: &[&[f64; D]]) -> Option<([[i128; D]; D],
             matrix[r - 1][c] = entry;
             largest = largest.max(entry.unsigned_abs());
         }
-        bits += 128 - largest.leading_zeros();
+        column_bits[c] = 128 - largest.leading_zeros();
     }
-    Some((matrix, exponents, bits))
+    Some(IntegerColumns {
+        matrix,
+        exponents,
+        column_bits,
+    })
+}
+
+/// What [`integer_columns`] returns.
+struct IntegerColumns<const D: usize> {
+    /// The difference rows in column units.
+    matrix: [[i128; D]; D],
+    /// Column c holds multiples of `2^exponents[c]`.
+    exponents: [i32; D],
+    /// Bit length of each column's largest entry.
+    column_bits: [u32; D],
+}
+
+/// Limbs for the minors of each order r = 1…D of a matrix whose columns' largest entries have
+/// `column_bits` bits: a minor of order r over columns S is below r!·Π_{c∈S} 2^(bits_c) ≤
+/// 2^(16 + the r largest bits), and so is every partial sum of its expansion (bounded by the
+/// permanent). Working each order in its own width halves the Laplace expansion's limb
+/// operations against using the last order's everywhere.
+fn limbs_per_order<const D: usize>(column_bits: &[u32; D]) -> [usize; 9] {
+    let mut sorted = *column_bits;
+    sorted.sort_unstable_by(|a, b| b.cmp(a));
+    let mut limbs = [1usize; 9];
+    let mut bits = 16;
+    for r in 1..=D {
+        bits += sorted[r - 1];
+        limbs[r] = limbs_for(bits).unwrap_or(LIMBS);
+    }
+    limbs
 }
 
 /// Limbs for values below 2^bits, plus a sign bit; `None` beyond [`LIMBS`].
@@ -177,31 +216,39 @@ thread_local! {
 }
 
 /// Minors of the first `rows` rows over every column subset of size `rows`, by Laplace expansion
-/// along each new row (`minors[mask]` for `mask.count_ones() == rows`), handed to `read`.
+/// along each new row (`minors[mask]` for `mask.count_ones() == rows`), handed to `read`. The
+/// minors of order r are computed in `limbs[r]` limbs (nondecreasing in r, `limbs[rows]` at most
+/// `len`), then sign-extended to `len`, which `read` may use for all of them.
 fn subset_minors<const D: usize, T>(
     matrix: &[[i128; D]; D],
     rows: usize,
+    limbs: &[usize; 9],
     len: usize,
     read: impl FnOnce(&[Wide]) -> T,
 ) -> T {
     MINORS.with_borrow_mut(|minors| {
         minors[0] = Wide::ONE;
         for (r, row) in matrix.iter().enumerate().take(rows) {
-            // Masks of size r + 1 from the minors of size r written by the previous pass.
+            let width = limbs[r + 1].min(len);
+            // Masks of size r + 1 from the minors of size r written by the previous pass; every
+            // sub-mask is smaller than its mask, so the table splits into what is read and the
+            // entry written (accumulated in place: no 1 KB temporary per entry).
             for mask in 1usize..1 << D {
                 if mask.count_ones() as usize != r + 1 {
                     continue;
                 }
-                let mut sum = Wide::ZERO;
+                let (lower, upper) = minors.split_at_mut(mask);
+                let sum = &mut upper[0];
+                sum.0[..width].fill(0);
                 let mut subtract = r % 2 == 1;
                 let mut bits = mask;
                 while bits != 0 {
                     let c = bits.trailing_zeros() as usize;
                     bits &= bits - 1;
-                    sum.add_product(row[c], subtract, &minors[mask & !(1 << c)], len);
+                    sum.add_product(row[c], subtract, &lower[mask & !(1 << c)], width);
                     subtract = !subtract;
                 }
-                minors[mask] = sum;
+                sum.sign_extend_to(width, len);
             }
         }
         read(minors)
@@ -230,12 +277,17 @@ impl<const D: usize> ExactPlane<D> {
     /// `None` when the column-scaled vertex coordinates do not fit in `i128`.
     pub(in crate::predicates) fn new(vertices: &[[f64; D]; D]) -> Option<Self> {
         let points: [&[f64; D]; D] = std::array::from_fn(|i| &vertices[i]);
-        let (matrix, exponents, bits) = integer_rows(&points)?;
+        let IntegerColumns {
+            matrix,
+            exponents,
+            column_bits,
+        } = integer_columns(&points)?;
         // Every cofactor is a minor over D − 1 columns: below 2^(bits + 16).
-        let cofactor_bits = bits + 16;
+        let cofactor_bits = column_bits.iter().sum::<u32>() + 16;
         let len = limbs_for(cofactor_bits)?;
         let full = (1usize << D) - 1;
-        let cofactors = subset_minors(&matrix, D - 1, len, |minors| {
+        let limbs = limbs_per_order(&column_bits);
+        let cofactors = subset_minors(&matrix, D - 1, &limbs, len, |minors| {
             std::array::from_fn(|j| {
                 let mut c = minors[full & !(1 << j)];
                 if (D - 1 + j) % 2 == 1 {
@@ -246,7 +298,7 @@ impl<const D: usize> ExactPlane<D> {
             })
         });
         let base = std::array::from_fn(|j| column_integer(vertices[0][j], exponents[j]))
-            .map(|b: Option<i128>| b.expect("integer_rows checked every vertex coordinate"));
+            .map(|b: Option<i128>| b.expect("integer_columns checked every vertex coordinate"));
         Some(ExactPlane {
             cofactors,
             cofactor_bits,
@@ -370,9 +422,14 @@ pub(in crate::predicates) fn orientation<const D: usize>(
     for (slot, v) in points.iter_mut().zip(vertices) {
         *slot = v;
     }
-    let (matrix, _, bits) = integer_rows(&points[..=D])?;
-    let len = limbs_for(bits + 16)?;
-    Some(subset_minors(&matrix, D, len, |minors| {
+    let IntegerColumns {
+        matrix,
+        column_bits,
+        ..
+    } = integer_columns(&points[..=D])?;
+    let len = limbs_for(column_bits.iter().sum::<u32>() + 16)?;
+    let limbs = limbs_per_order(&column_bits);
+    Some(subset_minors(&matrix, D, &limbs, len, |minors| {
         minors[(1 << D) - 1].sign(len)
     }))
 }
