@@ -18,6 +18,28 @@ pub struct Stats {
     pub elapsed: Duration,
 }
 
+/// The work of two runs together (every counter and the time summed): what a metric built on
+/// two hulls reports.
+///
+/// ```
+/// use pqhull::Stats;
+/// let a = Stats { points_processed: 7, facets_created: 12, expansions: 0, ..Stats::default() };
+/// let b = Stats { points_processed: 9, facets_created: 20, expansions: 2, ..Stats::default() };
+/// assert_eq!((a + b).facets_created, 32);
+/// ```
+impl std::ops::Add for Stats {
+    type Output = Stats;
+
+    fn add(self, other: Stats) -> Stats {
+        Stats {
+            points_processed: self.points_processed + other.points_processed,
+            facets_created: self.facets_created + other.facets_created,
+            expansions: self.expansions + other.expansions,
+            elapsed: self.elapsed + other.elapsed,
+        }
+    }
+}
+
 /// Whether the engine should keep expanding.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Step {

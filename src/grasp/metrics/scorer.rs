@@ -147,7 +147,7 @@ impl<'a> Scorer<'a> {
         let (value, mut stats) = match self.metric {
             Metric::Volume => {
                 let (volume, hull) = gws_volume(grasp)?;
-                (volume, plus(hull, verdict.stats))
+                (volume, hull + verdict.stats)
             }
             Metric::SigmaMin => (grasp_matrix_metrics(grasp)?.sigma_min(), verdict.stats),
             Metric::Isotropy => (grasp_matrix_metrics(grasp)?.isotropy(), verdict.stats),
@@ -159,15 +159,5 @@ impl<'a> Scorer<'a> {
             value: Some(value),
             stats,
         })
-    }
-}
-
-/// The work of two hulls together.
-fn plus(a: Stats, b: Stats) -> Stats {
-    Stats {
-        points_processed: a.points_processed + b.points_processed,
-        facets_created: a.facets_created + b.facets_created,
-        expansions: a.expansions + b.expansions,
-        elapsed: a.elapsed + b.elapsed,
     }
 }

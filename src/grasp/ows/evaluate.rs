@@ -441,12 +441,7 @@ fn ellipsoid(wrenches: &[[f64; 6]], space: &ObjectWrenchSpace) -> Result<OwsQual
         )));
     }
     // The work of both hulls: the verdict's and the value's.
-    let stats = crate::strategy::Stats {
-        points_processed: own.stats.points_processed + q1.stats.points_processed,
-        facets_created: own.stats.facets_created + q1.stats.facets_created,
-        expansions: own.stats.expansions + q1.stats.expansions,
-        elapsed: own.stats.elapsed + q1.stats.elapsed,
-    };
+    let stats = own.stats + q1.stats;
     Ok(OwsQuality {
         force_closure: true,
         value: Some(q1.value),
