@@ -335,8 +335,8 @@ impl Evaluator {
                     delta: self.cones.delta.iter().fold(0.0, |m: f64, &d| m.max(d)),
                 };
                 match self.method {
-                    Method::Partial => raw.partial(started, &mut self.buffers),
-                    Method::Full => raw.full(started, &mut self.buffers),
+                    Method::Partial => raw.partial(started, &mut self.buffers)?,
+                    Method::Full => raw.full(started, &mut self.buffers)?,
                     Method::Qhull => qhull_q1(&self.cones.raw, started)?,
                     Method::PartialRays | Method::Ellipsoid => {
                         unsupported(self.method, self.metric)?
@@ -433,8 +433,8 @@ pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Quality, 
     }
     let started = Instant::now();
     let mut quality = match method {
-        Method::Partial => partial_q1(wrenches, None, started, &mut HullBuffers::default()),
-        Method::Full => full_q1(wrenches, None, started, &mut HullBuffers::default()),
+        Method::Partial => partial_q1(wrenches, None, started, &mut HullBuffers::default())?,
+        Method::Full => full_q1(wrenches, None, started, &mut HullBuffers::default())?,
         Method::Qhull => qhull_q1(wrenches, started)?,
         Method::PartialRays | Method::Ellipsoid => unsupported(method, Metric::Q1)?,
     }
@@ -452,7 +452,7 @@ pub(in crate::grasp) fn q1_certified(
     pyramids: &[u32],
     delta: f64,
     buffers: &mut HullBuffers,
-) -> Quality {
+) -> Result<Quality, QualityError> {
     let started = Instant::now();
     let set = Explicit {
         raw,
@@ -460,9 +460,9 @@ pub(in crate::grasp) fn q1_certified(
         pyramids: Some(pyramids),
         delta,
     };
-    let mut quality = set.partial(started, buffers).banded(largest_norm(raw));
+    let mut quality = set.partial(started, buffers)?.banded(largest_norm(raw));
     quality.stats.elapsed = started.elapsed();
-    quality
+    Ok(quality)
 }
 
 /// Evaluates every grasp, results in input order: on all cores (rayon's current pool) with the
@@ -590,13 +590,21 @@ impl Explicit<'_> {
     /// grasps that are not force closure); then the partial hull of the snapped wrenches, its
     /// answer certified on the raw ones; failing that (the origin within `δ` of the snapped
     /// boundary, or a bracket too wide), the exact partial hull of the raw wrenches.
-    fn partial(&self, started: Instant, buffers: &mut HullBuffers) -> Quality {
+    fn partial(
+        &self,
+        started: Instant,
+        buffers: &mut HullBuffers,
+    ) -> Result<Quality, QualityError> {
         if let Some((distance, inserted)) = certified_outside(self.raw, &mut buffers.gjk) {
             let stats = no_hull_stats(1 + inserted, started);
-            return Quality::new(-distance, buffers.gjk.face().iter().copied(), stats);
+            return Ok(Quality::new(
+                -distance,
+                buffers.gjk.face().iter().copied(),
+                stats,
+            ));
         }
         if let Some(quality) = flat_q1(self.raw, started, &mut buffers.flatness) {
-            return quality;
+            return Ok(quality);
         }
         let HullBuffers {
             hull,
@@ -608,10 +616,10 @@ impl Explicit<'_> {
             if result.signed_distance > 0.0
                 && let Some(quality) = self.certify(h, bracket)
             {
-                return quality;
+                return Ok(quality);
             }
             if let Some(quality) = self.boundary(h, result.closest_facet) {
-                return quality;
+                return Ok(quality);
             }
         }
         partial_q1(self.raw, None, started, buffers)
@@ -651,9 +659,9 @@ impl Explicit<'_> {
 
     /// Q1 from the full hull of the snapped wrenches, certified on the raw ones when it holds
     /// the origin; otherwise GJK on the raw wrenches, then the full hull of the raw wrenches.
-    fn full(&self, started: Instant, buffers: &mut HullBuffers) -> Quality {
+    fn full(&self, started: Instant, buffers: &mut HullBuffers) -> Result<Quality, QualityError> {
         if let Some(quality) = flat_q1(self.raw, started, &mut buffers.flatness) {
-            return quality;
+            return Ok(quality);
         }
         let strategy = crate::FarthestPoint::new();
         // The full hull's work, reported whichever step gives the value (a GJK answer too: the
@@ -667,12 +675,16 @@ impl Explicit<'_> {
                 .all(|(id, _)| h.side_of(id, &[0.0; 6]) == crate::predicates::Sign::Negative)
                 && let Some(quality) = self.certify(h, &mut buffers.bracket)
             {
-                return quality;
+                return Ok(quality);
             }
         }
         if let Some((distance, inserted)) = certified_outside(self.raw, &mut buffers.gjk) {
             let stats = full_stats.unwrap_or_else(|| no_hull_stats(1 + inserted, started));
-            return Quality::new(-distance, buffers.gjk.face().iter().copied(), stats);
+            return Ok(Quality::new(
+                -distance,
+                buffers.gjk.face().iter().copied(),
+                stats,
+            ));
         }
         full_q1(self.raw, None, started, buffers)
     }
@@ -700,16 +712,20 @@ fn partial_q1(
     pyramids: Option<&[u32]>,
     started: Instant,
     buffers: &mut HullBuffers,
-) -> Quality {
+) -> Result<Quality, QualityError> {
     // Most grasps that are not force closure are separated from the origin by GJK, certified,
     // without a hull; the rest (force closure, or the origin within rounding of the boundary) go
     // on to the exact partial hull.
     if let Some((distance, inserted)) = certified_outside(w, &mut buffers.gjk) {
         let stats = no_hull_stats(1 + inserted, started);
-        return Quality::new(-distance, buffers.gjk.face().iter().copied(), stats);
+        return Ok(Quality::new(
+            -distance,
+            buffers.gjk.face().iter().copied(),
+            stats,
+        ));
     }
     if let Some(quality) = flat_q1(w, started, &mut buffers.flatness) {
-        return quality;
+        return Ok(quality);
     }
     nearest_q1(w, pyramids, started, buffers, false)
 }
@@ -720,7 +736,7 @@ fn full_q1(
     pyramids: Option<&[u32]>,
     started: Instant,
     buffers: &mut HullBuffers,
-) -> Quality {
+) -> Result<Quality, QualityError> {
     nearest_q1(w, pyramids, started, buffers, true)
 }
 
@@ -734,7 +750,7 @@ fn nearest_q1(
     started: Instant,
     buffers: &mut HullBuffers,
     full: bool,
-) -> Quality {
+) -> Result<Quality, QualityError> {
     let HullBuffers { hull, nearest, .. } = buffers;
     let built = if full {
         HullBuffers::build(hull, w, pyramids, Complete::new(nearest))
@@ -742,15 +758,15 @@ fn nearest_q1(
         HullBuffers::build(hull, w, pyramids, nearest)
     };
     match built {
-        Ok((_, result)) => Quality::new(
+        Ok((_, result)) => Ok(Quality::new(
             result.signed_distance,
             result.closest_facet_vertices.iter().map(|&v| w[v]),
             result.stats,
-        ),
+        )),
         Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
-            degenerate(w, started)
+            Ok(degenerate(w, started))
         }
-        Err(e) => unreachable!("snapped wrenches are finite and few: {e}"),
+        Err(e) => Err(QualityError::Hull(e)),
     }
 }
 

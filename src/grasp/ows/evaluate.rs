@@ -251,7 +251,7 @@ fn ows_inner(
     // the caller's numbers.
     let q1 = match set.snapped {
         Some((snapped, pyramids, delta)) => {
-            q1_certified(raw, snapped, pyramids, delta, &mut buffers.q1)
+            q1_certified(raw, snapped, pyramids, delta, &mut buffers.q1)?
         }
         None => q1_of_wrenches(raw, Method::Partial)?,
     };

@@ -1,6 +1,7 @@
 //! Why a grasp could not be evaluated.
 
 use super::{MAX_WRENCH_COORDINATE, MINKOWSKI_MATERIALISE_LIMIT, Method, Metric};
+use crate::hull::HullError;
 use std::fmt;
 
 /// Why a grasp could not be evaluated.
@@ -56,6 +57,10 @@ pub enum QualityError {
     /// Q_OWS by the ellipsoid method: no enclosing ellipsoid (the disturbances span fewer than six
     /// dimensions).
     Ellipsoid(String),
+    /// The hull engine refused the wrench set for a reason other than its being flat (which the
+    /// metrics answer without a hull): not expected of a grasp's checked wrenches, reported
+    /// rather than assumed away.
+    Hull(HullError),
 }
 
 impl fmt::Display for QualityError {
@@ -126,8 +131,16 @@ impl fmt::Display for QualityError {
                 grasp.0, grasp.1, space.0, space.1
             ),
             QualityError::Ellipsoid(message) => write!(f, "no enclosing ellipsoid: {message}"),
+            QualityError::Hull(e) => write!(f, "the hull engine refused the wrenches: {e}"),
         }
     }
 }
 
-impl std::error::Error for QualityError {}
+impl std::error::Error for QualityError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            QualityError::Hull(e) => Some(e),
+            _ => None,
+        }
+    }
+}

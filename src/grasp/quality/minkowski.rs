@@ -640,7 +640,7 @@ pub(super) fn full(
         return Ok(Quality::new(-distance, face, stats).banded(scale));
     }
     materialise(cones, with_zero_wrench, true, out)?;
-    Ok(full_q1(out, None, started, buffers).banded(scale))
+    Ok(full_q1(out, None, started, buffers)?.banded(scale))
 }
 
 /// Whether the contacts' raw wrench sets (zero wrench or not) lie within a slab through the
