@@ -617,10 +617,22 @@ pub(in crate::geometry) fn solve(a: &[[f64; 8]; 8], b: &[f64; 8], k: usize) -> O
     Some(x)
 }
 
-/// Exhaustive fallback for [`min_norm_point`], used when its result fails the optimality check on
-/// ill-conditioned input (clusters of nearly coincident points): try every face of a simplex (at
-/// most 255 for D = 8) and keep the nearest projection that falls inside its face.
-/// Nearest point of the simplex spanned by `vertices[..count]` to `query`, and its distance.
+/// Nearest point of the simplex spanned by `vertices` (at most D + 1 points) to `query`, and
+/// its distance: computed exactly ([`min_norm_point_exact`]) and rounded once, whatever the
+/// conditioning (clusters of nearly coincident vertices, coordinates of very different
+/// magnitudes). It used to project onto every face in floating point, dropping faces whose pivots
+/// looked negligible: wrong by far more than rounding on such input.
+///
+/// ```
+/// use pqhull::geometry::nearest_in_simplex;
+/// let triangle = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+/// let (x, d) = nearest_in_simplex(&triangle, &[2.0, 2.0, 0.0]);
+/// assert_eq!(x, [0.5, 0.5, 0.0]);
+/// assert!((d - 4.5f64.sqrt()).abs() <= 4.0 * f64::EPSILON);
+/// ```
+///
+/// # Panics
+/// If `vertices` is empty or a coordinate is not finite.
 pub fn nearest_in_simplex<const D: usize>(
     vertices: &[[f64; D]],
     query: &[f64; D],
@@ -629,130 +641,18 @@ pub fn nearest_in_simplex<const D: usize>(
     (x, d)
 }
 
-/// [`nearest_in_simplex`], with the face holding the nearest point (a bit mask of `vertices`).
-/// In a power-of-two unit when the coordinates leave [2^−`SQUARE_SAFE`, 2^`SQUARE_SAFE`], as
-/// [`min_norm_point`] does; by [`min_norm_point_exact`] for a query [`FAR`] from the simplex.
+/// [`nearest_in_simplex`], with the face holding the nearest point (a bit mask of `vertices`:
+/// the points whose convex combination it is).
+///
+/// # Panics
+/// As [`nearest_in_simplex`].
 pub fn nearest_face_in_simplex<const D: usize>(
     vertices: &[[f64; D]],
     query: &[f64; D],
 ) -> ([f64; D], f64, u32) {
-    if is_far(vertices.len(), &|i| vertices[i], query) {
-        // The projections onto the faces would be decided in rounding: exact Wolfe instead.
-        let nearest = min_norm_point_exact(vertices.len(), |i| vertices[i], query, &[]);
-        let face = nearest.support().iter().fold(0u32, |m, &i| m | 1 << i);
-        return (nearest.point, nearest.distance, face);
-    }
-    let magnitude = |p: &[f64; D]| p.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-    let largest = vertices
-        .iter()
-        .fold(magnitude(query), |m, v| m.max(magnitude(v)));
-    let safe = 2f64.powi(SQUARE_SAFE);
-    if largest <= safe && (largest >= 1.0 / safe || largest == 0.0) || !largest.is_finite() {
-        return nearest_face_in_range(vertices, query);
-    }
-    let e = power_of_two_below(largest).log2() as i32 + 1;
-    let (down, up) = (
-        (2f64.powi(-e / 2), 2f64.powi(-e - (-e / 2))),
-        (2f64.powi(e / 2), 2f64.powi(e - e / 2)),
-    );
-    let scaled = |p: &[f64; D]| p.map(|x| x * down.0 * down.1);
-    let mut simplex = [[0.0; D]; 9];
-    for (s, v) in simplex.iter_mut().zip(vertices) {
-        *s = scaled(v);
-    }
-    let (x, d, face) = nearest_face_in_range(&simplex[..vertices.len()], &scaled(query));
-    (x.map(|c| c * up.0 * up.1), d * up.0 * up.1, face)
-}
-
-/// [`nearest_face_in_simplex`] on coordinates whose squares neither overflow nor underflow.
-fn nearest_face_in_range<const D: usize>(
-    vertices: &[[f64; D]],
-    query: &[f64; D],
-) -> ([f64; D], f64, u32) {
-    let count = vertices.len();
-    debug_assert!((1..=D.max(1) + 1).contains(&count));
-    let full = (1u32 << count) - 1;
-    // The projection onto the whole simplex's affine hull, when it lands inside, is the answer.
-    if let Some((x, d)) = project_onto_face(vertices, full, query) {
-        return (x, d, full);
-    }
-    let mut best: Option<([f64; D], f64, u32)> = None;
-    for mask in 1..full {
-        if let Some((x, d)) = project_onto_face(vertices, mask, query)
-            && best.is_none_or(|(_, b, _)| d < b)
-        {
-            best = Some((x, d, mask));
-        }
-    }
-    best.expect("single vertices always project onto themselves")
-}
-
-/// Orthogonal projection of `query` onto the affine hull of the vertices in `mask`, if it lies in
-/// their simplex (barycentric coordinates ≥ −1e−12) and the face is not degenerate.
-fn project_onto_face<const D: usize>(
-    vertices: &[[f64; D]],
-    mask: u32,
-    query: &[f64; D],
-) -> Option<([f64; D], f64)> {
-    let mut members = [0usize; 9];
-    let mut m = 0;
-    for (i, _) in vertices.iter().enumerate() {
-        if mask & (1 << i) != 0 {
-            members[m] = i;
-            m += 1;
-        }
-    }
-    let base = vertices[members[0]];
-    let k = m - 1;
-    // Edge vectors and the normal equations G μ = Wᵀ(q − base), solved by Gaussian elimination.
-    let mut edges = [[0.0; D]; 8];
-    for (e, &idx) in edges.iter_mut().zip(&members[1..m]) {
-        *e = std::array::from_fn(|c| vertices[idx][c] - base[c]);
-    }
-    let rhs_vec: [f64; D] = std::array::from_fn(|c| query[c] - base[c]);
-    let mut a = [[0.0; 9]; 8];
-    for r in 0..k {
-        for c in 0..k {
-            a[r][c] = dot(edges[r], edges[c]);
-        }
-        a[r][k] = dot(edges[r], rhs_vec);
-    }
-    let scale = (0..k).map(|r| a[r][r]).fold(0.0f64, f64::max);
-    for col in 0..k {
-        let pivot = (col..k).max_by(|&x, &y| a[x][col].abs().total_cmp(&a[y][col].abs()))?;
-        if a[pivot][col].abs() <= 1e-13 * scale {
-            return None; // degenerate face: its lower faces are tried separately
-        }
-        a.swap(col, pivot);
-        let pivot_row = a[col];
-        for row in a.iter_mut().take(k).skip(col + 1) {
-            let factor = row[col] / pivot_row[col];
-            for (x, y) in row[col..=k].iter_mut().zip(&pivot_row[col..=k]) {
-                *x -= factor * y;
-            }
-        }
-    }
-    let mut mu = [0.0; 8];
-    for r in (0..k).rev() {
-        let tail: f64 = (r + 1..k).map(|c| a[r][c] * mu[c]).sum();
-        mu[r] = (a[r][k] - tail) / a[r][r];
-    }
-    let first = 1.0 - mu[..k].iter().sum::<f64>();
-    if first < -1e-12 || mu[..k].iter().any(|&w| w < -1e-12) {
-        return None;
-    }
-    let mut x = base;
-    for (e, &w) in edges[..k].iter().zip(&mu[..k]) {
-        for (xc, ec) in x.iter_mut().zip(e) {
-            *xc += w * ec;
-        }
-    }
-    let d = dot(
-        std::array::from_fn::<f64, D, _>(|c| query[c] - x[c]),
-        std::array::from_fn::<f64, D, _>(|c| query[c] - x[c]),
-    )
-    .sqrt();
-    Some((x, d))
+    let nearest = min_norm_point_exact(vertices.len(), |i| vertices[i], query, &[]);
+    let face = nearest.support().iter().fold(0u32, |m, &i| m | 1 << i);
+    (nearest.point, nearest.distance, face)
 }
 
 #[cfg(test)]
