@@ -235,7 +235,7 @@ fn ows_inner(
     }
     if let Some((snapped, pyramids, delta)) = set.snapped {
         // The search on the snapped wrenches, its answer certified on the raw ones.
-        let found = search(snapped, Some(pyramids), space, method, buffers);
+        let found = search(snapped, Some(pyramids), space, method, buffers)?;
         if let Some(quality) = found
             && let Some(hull) = buffers.hull.as_ref()
             && let Some(value) = certify_ows(hull, raw, delta, scale, space, &mut buffers.bracket)
@@ -258,7 +258,7 @@ fn ows_inner(
     if !q1.force_closure {
         return Ok(not_force_closure(q1.stats));
     }
-    match search(raw, None, space, method, buffers) {
+    match search(raw, None, space, method, buffers)? {
         Some(quality) => Ok(quality),
         // The exact engine says the origin is not strictly inside, which Q1 contradicts only
         // within rounding of the band: no value to give.
@@ -274,7 +274,7 @@ fn search(
     space: &ObjectWrenchSpace,
     method: Method,
     buffers: &mut OwsBuffers,
-) -> Option<OwsQuality> {
+) -> Result<Option<OwsQuality>, QualityError> {
     let result = match method {
         Method::Partial => {
             let parked = std::mem::take(&mut buffers.inflation);
@@ -293,7 +293,7 @@ fn search(
         // Refused by `ows_inner` before any hull is built.
         Method::Ellipsoid | Method::Qhull => unreachable!("no exact OWS hull by {method:?}"),
     };
-    result.filter(|q| q.force_closure)
+    Ok(result?.filter(|q| q.force_closure))
 }
 
 /// Q_OWS of the raw wrenches from `hull`, the snapped wrenches' hull holding the origin strictly
@@ -325,17 +325,17 @@ fn partial<S: crate::Strategy<6, Output = crate::strategy::OwsResult<6>>>(
     pyramids: Option<&[u32]>,
     strategy: S,
     hull: &mut Option<Hull<6>>,
-) -> Option<OwsQuality> {
+) -> Result<Option<OwsQuality>, QualityError> {
     match HullBuffers::build(hull, wrenches, pyramids, strategy) {
-        Ok((_, result)) => Some(OwsQuality {
+        Ok((_, result)) => Ok(Some(OwsQuality {
             force_closure: result.is_force_closure(),
             value: result.value,
             deciding_disturbance: result.deciding_disturbance,
             stats: result.stats,
-        }),
+        })),
         // Wrenches spanning fewer than six dimensions cannot hold the origin in their interior.
-        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => None,
-        Err(e) => unreachable!("finite wrenches of a grasp: {e}"),
+        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => Ok(None),
+        Err(e) => Err(QualityError::Hull(e)),
     }
 }
 
@@ -344,11 +344,13 @@ fn brute_force(
     pyramids: Option<&[u32]>,
     space: &ObjectWrenchSpace,
     hull: &mut Option<Hull<6>>,
-) -> Option<OwsQuality> {
+) -> Result<Option<OwsQuality>, QualityError> {
     let hull = match HullBuffers::build(hull, wrenches, pyramids, crate::FarthestPoint::new()) {
         Ok((hull, ())) => hull,
-        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => return None,
-        Err(e) => unreachable!("finite wrenches of a grasp: {e}"),
+        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
+            return Ok(None);
+        }
+        Err(e) => return Err(QualityError::Hull(e)),
     };
     let stats = hull.stats();
     let origin = [0.0; 6];
@@ -356,7 +358,7 @@ fn brute_force(
         .facets()
         .any(|(id, _)| hull.side_of(id, &origin) != Sign::Negative)
     {
-        return Some(not_force_closure(stats));
+        return Ok(Some(not_force_closure(stats)));
     }
     // eq. 8–9: each disturbance's ray leaves through the facet with the smallest factor, so the
     // answer is the smallest factor of any disturbance against any facet. The floating-point
@@ -401,12 +403,12 @@ fn brute_force(
             best = Some((r, i));
         }
     }
-    Some(OwsQuality {
+    Ok(Some(OwsQuality {
         force_closure: true,
         value: Some(best.map_or(f64::INFINITY, |(r, _)| r)),
         deciding_disturbance: best.map(|(_, i)| i),
         stats,
-    })
+    }))
 }
 
 /// Borst et al.'s approximation: Q1 of the wrenches mapped so that the disturbances' ellipsoid

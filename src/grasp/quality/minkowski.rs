@@ -553,7 +553,7 @@ pub(super) fn partial(
             let q = flat_sum(cones, with_zero_wrench, support, scale, seeds, gjk, started)?;
             Ok(q.banded(scale))
         }
-        Err(e) => unreachable!("raw wrenches are checked finite: {e}"),
+        Err(e) => Err(QualityError::Hull(e)),
         Ok(Err(e)) => unreachable!(
             "the Minkowski source returns only points strictly beyond (exact test) and within \
              its seeds' range: {e}"
