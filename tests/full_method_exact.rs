@@ -84,7 +84,7 @@ enum Work {
 }
 
 /// Checks `metric` by `method` on `grasp` against `distance`, the exact distance from the origin
-/// to the hull of `points` (`scale`: the metric's); the failure, if any.
+/// to the hull of the metric's wrench set (`scale`: the metric's); the failure, if any.
 fn judge(
     grasp: &Grasp,
     (metric, method, work): (Metric, Method, Work),

@@ -257,19 +257,30 @@ mod tests {
 
     #[test]
     fn products_and_sums_carry_about_a_hundred_bits() {
-        // (1 + 2^-60)·(1 − 2^-60) = 1 − 2^-120: hi 1, lo −2^-120 up to ~2^-101 relative.
+        // (1 + 2^-60)·3: the low part carries what one f64 would round away.
         let x = Dd {
             hi: 1.0,
             lo: 2f64.powi(-60),
         };
+        let z = mul(x, Dd { hi: 3.0, lo: 0.0 });
+        assert_eq!((z.hi, z.lo), (3.0, 3.0 * 2f64.powi(-60)));
+        // (1 + 2^-70) + (−1 + 2^-71) = 3·2^-71: the high parts cancel, the low parts remain.
+        let a = Dd {
+            hi: 1.0,
+            lo: 2f64.powi(-70),
+        };
+        let b = Dd {
+            hi: -1.0,
+            lo: 2f64.powi(-71),
+        };
+        let w = add(a, b);
+        assert_eq!((w.hi, w.lo), (3.0 * 2f64.powi(-71), 0.0));
+        // (1 + 2^-60)·(1 − 2^-60) = 1 − 2^-120, within 2^-101 relative.
         let y = Dd {
             hi: 1.0,
             lo: -(2f64.powi(-60)),
         };
         let z = mul(x, y);
-        assert_eq!(z.hi, 1.0);
-        assert!((z.lo + 2f64.powi(-120)).abs() <= U2);
-        let w = add(x, y);
-        assert_eq!((w.hi, w.lo), (2.0, 0.0));
+        assert!(((z.hi - 1.0) + z.lo + 2f64.powi(-120)).abs() <= U2);
     }
 }
