@@ -26,17 +26,13 @@
 //! ```
 #![forbid(unsafe_code)]
 
-pub mod bench;
 pub mod geometry;
 pub mod grasp;
 pub mod hull;
 pub mod mesh;
 pub mod plan;
-pub mod points_file;
 pub mod predicates;
 pub mod rbox;
-#[cfg(feature = "mesh")]
-pub mod reproduce;
 pub mod strategy;
 pub mod viz;
 

@@ -32,12 +32,6 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-mod object;
-
-pub use object::DEFAULT_OBJECT_NAME;
-#[cfg(feature = "mesh")]
-pub use object::default_object;
-
 use crate::geometry::Rng;
 use crate::grasp::json::write_contact;
 use crate::grasp::metrics::{MetricError, Scorer};
@@ -52,9 +46,10 @@ use std::time::{Duration, Instant};
 /// The most samples a plan accepts: 1,000,000.
 ///
 /// Why this bound: a plan keeps only its best grasp, so its memory does not grow with the samples,
-/// but its time does (about a millisecond per sample for Q1 at 4 contacts × 8 edges by the partial
-/// method, far more for full hulls): a million samples is hours of work. A larger count is almost
-/// certainly a typing error, and is refused before any work starts.
+/// but its time does: every sample is one quality evaluation (a partial hull at best, a full hull
+/// or a Minkowski sum of k^m points at worst; per-grasp times in docs/benchmarks.md), and a million
+/// of them is already far more than a plan needs. A larger count is almost certainly a typing
+/// error, and is refused before any work starts.
 pub const MAX_SAMPLES: usize = 1_000_000;
 
 /// What to plan.

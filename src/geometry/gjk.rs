@@ -3,8 +3,9 @@
 //!
 //! A grasp that is not force closure needs only the distance from the origin to the hull, and a
 //! partial hull finds it slowly: the hull must grow over the set's boundary until the nearest
-//! point is certain (up to 10⁵ inserted points for a Q∞ Minkowski sum, and a median of 1.2 ms for
-//! Q1 at 4 × 32 edges). GJK answers it from support points alone, and its verdict "outside" comes
+//! point is certain (up to 10⁵ inserted points for a Q∞ Minkowski sum, each paying exact
+//! orientation tests and new facets; measured in docs/benchmarks.md, "Issue 3 closed"). GJK
+//! answers it from support points alone, and its verdict "outside" comes
 //! with a certificate; only grasps it cannot separate (force closure, or within rounding of the
 //! boundary) go on to the exact partial hull.
 

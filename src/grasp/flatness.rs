@@ -4,8 +4,9 @@
 //! Contacts whose wrenches span fewer than six dimensions — two contacts, contacts on one line,
 //! contacts at one or two points — can never be force closure. Their wrenches, computed in
 //! floating point, are rank-deficient only up to rounding, and an exact hull of them is a sliver
-//! of thousands of facets: `pqh grasp --metric q1` took 65 ms on four collinear contacts with 8
-//! edges (0.5 s with 16), and Q∞ with the zero wrench did not finish in a minute.
+//! of thousands of facets, more as the cone edges grow (and Q∞ hulls a Minkowski sum of k^m such
+//! points): far more work than the slab test below, one 6 × 6 eigenproblem and two passes over
+//! the wrenches (measured: docs/ARCHITECTURE.md, CHANGELOG.md).
 //!
 //! A slab certifies such a set up front. If every wrench `w` has `|u·w| ≤ τ` for a unit `u`, the
 //! hull lies in the slab, so no ball of radius above `τ` around the origin fits in it: Q1 lies in

@@ -13,8 +13,8 @@ use crate::geometry::vector::{add, scale};
 /// a model grows with k: a grasp's Q1 wrench set has m·k points, its Q∞ Minkowski sum k^m, and the
 /// object wrench space of a mesh 3·(k + 1) disturbances per triangle (about 148 KB per triangle at
 /// the limit). Without a bound, one grasp asking for 10¹² edges would try to allocate terabytes and
-/// abort the process. At the limit, Q1 of a 4-contact grasp by the partial method takes well under
-/// a second (docs/limits.md).
+/// abort the process. At the limit a 4-contact grasp has 4,096 Q1 wrenches; docs/limits.md
+/// measures Q1 by the partial method there.
 pub const MAX_CONE_EDGES: usize = 1024;
 
 /// The fewest friction-cone edges a [`FrictionModel`] accepts: 3 (fewer span no cone).

@@ -81,7 +81,8 @@ use crate::geometry::vector::is_finite;
 /// Why this bound: grasps have a few contacts (a hand's fingertips and phalanges, a few dozen for
 /// whole-arm grasps or contact patches sampled as points); 256 leaves room for all of them. With
 /// [`MAX_CONE_EDGES`] it bounds a grasp's Q1 wrench set to 256 · 1024 = 262,144 points (12.6 MB);
-/// Q1 of such a grasp by the partial method takes seconds (measured in docs/limits.md). Q∞'s
+/// the partial method still evaluates Q1 of such a grasp (time and memory at both limits in
+/// docs/limits.md). Q∞'s
 /// Minkowski sum has k^m points and is never materialised by the partial method, but its time
 /// grows quickly with m: this bound does not make Q∞ of hundreds of contacts fast.
 pub const MAX_CONTACTS: usize = 256;

@@ -24,8 +24,9 @@
 //! Before any hull, the partial method runs GJK on the wrenches' support function: when it finds
 //! a separating plane with a margin above rounding, and the plane's distance within 1e−13
 //! relative of a point of the hull, the grasp is certified not force closure and that distance is
-//! the answer (about 12 µs per grasp at 4 contacts × 32 edges: `examples/profile_q1.rs`, against
-//! a partial hull's 1.2 ms median in earlier runs, docs/benchmarks.md). Force-closure grasps,
+//! the answer, found from support points alone (each a scan of the wrenches) instead of a hull's
+//! inserted points, exact orientation tests and new facets (measured in docs/benchmarks.md,
+//! "Issue 3 closed", against the partial hull of the runs before it). Force-closure grasps,
 //! and origins within rounding of the boundary, go on to the exact partial hull.
 //!
 //! ```
@@ -627,7 +628,8 @@ impl Explicit<'_> {
 
     /// Q1 of a *boundary* grasp — the origin within `δ` of the snapped hull's facet `id`, where
     /// the bracket has no lower bound — without the exact engine on the raw wrenches (which
-    /// builds slivers there: 150–270 ms per grasp at 4 × 32 edges on a bar). The raw simplex of
+    /// builds slivers there, facets the floating-point filter cannot decide: far slower than the
+    /// two bounds below, docs/benchmarks.md, "Issue 11"). The raw simplex of
     /// that facet bounds Q1 from above ([`certify::upper_bound_at`]); Wolfe's algorithm bounds it
     /// from below, by −(the distance from the origin to the hull). When both are within
     /// `BOUNDARY` of the scale, Q1 is their midpoint, within the `1e−14·scale` the metric

@@ -10,6 +10,16 @@ use crate::geometry::vector::{dot, norm, sub};
 use crate::predicates::{ExactGrid, FacetPlane, Sign, affinely_independent_subset, orientation};
 use std::time::Instant;
 
+/// The smallest dimension the engine builds hulls in ([`HullError::DimensionOutOfRange`] below).
+pub const MIN_DIMENSION: usize = 2;
+
+/// The largest dimension the engine builds hulls in (the initial simplex's fixed-size arrays
+/// are sized for it).
+pub const MAX_DIMENSION: usize = 8;
+
+/// Slots of the initial simplex: its D + 1 vertices at the largest dimension.
+const MAX_SIMPLEX: usize = MAX_DIMENSION + 1;
+
 impl<const D: usize> Hull<D> {
     /// Validates the input, scales it, builds the initial simplex and the first outside sets.
     pub(in crate::hull) fn try_initial(
@@ -71,7 +81,7 @@ impl<const D: usize> Hull<D> {
         self.stats = Stats::default();
         self.trace = None;
         self.points.clear();
-        if !(2..=8).contains(&D) {
+        if !(MIN_DIMENSION..=MAX_DIMENSION).contains(&D) {
             return Err(HullError::DimensionOutOfRange { dimension: D });
         }
         if let Some((index, coordinate)) = first_non_finite(input) {
@@ -131,7 +141,7 @@ impl<const D: usize> Hull<D> {
         }
         self.stats.points_processed = D + 1;
 
-        let all: [FacetId; 9] = std::array::from_fn(|k| FacetId((first + k) as u32));
+        let all: [FacetId; MAX_SIMPLEX] = std::array::from_fn(|k| FacetId((first + k) as u32));
         let all = &all[..=D];
         for p in 0..self.points.len() as u32 {
             if !simplex.contains(&(p as usize)) && self.scratch.first_copy[p as usize] == p {
@@ -543,9 +553,11 @@ fn exact_power_of_two_scale<const D: usize>(points: &[[f64; D]]) -> f64 {
 /// chosen. Floating point only picks candidates; the result is verified with the exact predicate,
 /// and exact rank computation takes over when the greedy choice is flat.
 ///
-/// The first D + 1 entries are the simplex (D ≤ 8). Fixed arrays, not vectors: a rebuilt hull
-/// (one per grasp in a batch) allocates nothing here.
-fn initial_simplex<const D: usize>(points: &[[f64; D]]) -> Result<[usize; 9], HullError> {
+/// The first D + 1 entries are the simplex ([`MAX_SIMPLEX`] slots). Fixed arrays, not vectors:
+/// a rebuilt hull (one per grasp in a batch) allocates nothing here.
+fn initial_simplex<const D: usize>(
+    points: &[[f64; D]],
+) -> Result<[usize; MAX_SIMPLEX], HullError> {
     if let Some(simplex) = greedy_simplex(points) {
         let mut vertices = [[0.0; D]; D];
         for (v, &s) in vertices.iter_mut().zip(&simplex) {
@@ -562,13 +574,14 @@ fn initial_simplex<const D: usize>(points: &[[f64; D]]) -> Result<[usize; 9], Hu
             dimension: D,
         });
     }
-    let mut simplex = [0; 9];
+    let mut simplex = [0; MAX_SIMPLEX];
     simplex[..=D].copy_from_slice(&independent[..=D]);
     Ok(simplex)
 }
 
-fn greedy_simplex<const D: usize>(points: &[[f64; D]]) -> Option<[usize; 9]> {
-    let mut extremes = [0usize; 16];
+fn greedy_simplex<const D: usize>(points: &[[f64; D]]) -> Option<[usize; MAX_SIMPLEX]> {
+    // The lowest and the highest point along each axis.
+    let mut extremes = [0usize; 2 * MAX_DIMENSION];
     for axis in 0..D {
         let by_axis = |a: &&[f64; D], b: &&[f64; D]| a[axis].total_cmp(&b[axis]);
         let (lo, _) = points
@@ -595,7 +608,7 @@ fn greedy_simplex<const D: usize>(points: &[[f64; D]]) -> Option<[usize; 9]> {
     if best.0 == 0.0 {
         return None;
     }
-    let mut chosen = [0usize; 9];
+    let mut chosen = [0usize; MAX_SIMPLEX];
     chosen[0] = best.1;
     chosen[1] = best.2;
     // Orthonormal basis of the directions spanned so far (modified Gram–Schmidt).
@@ -620,16 +633,16 @@ fn greedy_simplex<const D: usize>(points: &[[f64; D]]) -> Option<[usize; 9]> {
     Some(chosen)
 }
 
-/// An orthonormal basis of at most 8 directions, in place.
+/// An orthonormal basis of at most [`MAX_DIMENSION`] directions, in place.
 struct Basis<const D: usize> {
-    directions: [[f64; D]; 8],
+    directions: [[f64; D]; MAX_DIMENSION],
     len: usize,
 }
 
 impl<const D: usize> Default for Basis<D> {
     fn default() -> Self {
         Basis {
-            directions: [[0.0; D]; 8],
+            directions: [[0.0; D]; MAX_DIMENSION],
             len: 0,
         }
     }

@@ -29,6 +29,7 @@ mod strategy;
 mod trace;
 mod volume;
 
+pub use build::{MAX_DIMENSION, MIN_DIMENSION};
 pub use error::{HullError, InvariantViolation};
 pub use facet::{Facet, FacetId};
 pub use farthest_point::FarthestPoint;

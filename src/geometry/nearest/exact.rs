@@ -10,7 +10,7 @@
 //! minimisers (Cramer's rule on the Gram matrix, Bareiss determinants), the optimality test and
 //! the walk of the minor cycles are exact, and the nearest point is the exact one, rounded once
 //! per coordinate. Its integers have at most about 2,100 bits (the span of `f64` exponents), its
-//! determinants a few times that; a run costs microseconds to a few milliseconds.
+//! determinants a few times that: each operation on them costs far more than one in `f64`.
 
 use super::{Nearest, dot, power_of_two_below};
 use num_bigint::BigInt;

@@ -514,7 +514,7 @@ pub(super) fn partial(
         // the snapped surface. The sum's value lies in [0, the upper bound along the raw simplex
         // of the nearest facet]; when that is within `BOUNDARY` of the scale, its midpoint is
         // the value to the accuracy promised near zero (the raw sum's exact hull would be
-        // slivers: seconds per grasp).
+        // slivers, facets the floating-point filter cannot decide: docs/benchmarks.md, "Issue 11").
         if with_zero_wrench {
             let raw_point = |v: usize| source.raw_point(&h.point(v));
             let (delta, error) = raw_bounds(cones, &source.raw_sets);

@@ -1,0 +1,133 @@
+//! Criterion benchmarks, always side by side in one run (read the ratio, not the absolute time).
+//!
+//! * `full/<input>`: pqhull's full hull (`Hull::try_new`, strategy `FarthestPoint`) against
+//!   Qhull (`qhull_facet_count`: Qhull's defaults plus `Qt`) — the Qhull half only with the cargo
+//!   feature `qhull`.
+//! * `partial/<input>`: `ClosestToOrigin` (partial hull, distance from the origin) against
+//!   `FarthestPoint` (full hull) on the same input, plus Qhull users' way of getting the same
+//!   number (full Qhull hull, min over facets of −offset) with the feature `qhull`.
+//!
+//! * `full/grid-6d-m4`, `full/corners-6d-2000`, `full/wrenches-4x16`: the hot paths of
+//!   `pqh bench hull` — the integer grid {0..3}^6, `CubeCornersDiamond` in 6-D, and the raw
+//!   wrenches of a force-closure 4-contact, 16-edge bar grasp — pqhull vs Qhull as above.
+//!
+//! Inputs are fixed-seed `pqhull::rbox` families (and `pqhull_cli::bench::hull`'s grid and grasp).
+//! Run with
+//! `cargo bench --features qhull --bench hull` (or without the feature for pqhull only).
+
+use criterion::{Criterion, criterion_group, criterion_main};
+use pqhull_cli::bench::hull::grid;
+use pqhull_cli::bench::workloads::{BAR_FRICTION, bar_grasps};
+use pqhull::grasp::FrictionModel;
+use pqhull::grasp::quality::q1;
+use pqhull::rbox::{Family, generate};
+use pqhull::{ClosestToOrigin, FarthestPoint, Hull};
+use std::hint::black_box;
+use std::time::Duration;
+
+/// Seed of every benchmark input.
+const SEED: u64 = 20240601;
+
+/// Small samples and short measurements: the whole run takes a few minutes on 2 cores.
+fn configure() -> Criterion {
+    Criterion::default()
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(7))
+}
+
+/// One group per input: pqhull's full hull vs Qhull.
+fn full<const D: usize>(c: &mut Criterion, family: Family, n: usize) {
+    let points = generate::<D>(&family, n, SEED);
+    full_of(c, &format!("full/{family}-{D}d-{n}"), &points, None);
+}
+
+/// The group `name`: pqhull's full hull of `points` vs Qhull's, measured for `measurement`
+/// (the configured time when `None`).
+fn full_of<const D: usize>(
+    c: &mut Criterion,
+    name: &str,
+    points: &[[f64; D]],
+    measurement: Option<Duration>,
+) {
+    let mut group = c.benchmark_group(name);
+    if let Some(time) = measurement {
+        group.measurement_time(time);
+    }
+    group.bench_function("pqhull FarthestPoint", |b| {
+        b.iter(|| {
+            let hull = Hull::try_new(black_box(points)).expect("full-dimensional input");
+            black_box(hull.facet_count())
+        })
+    });
+    #[cfg(feature = "qhull")]
+    group.bench_function("qhull", |b| {
+        b.iter(|| {
+            pqhull::qhull_baseline::qhull_facet_count(black_box(points))
+                .expect("full-dimensional input")
+        })
+    });
+    group.finish();
+}
+
+/// One group per input: ClosestToOrigin (partial) vs FarthestPoint (full), same input.
+fn partial<const D: usize>(c: &mut Criterion, family: Family, n: usize) {
+    let points = generate::<D>(&family, n, SEED);
+    let mut group = c.benchmark_group(format!("partial/{family}-{D}d-{n}"));
+    group.bench_function("ClosestToOrigin", |b| {
+        b.iter(|| {
+            let (_, result) = Hull::try_with_strategy(black_box(&points), ClosestToOrigin::new())
+                .expect("general-position input");
+            black_box(result.signed_distance)
+        })
+    });
+    group.bench_function("FarthestPoint", |b| {
+        b.iter(|| {
+            let (hull, ()) = Hull::try_with_strategy(black_box(&points), FarthestPoint::new())
+                .expect("general-position input");
+            black_box(hull.facet_count())
+        })
+    });
+    #[cfg(feature = "qhull")]
+    group.bench_function("qhull min facet distance", |b| {
+        b.iter(|| {
+            pqhull::qhull_baseline::qhull_origin_distance(black_box(&points))
+                .expect("general-position input")
+        })
+    });
+    group.finish();
+}
+
+fn full_hull(c: &mut Criterion) {
+    full::<3>(c, Family::UniformCube, 100_000);
+    full::<5>(c, Family::UniformCube, 5_000);
+    full::<6>(c, Family::UniformCube, 2_000);
+    full::<4>(c, Family::SphereSurface, 5_000);
+}
+
+/// The hull suite's hot paths (`pqh bench hull`): a grid, cube corners, a raw wrench set, with
+/// shorter measurements (3 s each) to keep the file cheap.
+fn suite_hull(c: &mut Criterion) {
+    let short = Some(Duration::from_secs(3));
+    full_of(c, "full/grid-6d-m4", &grid::<6>(4), short);
+    let corners = generate::<6>(&Family::CubeCornersDiamond, 2_000, SEED);
+    full_of(c, "full/corners-6d-2000", &corners, short);
+    let friction = FrictionModel::try_new(BAR_FRICTION, 16).expect("16 cone edges");
+    let grasp = bar_grasps(SEED, 100, 4, friction)
+        .into_iter()
+        .find(|g| q1(g).is_ok_and(|q| q.force_closure))
+        .expect("a force-closure grasp among 100");
+    full_of(c, "full/wrenches-4x16", &grasp.wrenches(), short);
+}
+
+fn partial_hull(c: &mut Criterion) {
+    partial::<6>(c, Family::SphereSurface, 1_000);
+    partial::<6>(c, Family::UniformCube, 2_000);
+}
+
+criterion_group! {
+    name = benches;
+    config = configure();
+    targets = full_hull, suite_hull, partial_hull
+}
+criterion_main!(benches);

@@ -1,0 +1,81 @@
+//! A profiling target: Q1 by the partial method on `pqh bench gws`'s random grasps, force-closure
+//! or not, evaluated over and over with one reused evaluator, so that `perf record` sees only the
+//! kind of grasp asked for.
+//!
+//! ```sh
+//! cargo build --release --example profile_q1
+//! perf record -e cpu-clock -g ./target/release/examples/profile_q1 force-closure 32 200 30
+//! perf report --no-children
+//! ```
+//!
+//! Arguments: `force-closure` or `other`, cone edges (32), grasps (200), rounds (30). Prints the
+//! mean time per grasp and the work counters.
+
+use pqhull_cli::bench::workloads::bar_grasps;
+use pqhull::grasp::quality::{Evaluator, Method, Metric};
+use pqhull::grasp::{FrictionModel, Grasp};
+use std::time::Instant;
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let usage = "usage: profile_q1 force-closure|other [edges] [grasps] [rounds]";
+    let want_closure = match args.first().map(String::as_str) {
+        Some("force-closure") => true,
+        Some("other") => false,
+        _ => {
+            eprintln!("{usage}");
+            std::process::exit(2);
+        }
+    };
+    let number = |i: usize, default: usize| -> usize {
+        args.get(i).map_or(default, |s| {
+            s.parse().unwrap_or_else(|_| {
+                eprintln!("{usage}: not a number: {s}");
+                std::process::exit(2);
+            })
+        })
+    };
+    let (edges, count, rounds) = (number(1, 32), number(2, 200), number(3, 30));
+    let friction = FrictionModel::try_new(0.5, edges).unwrap_or_else(|e| {
+        eprintln!("{usage}: {e}");
+        std::process::exit(2);
+    });
+    // The grasps of `pqh bench gws` (seed 1, the 1 x 0.4 x 0.2 bar).
+    let grasps: Vec<Grasp> = bar_grasps(1, count, 4, friction);
+    let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial);
+    let chosen: Vec<&Grasp> = grasps
+        .iter()
+        .filter(|g| {
+            evaluator
+                .evaluate(g)
+                .is_ok_and(|q| q.force_closure == want_closure)
+        })
+        .collect();
+    if chosen.is_empty() {
+        eprintln!("no grasp of that kind among {count}");
+        std::process::exit(1);
+    }
+    let (mut facets, mut points) = (0usize, 0usize);
+    let started = Instant::now();
+    for _ in 0..rounds {
+        for g in &chosen {
+            let q = evaluator.evaluate(g).expect("evaluated above");
+            facets += q.stats.facets_created;
+            points += q.stats.points_processed;
+        }
+    }
+    let runs = (rounds * chosen.len()).max(1) as f64;
+    println!(
+        "{} grasps of {count} ({}), {rounds} rounds: {:.1} µs per grasp, {:.0} facets created, \
+         {:.1} points processed",
+        chosen.len(),
+        if want_closure {
+            "force closure"
+        } else {
+            "not force closure"
+        },
+        started.elapsed().as_secs_f64() * 1e6 / runs,
+        facets as f64 / runs,
+        points as f64 / runs
+    );
+}

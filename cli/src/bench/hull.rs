@@ -1,0 +1,1041 @@
+//! The hull suite (what `pqh bench hull` runs): pqhull's full hull against Qhull on the same
+//! points, case by case, in one run — `rbox` families in 3 to 6 dimensions, integer grids, and
+//! grasp wrench sets (raw wrenches and materialised Minkowski sums).
+//!
+//! Every input is generated here, seeded; nothing is read from disk. Each case is timed as
+//! pqhull's call (best of [`HullBenchConfig::repeats`] runs, wall clock, one thread) and as
+//! `qhull_baseline::qhull_facet_count` on the same points (Qhull's
+//! defaults plus `Qt`: all of Qhull's work; cargo feature `qhull`), the two runs interleaved.
+//! Untimed, once: the vertex counts of both hulls
+//! ([`Hull::vertex_indices`], `qhull_baseline::qhull_stats`) and
+//! [`Hull::check`] on pqhull's.
+//!
+//! | workload | points | pqhull's timed call |
+//! | --- | --- | --- |
+//! | [`Workload::Rbox`] | [`rbox::generate`] of a family | [`Hull::try_new`] |
+//! | [`Workload::Grid`] | `{0, …, m − 1}^D` | [`Hull::try_new`] |
+//! | [`Workload::Wrenches`] | [`Grasp::wrenches`] of a force-closure bar grasp | [`Hull::try_new`]; [`gws_volume`] |
+//! | [`Workload::Minkowski`] | the raw Minkowski sum of a force-closure bar grasp's contacts, materialised | [`Hull::try_new`]; Q∞ by [`Method::Full`] |
+//!
+//! Q∞ is the plain variant (no zero wrench: `Metric::QInf { with_zero_wrench: false }`), the sum
+//! of the cone-edge sets alone, whose materialised sum (`k^m` points, not `(k + 1)^m`) is the set
+//! Qhull and the `hull` row get: `Σ_i w_i(j_i)` of the raw wrenches, summed in contact order.
+//! [`Method::Full`] materialises the *snapped* sum itself and hulls it with the exact engine,
+//! then certifies the value on the raw sum, or (origin outside) runs GJK on the raw sum
+//! (docs/ARCHITECTURE.md). The grasps are the first of [`bar_grasps`] whose Q1 (partial method,
+//! untimed) is force closure, and for a sum also whose sum spans 6-D with room to spare (three
+//! contacts on faces of one axis give a flat sum: Qhull refuses it, the full method settles it
+//! without a hull). Plain Q∞ of three contacts on the bar is never force closure — three unit
+//! normal forces on a box's faces balance only with a tangential force as large as a normal
+//! one, beyond μ = 0.5 — so its row is the full method on a grasp that is not force closure: the
+//! whole snapped sum is hulled, then GJK measures the distance. A report says when no candidate
+//! qualified ([`CaseRow::force_closure`]).
+//!
+//! Times are wall clock on whatever else the machine is doing: compare rows of one run.
+
+use super::Progress;
+use super::stats::ratio;
+use super::workloads::{BAR_FRICTION, bar_grasps};
+use pqhull::grasp::metrics::gws_volume;
+use pqhull::grasp::quality::{Evaluator, Method, Metric};
+use pqhull::grasp::{FrictionModel, Grasp};
+use pqhull::hull::Hull;
+use pqhull::rbox::{self, Family};
+use serde_json::{Value, json};
+use std::fmt;
+use std::time::Instant;
+
+/// The most timed runs per case ([`HullBenchConfig::repeats`]).
+pub const MAX_REPEATS: usize = 1000;
+
+/// The dimensions the suite has cases in.
+pub const DIMENSIONS: [usize; 4] = [3, 4, 5, 6];
+
+/// Candidate grasps searched for a force-closure one ([`Workload::Wrenches`],
+/// [`Workload::Minkowski`]).
+pub const GRASP_CANDIDATES: usize = 500;
+
+/// The names [`HullBenchConfig::families`] accepts: the `rbox` families' ([`Family::name`]),
+/// then `grid`, `wrenches` and `minkowski`.
+pub const FAMILY_NAMES: [&str; 12] = [
+    "cube",
+    "sphere",
+    "corners",
+    "simplex",
+    "shell",
+    "lens",
+    "lattice",
+    "clusters",
+    "duplicates",
+    "grid",
+    "wrenches",
+    "minkowski",
+];
+
+/// The sizes of the cases.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Preset {
+    /// Sizes long enough to time reliably, yet short enough to run the whole suite in one sitting
+    /// (the times they give: docs/benchmarks.md, "Hull suite against Qhull").
+    #[default]
+    Standard,
+    /// Small sizes, for tests: a twentieth of the standard point counts (at least 60), smaller
+    /// grids.
+    Quick,
+}
+
+impl Preset {
+    /// `standard` or `quick`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Preset::Standard => "standard",
+            Preset::Quick => "quick",
+        }
+    }
+}
+
+/// What points a case hulls.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Workload {
+    /// [`rbox::generate`]`(family, n, seed)`: [`rbox::point_count`] points.
+    Rbox {
+        /// The family, with its default parameters.
+        family: Family,
+        /// Its `n`.
+        n: usize,
+    },
+    /// Every point of `{0, …, side − 1}^D`, in odometer order (last coordinate fastest).
+    Grid {
+        /// `m`, the number of values per coordinate.
+        side: usize,
+    },
+    /// The raw wrenches ([`Grasp::wrenches`]) of a force-closure random grasp on the GWS
+    /// benchmark's bar ([`bar_grasps`], μ = [`BAR_FRICTION`]): `contacts · edges` points in 6-D.
+    Wrenches {
+        /// Contacts of the grasp.
+        contacts: usize,
+        /// Cone edges per contact.
+        edges: usize,
+    },
+    /// The materialised Minkowski sum ([`minkowski_sum`]: plain, no zero wrench) of the contact
+    /// wrench sets of a random bar grasp whose Q1 is force closure and whose sum spans 6-D with
+    /// room to spare: `edges^contacts` points.
+    Minkowski {
+        /// Contacts of the grasp.
+        contacts: usize,
+        /// Cone edges per contact.
+        edges: usize,
+    },
+}
+
+/// The call timed for pqhull.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Timed {
+    /// [`Hull::try_new`] on the points.
+    Hull,
+    /// [`gws_volume`] of the grasp (the full hull of its raw wrenches, then its volume).
+    Volume,
+    /// Q∞ (plain) by [`Method::Full`]: an [`Evaluator`] made and run on the grasp.
+    QInfFull,
+}
+
+impl Timed {
+    /// `hull`, `volume` or `qinf-full`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Timed::Hull => "hull",
+            Timed::Volume => "volume",
+            Timed::QInfFull => "qinf-full",
+        }
+    }
+}
+
+/// One input of the suite, in one dimension; its rows are [`Case::timed`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Case {
+    /// The points.
+    pub workload: Workload,
+    /// Their dimension (6 for the grasp workloads).
+    pub dimension: usize,
+}
+
+impl Case {
+    /// The family name the filter matches ([`FAMILY_NAMES`]).
+    pub fn family(&self) -> &'static str {
+        match self.workload {
+            Workload::Rbox { family, .. } => family.name(),
+            Workload::Grid { .. } => "grid",
+            Workload::Wrenches { .. } => "wrenches",
+            Workload::Minkowski { .. } => "minkowski",
+        }
+    }
+
+    /// The case's name in the table: the family, with the grid's side or the grasp's size
+    /// (`grid-m20`, `wrenches-4x16`, `minkowski-3x8`).
+    pub fn name(&self) -> String {
+        match self.workload {
+            Workload::Rbox { family, .. } => family.name().to_string(),
+            Workload::Grid { side } => format!("grid-m{side}"),
+            Workload::Wrenches { contacts, edges } => format!("wrenches-{contacts}x{edges}"),
+            Workload::Minkowski { contacts, edges } => format!("minkowski-{contacts}x{edges}"),
+        }
+    }
+
+    /// The calls timed on its points, one row each.
+    pub fn timed(&self) -> &'static [Timed] {
+        match self.workload {
+            Workload::Rbox { .. } | Workload::Grid { .. } => &[Timed::Hull],
+            Workload::Wrenches { .. } => &[Timed::Hull, Timed::Volume],
+            Workload::Minkowski { .. } => &[Timed::QInfFull, Timed::Hull],
+        }
+    }
+
+    /// Whether the points are random in general position (`cube`, `sphere`): the summary's
+    /// second minimum is over these.
+    pub fn is_random(&self) -> bool {
+        matches!(
+            self.workload,
+            Workload::Rbox {
+                family: Family::UniformCube | Family::SphereSurface,
+                ..
+            }
+        )
+    }
+}
+
+/// `rbox`'s `n` for `family` in dimension `d` (3 to 6) under `preset`: for the standard preset,
+/// sizes that keep each case long enough to time and the suite short, smaller as the hulls'
+/// facets multiply with the dimension (the lattice and the clusters grow fastest with it; the
+/// simplex's hull is four to seven points at any size; the times are in docs/benchmarks.md, "Hull
+/// suite against Qhull"), the quick preset a twentieth of them (at least 60).
+fn rbox_n(preset: Preset, family: &Family, d: usize) -> usize {
+    let by_dimension: [usize; 4] = match family {
+        Family::UniformCube => [100_000, 10_000, 5_000, 500],
+        Family::SphereSurface | Family::ThinShell { .. } | Family::NarrowLens { .. } => {
+            [20_000, 5_000, 1_000, 300]
+        }
+        Family::CubeCornersDiamond | Family::ManyDuplicates { .. } => {
+            [100_000, 10_000, 5_000, 2_000]
+        }
+        Family::Simplex => [100_000, 50_000, 50_000, 50_000],
+        Family::IntegerLattice { .. } => [100_000, 10_000, 5_000, 250],
+        Family::Clusters { .. } => [100_000, 10_000, 2_000, 200],
+    };
+    let standard = by_dimension[d.clamp(3, 6) - 3];
+    match preset {
+        Preset::Standard => standard,
+        Preset::Quick => (standard / 20).max(60),
+    }
+}
+
+/// The grid's side in dimension `d`.
+fn grid_side(preset: Preset, d: usize) -> usize {
+    match (preset, d) {
+        (Preset::Standard, 3) => 20,
+        (Preset::Standard, 4) => 8,
+        (Preset::Standard, 5) => 5,
+        (Preset::Standard, _) => 4,
+        (Preset::Quick, 3) => 6,
+        (Preset::Quick, 4) => 4,
+        (Preset::Quick, _) => 3,
+    }
+}
+
+/// Every case of `preset`, in the order they run: the `rbox` families dimension by dimension,
+/// the grids, then the grasp workloads.
+///
+/// ```
+/// use pqhull_cli::bench::hull::{Preset, cases};
+/// let all = cases(Preset::Quick);
+/// assert_eq!(all[0].name(), "cube");
+/// assert!(all.iter().any(|c| c.name() == "wrenches-4x8"));
+/// ```
+pub fn cases(preset: Preset) -> Vec<Case> {
+    let mut out = Vec::new();
+    for d in DIMENSIONS {
+        for family in Family::ALL {
+            out.push(Case {
+                workload: Workload::Rbox {
+                    family,
+                    n: rbox_n(preset, &family, d),
+                },
+                dimension: d,
+            });
+        }
+    }
+    for d in DIMENSIONS {
+        out.push(Case {
+            workload: Workload::Grid {
+                side: grid_side(preset, d),
+            },
+            dimension: d,
+        });
+    }
+    let (wrench_edges, sum_edges): (&[usize], &[usize]) = match preset {
+        Preset::Standard => (&[8, 16, 32], &[6, 8]),
+        Preset::Quick => (&[8], &[4]),
+    };
+    for &edges in wrench_edges {
+        out.push(Case {
+            workload: Workload::Wrenches { contacts: 4, edges },
+            dimension: 6,
+        });
+    }
+    for &edges in sum_edges {
+        out.push(Case {
+            workload: Workload::Minkowski { contacts: 3, edges },
+            dimension: 6,
+        });
+    }
+    out
+}
+
+/// What to measure.
+#[derive(Clone, Debug, PartialEq)]
+pub struct HullBenchConfig {
+    /// The sizes.
+    pub preset: Preset,
+    /// Only the cases of these families ([`FAMILY_NAMES`]); empty: all.
+    pub families: Vec<String>,
+    /// Only the cases in these dimensions ([`DIMENSIONS`]); empty: all.
+    pub dimensions: Vec<usize>,
+    /// Timed runs of each call, the best reported (1 to [`MAX_REPEATS`]).
+    pub repeats: usize,
+    /// Seed of every generated input.
+    pub seed: u64,
+}
+
+impl Default for HullBenchConfig {
+    /// `pqh bench hull`'s defaults: every case of the standard preset, best of 3, seed 1.
+    fn default() -> Self {
+        HullBenchConfig {
+            preset: Preset::Standard,
+            families: Vec::new(),
+            dimensions: Vec::new(),
+            repeats: 3,
+            seed: 1,
+        }
+    }
+}
+
+impl HullBenchConfig {
+    /// The cases this configuration runs, in order.
+    ///
+    /// # Errors
+    /// As [`run`], before any measurement.
+    pub fn cases(&self) -> Result<Vec<Case>, HullBenchError> {
+        if !(1..=MAX_REPEATS).contains(&self.repeats) {
+            return Err(HullBenchError::Repeats(self.repeats));
+        }
+        if let Some(name) = self
+            .families
+            .iter()
+            .find(|f| !FAMILY_NAMES.contains(&f.as_str()))
+        {
+            return Err(HullBenchError::UnknownFamily(name.clone()));
+        }
+        if let Some(&d) = self.dimensions.iter().find(|d| !DIMENSIONS.contains(d)) {
+            return Err(HullBenchError::Dimension(d));
+        }
+        let selected: Vec<Case> = cases(self.preset)
+            .into_iter()
+            .filter(|c| self.families.is_empty() || self.families.iter().any(|f| f == c.family()))
+            .filter(|c| self.dimensions.is_empty() || self.dimensions.contains(&c.dimension))
+            .collect();
+        if selected.is_empty() {
+            return Err(HullBenchError::NoCases);
+        }
+        Ok(selected)
+    }
+}
+
+/// Why the suite could not run.
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum HullBenchError {
+    /// `repeats` outside 1 to [`MAX_REPEATS`].
+    Repeats(usize),
+    /// A family name not in [`FAMILY_NAMES`].
+    UnknownFamily(String),
+    /// A dimension not in [`DIMENSIONS`].
+    Dimension(usize),
+    /// The filters leave no case.
+    NoCases,
+}
+
+impl fmt::Display for HullBenchError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            HullBenchError::Repeats(n) => {
+                write!(f, "repeats must be 1 to {MAX_REPEATS}, got {n}")
+            }
+            HullBenchError::UnknownFamily(name) => write!(
+                f,
+                "unknown family '{name}' (known: {})",
+                FAMILY_NAMES.join(", ")
+            ),
+            HullBenchError::Dimension(d) => write!(
+                f,
+                "the hull suite has no case in dimension {d} (it has {:?})",
+                DIMENSIONS
+            ),
+            HullBenchError::NoCases => {
+                write!(f, "no case matches the family and dimension filters")
+            }
+        }
+    }
+}
+
+impl std::error::Error for HullBenchError {}
+
+/// Qhull's figures of one row.
+#[derive(Clone, Debug, PartialEq)]
+pub struct QhullColumns {
+    /// Best wall time of `qhull_baseline::qhull_facet_count`, ms.
+    pub ms: f64,
+    /// Vertices of Qhull's hull (`qhull_baseline::qhull_stats`, untimed).
+    pub vertices: usize,
+    /// Facets of Qhull's triangulated hull.
+    pub facets: usize,
+}
+
+/// pqhull's figures of one row.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PqhullColumns {
+    /// Best wall time of the timed call ([`Timed`]), ms.
+    pub ms: f64,
+    /// Vertices of [`Hull::try_new`]'s hull of the row's points (untimed; for the metric rows,
+    /// the hull of the same points as the `hull` row).
+    pub vertices: usize,
+    /// Its facets.
+    pub facets: usize,
+    /// [`Hull::check`] of that hull, run once, untimed: `Ok`, or the violation's message.
+    pub check: Result<(), String>,
+    /// Wall time of that check, ms.
+    pub check_ms: f64,
+    /// The metric of a metric row (the volume, or Q∞); `None` for a `hull` row.
+    pub value: Option<f64>,
+}
+
+/// One timed call on one case's points.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CaseRow {
+    /// The case.
+    pub case: Case,
+    /// The call timed for pqhull.
+    pub timed: Timed,
+    /// Number of points.
+    pub points: usize,
+    /// For the grasp workloads, whether the chosen grasp's Q1 is force closure (false: none of
+    /// [`GRASP_CANDIDATES`] is, the first was taken); `None` otherwise. A Q∞ row's own verdict
+    /// is the sign of its [`PqhullColumns::value`].
+    pub force_closure: Option<bool>,
+    /// pqhull's figures, or its error.
+    pub pqhull: Result<PqhullColumns, String>,
+    /// Qhull's figures, or its error; `None` without the `qhull` feature.
+    pub qhull: Option<Result<QhullColumns, String>>,
+}
+
+impl CaseRow {
+    /// The row's label: the case's name, with `/volume` or `/qinf-full` for a metric row
+    /// (`/hull` too when the case has several rows).
+    pub fn label(&self) -> String {
+        if self.case.timed().len() > 1 {
+            format!("{}/{}", self.case.name(), self.timed.name())
+        } else {
+            self.case.name()
+        }
+    }
+
+    /// Qhull's time over pqhull's, when both ran.
+    pub fn ratio(&self) -> Option<f64> {
+        match (&self.pqhull, &self.qhull) {
+            (Ok(p), Some(Ok(q))) => Some(ratio(q.ms, p.ms)),
+            _ => None,
+        }
+    }
+
+    /// Whether pqhull's hull passed [`Hull::check`].
+    pub fn check_passed(&self) -> bool {
+        self.pqhull.as_ref().is_ok_and(|p| p.check.is_ok())
+    }
+
+    /// The row as `pqh bench hull --json` gives it.
+    pub fn to_json(&self) -> Value {
+        let finite = |x: f64| x.is_finite().then_some(x);
+        let mut row = json!({
+            "case": self.label(),
+            "family": self.case.family(),
+            "timed": self.timed.name(),
+            "dimension": self.case.dimension,
+            "points": self.points,
+            "random": self.case.is_random(),
+            "force_closure": self.force_closure,
+            "ratio": self.ratio().and_then(finite),
+        });
+        match &self.pqhull {
+            Ok(p) => {
+                row["pqhull_ms"] = json!(finite(p.ms));
+                row["pqhull_vertices"] = json!(p.vertices);
+                row["pqhull_facets"] = json!(p.facets);
+                row["check"] = json!(p.check.is_ok());
+                row["check_error"] = json!(p.check.as_ref().err());
+                row["check_ms"] = json!(finite(p.check_ms));
+                row["value"] = json!(p.value.and_then(finite));
+            }
+            Err(e) => {
+                row["pqhull_ms"] = Value::Null;
+                row["pqhull_error"] = json!(e);
+                row["check"] = json!(false);
+            }
+        }
+        match &self.qhull {
+            Some(Ok(q)) => {
+                row["qhull_ms"] = json!(finite(q.ms));
+                row["qhull_vertices"] = json!(q.vertices);
+                row["qhull_facets"] = json!(q.facets);
+            }
+            Some(Err(e)) => {
+                row["qhull_ms"] = Value::Null;
+                row["qhull_error"] = json!(e);
+            }
+            None => {}
+        }
+        row
+    }
+}
+
+/// The whole suite.
+#[derive(Clone, Debug, PartialEq)]
+pub struct HullBenchReport {
+    /// The sizes.
+    pub preset: Preset,
+    /// Timed runs per call.
+    pub repeats: usize,
+    /// The inputs' seed.
+    pub seed: u64,
+    /// Whether Qhull was measured (the crate's `qhull` feature).
+    pub qhull_available: bool,
+    /// One row per (case, timed call), in order.
+    pub rows: Vec<CaseRow>,
+}
+
+impl HullBenchReport {
+    /// The smallest Qhull/pqhull ratio over the rows `keep` selects, with its row.
+    fn min_ratio_where(&self, keep: impl Fn(&CaseRow) -> bool) -> Option<(f64, &CaseRow)> {
+        self.rows
+            .iter()
+            .filter(|r| keep(r))
+            .filter_map(|r| r.ratio().map(|x| (x, r)))
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+    }
+
+    /// The smallest Qhull/pqhull ratio over all rows, with its row (`None` without Qhull).
+    pub fn min_ratio(&self) -> Option<(f64, &CaseRow)> {
+        self.min_ratio_where(|_| true)
+    }
+
+    /// The smallest ratio over the random cases (`cube`, `sphere`: [`Case::is_random`]).
+    pub fn min_random_ratio(&self) -> Option<(f64, &CaseRow)> {
+        self.min_ratio_where(|r| r.case.is_random())
+    }
+
+    /// Rows where pqhull failed or its hull failed [`Hull::check`].
+    pub fn failures(&self) -> usize {
+        self.rows.iter().filter(|r| !r.check_passed()).count()
+    }
+
+    /// The report as `pqh bench hull --json` gives it.
+    pub fn to_json(&self) -> Value {
+        let summary = |m: Option<(f64, &CaseRow)>| match m {
+            Some((x, row)) if x.is_finite() => json!({ "ratio": x, "case": row.label(),
+                "dimension": row.case.dimension }),
+            _ => Value::Null,
+        };
+        json!({
+            "benchmark": "hull",
+            "preset": self.preset.name(),
+            "repeats": self.repeats,
+            "seed": self.seed,
+            "qhull": self.qhull_available,
+            "failures": self.failures(),
+            "min_ratio": summary(self.min_ratio()),
+            "min_random_ratio": summary(self.min_random_ratio()),
+            "rows": self.rows.iter().map(CaseRow::to_json).collect::<Vec<_>>(),
+        })
+    }
+}
+
+/// Runs the suite. `progress` hears of each case (label `cases`).
+///
+/// ```
+/// use pqhull_cli::bench::hull::{HullBenchConfig, Preset, run};
+/// let config = HullBenchConfig {
+///     preset: Preset::Quick,
+///     families: vec!["cube".into(), "grid".into()],
+///     dimensions: vec![3],
+///     repeats: 1,
+///     ..HullBenchConfig::default()
+/// };
+/// let report = run(&config, &mut |_, _, _| {})?;
+/// assert_eq!(report.rows.len(), 2);
+/// assert!(report.rows.iter().all(|r| r.check_passed()));
+/// assert_eq!(report.to_json()["benchmark"], "hull");
+/// # Ok::<(), pqhull_cli::bench::hull::HullBenchError>(())
+/// ```
+///
+/// # Errors
+/// [`HullBenchError`] for a configuration that selects nothing or is out of range, before any
+/// measurement. A call that fails on some case (pqhull's or Qhull's) is reported in its row.
+pub fn run(
+    config: &HullBenchConfig,
+    progress: Progress<'_>,
+) -> Result<HullBenchReport, HullBenchError> {
+    let selected = config.cases()?;
+    let mut rows = Vec::new();
+    progress("cases", 0, selected.len());
+    for (i, case) in selected.iter().enumerate() {
+        rows.extend(measure_case(case, config));
+        progress("cases", i + 1, selected.len());
+    }
+    Ok(HullBenchReport {
+        preset: config.preset,
+        repeats: config.repeats,
+        seed: config.seed,
+        qhull_available: cfg!(feature = "qhull"),
+        rows,
+    })
+}
+
+/// The rows of one case.
+fn measure_case(case: &Case, config: &HullBenchConfig) -> Vec<CaseRow> {
+    let (seed, repeats) = (config.seed, config.repeats);
+    match (case.workload, case.dimension) {
+        (Workload::Rbox { family, n }, 3) => {
+            points_row(case, &rbox::generate::<3>(&family, n, seed), repeats)
+        }
+        (Workload::Rbox { family, n }, 4) => {
+            points_row(case, &rbox::generate::<4>(&family, n, seed), repeats)
+        }
+        (Workload::Rbox { family, n }, 5) => {
+            points_row(case, &rbox::generate::<5>(&family, n, seed), repeats)
+        }
+        (Workload::Rbox { family, n }, _) => {
+            points_row(case, &rbox::generate::<6>(&family, n, seed), repeats)
+        }
+        (Workload::Grid { side }, 3) => points_row(case, &grid::<3>(side), repeats),
+        (Workload::Grid { side }, 4) => points_row(case, &grid::<4>(side), repeats),
+        (Workload::Grid { side }, 5) => points_row(case, &grid::<5>(side), repeats),
+        (Workload::Grid { side }, _) => points_row(case, &grid::<6>(side), repeats),
+        (Workload::Wrenches { contacts, edges }, _) => {
+            let (grasp, closure) = grasp_for(seed, contacts, edges, false);
+            grasp_rows(case, &grasp, closure, &grasp.wrenches(), repeats)
+        }
+        (Workload::Minkowski { contacts, edges }, _) => {
+            let (grasp, closure) = grasp_for(seed, contacts, edges, true);
+            grasp_rows(case, &grasp, closure, &minkowski_sum(&grasp), repeats)
+        }
+    }
+}
+
+/// Every point of `{0, …, side − 1}^D`, last coordinate fastest.
+///
+/// ```
+/// use pqhull_cli::bench::hull::grid;
+/// let g = grid::<2>(3);
+/// assert_eq!(g.len(), 9);
+/// assert_eq!((g[0], g[1], g[8]), ([0.0, 0.0], [0.0, 1.0], [2.0, 2.0]));
+/// ```
+pub fn grid<const D: usize>(side: usize) -> Vec<[f64; D]> {
+    let count = (0..D).try_fold(1usize, |n, _| n.checked_mul(side));
+    let count = count.expect("grid: side^D overflows usize");
+    (0..count)
+        .map(|mut i| {
+            let mut p = [0.0; D];
+            for x in p.iter_mut().rev() {
+                *x = (i % side) as f64;
+                i /= side;
+            }
+            p
+        })
+        .collect()
+}
+
+/// The materialised Minkowski sum of `grasp`'s contact wrench sets ([`Grasp::contact_wrenches`],
+/// no zero wrench): one point per choice of one wrench per contact, `w_0(j_0) + w_1(j_1) + …`
+/// summed in contact order, choices in odometer order (the last contact's fastest).
+///
+/// ```
+/// use pqhull_cli::bench::hull::minkowski_sum;
+/// use pqhull_cli::bench::workloads::{BAR_FRICTION, bar_grasps};
+/// use pqhull::grasp::FrictionModel;
+/// let friction = FrictionModel::try_new(BAR_FRICTION, 4)?;
+/// let grasp = &bar_grasps(1, 1, 3, friction)[0];
+/// let sum = minkowski_sum(grasp);
+/// assert_eq!(Some(sum.len()), grasp.minkowski_points(false)); // 4^3
+/// # Ok::<(), pqhull::grasp::GraspError>(())
+/// ```
+pub fn minkowski_sum(grasp: &Grasp) -> Vec<[f64; 6]> {
+    let sets: Vec<Vec<[f64; 6]>> = (0..grasp.contact_count())
+        .map(|i| {
+            let mut set = vec![[0.0; 6]; grasp.contact_wrench_count(i)];
+            grasp.contact_wrenches(i, &mut set);
+            set
+        })
+        .collect();
+    let mut out: Vec<[f64; 6]> = vec![[0.0; 6]];
+    for set in &sets {
+        out = out
+            .iter()
+            .flat_map(|partial| {
+                set.iter()
+                    .map(move |w| std::array::from_fn(|c| partial[c] + w[c]))
+            })
+            .collect();
+    }
+    out
+}
+
+/// The first of [`GRASP_CANDIDATES`] random bar grasps of `contacts` fingers and `edges` cone
+/// edges whose Q1 (partial method) is force closure — and, with `full_sum`, whose plain
+/// Minkowski sum spans 6-D ([`sum_spans_6d`]) — and `true`; the first grasp and `false` when
+/// none is.
+fn grasp_for(seed: u64, contacts: usize, edges: usize, full_sum: bool) -> (Grasp, bool) {
+    let friction = FrictionModel::try_new(BAR_FRICTION, edges).expect("the suite's cone edges");
+    let grasps = bar_grasps(seed, GRASP_CANDIDATES, contacts, friction);
+    let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial);
+    match grasps.iter().position(|g| {
+        (!full_sum || sum_spans_6d(g)) && evaluator.evaluate(g).is_ok_and(|q| q.force_closure)
+    }) {
+        Some(i) => (grasps[i].clone(), true),
+        None => (grasps[0].clone(), false),
+    }
+}
+
+/// Whether the plain Minkowski sum of `grasp`'s contact wrench sets spans 6-D with room to
+/// spare: the differences `w_i(j) − w_i(0)` (which span the sum's affine hull) have numerical
+/// rank 6 by Gaussian elimination with complete pivoting, every pivot above `1e−6` of the first.
+/// On the bar, three contacts on faces of one axis fail it exactly (every sum has the same force
+/// along that axis), and some others within rounding: sets Qhull refuses as flat and the exact
+/// engine hulls as slivers of rounding noise.
+fn sum_spans_6d(grasp: &Grasp) -> bool {
+    let mut rows: Vec<[f64; 6]> = Vec::new();
+    for i in 0..grasp.contact_count() {
+        let mut set = vec![[0.0; 6]; grasp.contact_wrench_count(i)];
+        grasp.contact_wrenches(i, &mut set);
+        rows.extend(
+            set[1..]
+                .iter()
+                .map(|w| std::array::from_fn(|c| w[c] - set[0][c])),
+        );
+    }
+    let mut cols: Vec<usize> = (0..6).collect();
+    let mut first = 0.0;
+    for step in 0..6 {
+        let mut best = (0.0, step, 0);
+        for (r, row) in rows.iter().enumerate().skip(step) {
+            for (ci, &c) in cols.iter().enumerate().skip(step) {
+                if row[c].abs() > best.0 {
+                    best = (row[c].abs(), r, ci);
+                }
+            }
+        }
+        let (pivot, r, ci) = best;
+        if step == 0 {
+            first = pivot;
+        }
+        if pivot <= 1e-6 * first || pivot == 0.0 {
+            return false;
+        }
+        rows.swap(step, r);
+        cols.swap(step, ci);
+        let (c, top) = (cols[step], rows[step]);
+        for row in rows.iter_mut().skip(step + 1) {
+            let factor = row[c] / top[c];
+            for &k in &cols[step..] {
+                row[k] -= factor * top[k];
+            }
+        }
+    }
+    true
+}
+
+/// Milliseconds since `started`.
+fn ms_since(started: Instant) -> f64 {
+    started.elapsed().as_secs_f64() * 1e3
+}
+
+/// The untimed figures of `Hull::try_new(points)`: vertices, facets, the check and its time.
+fn hull_figures<const D: usize>(points: &[[f64; D]]) -> Figures {
+    let hull = Hull::try_new(points).map_err(|e| e.to_string())?;
+    let started = Instant::now();
+    let check = hull.check().map_err(|e| e.to_string());
+    let check_ms = ms_since(started);
+    Ok((
+        hull.vertex_indices().len(),
+        hull.facet_count(),
+        check,
+        check_ms,
+    ))
+}
+
+/// pqhull's best time (ms) and the value of its last run, or its error.
+type PqhullTimes = Result<(f64, Option<f64>), String>;
+
+/// Qhull's figures of a row, or its error.
+type QhullResult = Result<QhullColumns, String>;
+
+/// Best-of-`repeats` times of `pqhull` and of Qhull on `points`, runs interleaved (pqhull
+/// first); the value of pqhull's last run; and Qhull's untimed counts.
+fn time_both<const D: usize>(
+    points: &[[f64; D]],
+    repeats: usize,
+    mut pqhull: impl FnMut() -> Result<Option<f64>, String>,
+) -> (PqhullTimes, Option<QhullResult>) {
+    let mut best = f64::INFINITY;
+    let mut value = None;
+    let mut failed = None;
+    let mut qhull_best = f64::INFINITY;
+    let mut qhull_failed: Option<String> = None;
+    for _ in 0..repeats {
+        let started = Instant::now();
+        let result = std::hint::black_box(pqhull());
+        let ms = ms_since(started);
+        match result {
+            Ok(v) => {
+                best = best.min(ms);
+                value = v;
+            }
+            Err(e) => failed = Some(e),
+        }
+        if cfg!(feature = "qhull") && qhull_failed.is_none() {
+            match qhull_time(points) {
+                Ok(ms) => qhull_best = qhull_best.min(ms),
+                Err(e) => qhull_failed = Some(e),
+            }
+        }
+    }
+    let pqhull = match failed {
+        Some(e) => Err(e),
+        None => Ok((best, value)),
+    };
+    let qhull = cfg!(feature = "qhull").then(|| match qhull_failed {
+        Some(e) => Err(e),
+        None => qhull_counts(points).map(|(vertices, facets)| QhullColumns {
+            ms: qhull_best,
+            vertices,
+            facets,
+        }),
+    });
+    (pqhull, qhull)
+}
+
+/// One run of Qhull on `points`, timed, ms.
+#[cfg(feature = "qhull")]
+fn qhull_time<const D: usize>(points: &[[f64; D]]) -> Result<f64, String> {
+    let started = Instant::now();
+    let facets = pqhull::qhull_baseline::qhull_facet_count(std::hint::black_box(points));
+    let ms = ms_since(started);
+    facets.map(|_| ms).map_err(|e| first_line(&e.to_string()))
+}
+
+/// Without the `qhull` feature: never called (the rows have no Qhull columns).
+#[cfg(not(feature = "qhull"))]
+fn qhull_time<const D: usize>(_points: &[[f64; D]]) -> Result<f64, String> {
+    Err("built without the qhull feature".to_string())
+}
+
+/// Qhull's vertex and facet counts (untimed).
+#[cfg(feature = "qhull")]
+fn qhull_counts<const D: usize>(points: &[[f64; D]]) -> Result<(usize, usize), String> {
+    pqhull::qhull_baseline::qhull_stats(points)
+        .map(|s| (s.vertices, s.facets))
+        .map_err(|e| first_line(&e.to_string()))
+}
+
+/// Without the `qhull` feature: never called.
+#[cfg(not(feature = "qhull"))]
+fn qhull_counts<const D: usize>(_points: &[[f64; D]]) -> Result<(usize, usize), String> {
+    Err("built without the qhull feature".to_string())
+}
+
+/// Qhull's messages run to pages: their first line names the error.
+#[cfg(feature = "qhull")]
+fn first_line(message: &str) -> String {
+    message
+        .lines()
+        .next()
+        .unwrap_or("")
+        .chars()
+        .take(200)
+        .collect()
+}
+
+/// The row of a point-set case: [`Hull::try_new`] against Qhull.
+fn points_row<const D: usize>(case: &Case, points: &[[f64; D]], repeats: usize) -> Vec<CaseRow> {
+    let (pqhull, qhull) = time_both(points, repeats, || {
+        Hull::try_new(points)
+            .map(|h| {
+                std::hint::black_box(h.facet_count());
+                None
+            })
+            .map_err(|e| e.to_string())
+    });
+    let figures = hull_figures(points);
+    vec![row(
+        case,
+        Timed::Hull,
+        points.len(),
+        None,
+        pqhull,
+        qhull,
+        &figures,
+    )]
+}
+
+/// The rows of a grasp case: each of [`Case::timed`] against Qhull on `points`.
+fn grasp_rows(
+    case: &Case,
+    grasp: &Grasp,
+    force_closure: bool,
+    points: &[[f64; 6]],
+    repeats: usize,
+) -> Vec<CaseRow> {
+    let figures = hull_figures(points);
+    case.timed()
+        .iter()
+        .map(|&timed| {
+            let (pqhull, qhull) = time_both(points, repeats, || match timed {
+                Timed::Hull => Hull::try_new(points)
+                    .map(|h| {
+                        std::hint::black_box(h.facet_count());
+                        None
+                    })
+                    .map_err(|e| e.to_string()),
+                Timed::Volume => gws_volume(grasp)
+                    .map(|(v, _)| Some(v))
+                    .map_err(|e| e.to_string()),
+                Timed::QInfFull => {
+                    let metric = Metric::QInf {
+                        with_zero_wrench: false,
+                    };
+                    Evaluator::new(metric, Method::Full)
+                        .evaluate(grasp)
+                        .map(|q| Some(q.value))
+                        .map_err(|e| e.to_string())
+                }
+            });
+            row(
+                case,
+                timed,
+                points.len(),
+                Some(force_closure),
+                pqhull,
+                qhull,
+                &figures,
+            )
+        })
+        .collect()
+}
+
+/// The untimed figures of a hull: vertices, facets, check, check time.
+type Figures = Result<(usize, usize, Result<(), String>, f64), String>;
+
+/// A row from its measurements.
+fn row(
+    case: &Case,
+    timed: Timed,
+    points: usize,
+    force_closure: Option<bool>,
+    pqhull: PqhullTimes,
+    qhull: Option<QhullResult>,
+    figures: &Figures,
+) -> CaseRow {
+    let pqhull = pqhull.and_then(|(ms, value)| {
+        let (vertices, facets, check, check_ms) = figures.clone()?;
+        Ok(PqhullColumns {
+            ms,
+            vertices,
+            facets,
+            check,
+            check_ms,
+            value,
+        })
+    });
+    CaseRow {
+        case: *case,
+        timed,
+        points,
+        force_closure,
+        pqhull,
+        qhull,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn filters_select_and_refuse() {
+        let config = HullBenchConfig {
+            preset: Preset::Quick,
+            families: vec!["grid".into(), "wrenches".into()],
+            dimensions: vec![6],
+            ..HullBenchConfig::default()
+        };
+        let names: Vec<String> = config.cases().unwrap().iter().map(Case::name).collect();
+        assert_eq!(names, ["grid-m3", "wrenches-4x8"]);
+        let bad = |c: HullBenchConfig| c.cases().unwrap_err();
+        assert_eq!(
+            bad(HullBenchConfig {
+                families: vec!["cubes".into()],
+                ..config.clone()
+            }),
+            HullBenchError::UnknownFamily("cubes".into())
+        );
+        assert_eq!(
+            bad(HullBenchConfig {
+                dimensions: vec![7],
+                ..config.clone()
+            }),
+            HullBenchError::Dimension(7)
+        );
+        assert_eq!(
+            bad(HullBenchConfig {
+                dimensions: vec![3],
+                families: vec!["minkowski".into()],
+                ..config.clone()
+            }),
+            HullBenchError::NoCases
+        );
+        assert_eq!(
+            bad(HullBenchConfig {
+                repeats: 0,
+                ..config
+            }),
+            HullBenchError::Repeats(0)
+        );
+    }
+
+    #[test]
+    fn every_family_name_has_cases() {
+        let all = cases(Preset::Quick);
+        for name in FAMILY_NAMES {
+            assert!(all.iter().any(|c| c.family() == name), "{name}");
+        }
+    }
+
+    #[test]
+    fn minkowski_sum_is_every_choice() {
+        let friction = FrictionModel::try_new(BAR_FRICTION, 3).unwrap();
+        let grasp = &bar_grasps(2, 1, 2, friction)[0];
+        let sum = minkowski_sum(grasp);
+        let w = grasp.wrenches();
+        assert_eq!(sum.len(), 9);
+        for (i, p) in sum.iter().enumerate() {
+            let (a, b) = (w[i / 3], w[3 + i % 3]);
+            assert_eq!(*p, std::array::from_fn(|c| a[c] + b[c]));
+        }
+    }
+}

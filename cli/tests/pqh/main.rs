@@ -1,0 +1,17 @@
+//! The tests of the `pqh` binary and of the application library (`pqhull_cli`): one binary, a
+//! module per command or theme. Helpers are in [`support`].
+
+mod support;
+
+mod browser;
+mod cli;
+mod cli_limits;
+mod cli_metrics;
+mod cli_ows;
+mod cli_plan;
+mod cli_raw_reference;
+mod cli_stream;
+mod fuzz_bounded;
+mod hull_queries;
+mod reproduce;
+mod trace_cmd;
