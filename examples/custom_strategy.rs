@@ -6,12 +6,14 @@
 //! the best hull vertex is at least every key. That is a proof, not a heuristic: every input
 //! point is a hull vertex, or inside the hull (so below its best vertex, `u·x` being linear), or
 //! in exactly one outside set (so at most that set's key). The answer is the same floating-point
-//! maximum a scan of every point computes (`tests/custom_strategy.rs` checks it against one),
+//! maximum a scan of every point computes (`tests/integration/custom_strategy.rs` checks it against one),
 //! after adding a handful of points to the hull instead of all of them.
 //!
 //! Run it: `cargo run --release --example custom_strategy`.
 
 use pqhull::geometry::vector::dot;
+// The hooks a strategy drives the engine with (expand, last_created, the trace, ...).
+use pqhull::hull::{StrategyHooks, TraceReason};
 use pqhull::strategy::Queued;
 use pqhull::{Hull, HullError, Stats, Step, Strategy};
 use std::collections::BinaryHeap;
@@ -23,6 +25,26 @@ pub struct SupportValue<const D: usize> {
     queue: BinaryHeap<Queued<usize>>,
     /// The best hull vertex so far: `(u·p, p)`.
     best: (f64, usize),
+}
+
+/// Why [`SupportValue`] expands a facet, as a trace records it: its outside set holds the
+/// highest point along `u` (of height `u·p`).
+struct Highest {
+    height: f64,
+}
+
+impl TraceReason for Highest {
+    fn code(&self) -> &'static str {
+        "highest"
+    }
+
+    fn describe(&self) -> String {
+        "highest outside point along u".to_string()
+    }
+
+    fn key(&self) -> Option<(&'static str, f64)> {
+        Some(("u·p", self.height))
+    }
 }
 
 /// What [`SupportValue`] found.
@@ -98,11 +120,7 @@ impl<const D: usize> Strategy<D> for SupportValue<D> {
                 self.queue.push(top);
                 return Step::Stop;
             }
-            hull.trace_choice(
-                top.id,
-                Some(("u·p", top.key)),
-                "highest outside point along u",
-            );
+            hull.trace_choice(top.id, Highest { height: top.key });
             if hull.expand_with(top.id, top.data) {
                 self.saw_vertex(hull, top.data);
                 let created = hull.last_created().to_vec();

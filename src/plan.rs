@@ -46,10 +46,10 @@ use std::time::{Duration, Instant};
 /// The most samples a plan accepts: 1,000,000.
 ///
 /// Why this bound: a plan keeps only its best grasp, so its memory does not grow with the samples,
-/// but its time does: every sample is one quality evaluation (a partial hull at best, a full hull
-/// or a Minkowski sum of k^m points at worst; per-grasp times in docs/benchmarks.md), and a million
-/// of them is already far more than a plan needs. A larger count is almost certainly a typing
-/// error, and is refused before any work starts.
+/// but its time does: every sample is one quality evaluation (at worst a full hull, or the hull
+/// of a Minkowski sum of k^m points; per-grasp times in docs/benchmarks.md), and a million of them
+/// is already far more than a plan needs. A larger count is almost certainly a typing error, and
+/// is refused before any work starts.
 pub const MAX_SAMPLES: usize = 1_000_000;
 
 /// What to plan.

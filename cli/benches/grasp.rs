@@ -23,9 +23,9 @@
 //! only); about 4 minutes on 2 quiet cores. One group: `... --bench grasp -- '^batch/'`.
 
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};
-use pqhull_cli::bench::workloads::{BAR_FRICTION, bar_grasps};
 use pqhull::grasp::quality::{Evaluator, Method, Metric, evaluate_batch};
 use pqhull::grasp::{FrictionModel, Grasp};
+use pqhull_cli::bench::workloads::{BAR_FRICTION, bar_grasps};
 use std::hint::black_box;
 use std::time::Duration;
 

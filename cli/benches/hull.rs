@@ -16,12 +16,12 @@
 //! `cargo bench --features qhull --bench hull` (or without the feature for pqhull only).
 
 use criterion::{Criterion, criterion_group, criterion_main};
-use pqhull_cli::bench::hull::grid;
-use pqhull_cli::bench::workloads::{BAR_FRICTION, bar_grasps};
 use pqhull::grasp::FrictionModel;
 use pqhull::grasp::quality::q1;
 use pqhull::rbox::{Family, generate};
 use pqhull::{ClosestToOrigin, FarthestPoint, Hull};
+use pqhull_cli::bench::hull::grid;
+use pqhull_cli::bench::workloads::{BAR_FRICTION, bar_grasps};
 use std::hint::black_box;
 use std::time::Duration;
 

@@ -5,11 +5,11 @@
 //! `Instant` around the library call; medians and means in µs, and the median's ratio to Q1's.
 //! The soft rows give every contact torsion γ = 0.01 (a tenth of the bar's half-thickness).
 
-use pqhull_cli::bench::stats::{mean, median};
-use pqhull_cli::bench::workloads::{BAR_FRICTION, bar_grasps};
 use pqhull::grasp::metrics::{cone_bracket, grasp_matrix_metrics, gws_volume, resist};
 use pqhull::grasp::quality::{Evaluator, Method, Metric, q1};
 use pqhull::grasp::{FrictionModel, Grasp};
+use pqhull_cli::bench::stats::{mean, median};
+use pqhull_cli::bench::workloads::{BAR_FRICTION, bar_grasps};
 use std::time::Instant;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {

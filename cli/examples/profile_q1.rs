@@ -11,9 +11,9 @@
 //! Arguments: `force-closure` or `other`, cone edges (32), grasps (200), rounds (30). Prints the
 //! mean time per grasp and the work counters.
 
-use pqhull_cli::bench::workloads::bar_grasps;
 use pqhull::grasp::quality::{Evaluator, Method, Metric};
 use pqhull::grasp::{FrictionModel, Grasp};
+use pqhull_cli::bench::workloads::bar_grasps;
 use std::time::Instant;
 
 fn main() {

@@ -209,8 +209,8 @@ impl<const D: usize> Hull<D> {
         vertices.map(|v| self.points[v as usize])
     }
 
-    /// Makes facet `id`'s normal and offset precise (exact cofactor direction) if they are not.
-    pub fn refine_normal(&mut self, id: FacetId) {
+    /// The engine's side of [`StrategyHooks::refine_normal`](crate::hull::StrategyHooks::refine_normal).
+    pub(crate) fn refine_normal(&mut self, id: FacetId) {
         let facet = &self.facets[id.index()];
         if facet.precise {
             return;
@@ -223,8 +223,8 @@ impl<const D: usize> Hull<D> {
         facet.precise = true;
     }
 
-    /// The unit normal of facet `id` from its exact cofactors.
-    pub fn exact_normal(&self, id: FacetId) -> [f64; D] {
+    /// The engine's side of [`StrategyHooks::exact_normal`](crate::hull::StrategyHooks::exact_normal).
+    pub(crate) fn exact_normal(&self, id: FacetId) -> [f64; D] {
         let (plane, vertices) = self.exact_plane_of(id);
         let exact = plane.exact_normal_direction(&self.coords(vertices));
         let length = norm(exact);
@@ -555,9 +555,7 @@ fn exact_power_of_two_scale<const D: usize>(points: &[[f64; D]]) -> f64 {
 ///
 /// The first D + 1 entries are the simplex ([`MAX_SIMPLEX`] slots). Fixed arrays, not vectors:
 /// a rebuilt hull (one per grasp in a batch) allocates nothing here.
-fn initial_simplex<const D: usize>(
-    points: &[[f64; D]],
-) -> Result<[usize; MAX_SIMPLEX], HullError> {
+fn initial_simplex<const D: usize>(points: &[[f64; D]]) -> Result<[usize; MAX_SIMPLEX], HullError> {
     if let Some(simplex) = greedy_simplex(points) {
         let mut vertices = [[0.0; D]; D];
         for (v, &s) in vertices.iter_mut().zip(&simplex) {

@@ -24,7 +24,7 @@ pub(in crate::hull) struct Scratch<const D: usize> {
     candidates: Vec<(u64, FacetId)>,
     representatives: Vec<FacetId>,
     stack: Vec<FacetId>,
-    /// The facets around one facet, breadth first, for [`Hull::claim_beyond`].
+    /// The facets around one facet, breadth first, for [`StrategyHooks::claim_beyond`](crate::hull::StrategyHooks::claim_beyond).
     ring: Vec<FacetId>,
     /// (hash of the coordinates, input index), sorted, and each input's first copy: see
     /// [`Hull::initialise`](super::Hull).
@@ -32,7 +32,7 @@ pub(in crate::hull) struct Scratch<const D: usize> {
     pub(in crate::hull) first_copy: Vec<u32>,
 }
 
-/// The most facets [`Hull::claim_beyond`] searches around a facet before it scans them all: a
+/// The most facets [`StrategyHooks::claim_beyond`](crate::hull::StrategyHooks::claim_beyond) searches around a facet before it scans them all: a
 /// few rings in 6-D, a hundredth of a large hull's arena.
 pub(in crate::hull) const RING_FACETS: usize = 1024;
 
@@ -47,11 +47,8 @@ fn ridge_hash<const D: usize>(key: &[u32; D]) -> usize {
 }
 
 impl<const D: usize> Hull<D> {
-    /// Adds the point farthest beyond facet `id` to the hull.
-    ///
-    /// Returns `false` (and changes nothing) when the facet is not live or its outside set is
-    /// empty. Afterwards [`Hull::last_removed`] and [`Hull::last_created`] list what changed.
-    pub fn expand(&mut self, id: FacetId) -> bool {
+    /// The engine's side of [`StrategyHooks::expand`](crate::hull::StrategyHooks::expand).
+    pub(crate) fn expand(&mut self, id: FacetId) -> bool {
         let Some(facet) = self.facets.get(id.index()).filter(|f| f.alive) else {
             return false;
         };
@@ -64,11 +61,8 @@ impl<const D: usize> Hull<D> {
         }
     }
 
-    /// Adds input point `point`, which must be in facet `id`'s outside set, to the hull.
-    ///
-    /// Returns `false` (and changes nothing) when `id` is not live or `point` is not in its outside
-    /// set.
-    pub fn expand_with(&mut self, id: FacetId, point: usize) -> bool {
+    /// The engine's side of [`StrategyHooks::expand_with`](crate::hull::StrategyHooks::expand_with).
+    pub(crate) fn expand_with(&mut self, id: FacetId, point: usize) -> bool {
         let Some(facet) = self.facets.get_mut(id.index()).filter(|f| f.alive) else {
             return false;
         };
@@ -88,14 +82,8 @@ impl<const D: usize> Hull<D> {
         true
     }
 
-    /// Adds a point that was not part of the input — from an implicit point set, such as a
-    /// Minkowski sum answered through its support function — to the hull, if it lies strictly
-    /// beyond facet `id` (exact test). Returns its new input index, or `None` (nothing changed)
-    /// when it is not beyond `id`, `id` is not live, or the point falls outside the coordinate
-    /// range the hull's exact filter was scaled for (every coordinate must be within the input's
-    /// largest magnitude, rounded up to a power of two: seed the input with the set's extreme
-    /// points along every axis).
-    pub fn insert_beyond(&mut self, id: FacetId, point: [f64; D]) -> Option<usize> {
+    /// The engine's side of [`StrategyHooks::insert_beyond`](crate::hull::StrategyHooks::insert_beyond).
+    pub(crate) fn insert_beyond(&mut self, id: FacetId, point: [f64; D]) -> Option<usize> {
         if !self.facets.get(id.index()).is_some_and(|f| f.alive) {
             return None;
         }
@@ -116,27 +104,18 @@ impl<const D: usize> Hull<D> {
         Some(index as usize)
     }
 
-    /// Facets removed by the last expansion (their slots are tombstoned).
-    pub fn last_removed(&self) -> &[FacetId] {
+    /// The engine's side of [`StrategyHooks::last_removed`](crate::hull::StrategyHooks::last_removed).
+    pub(crate) fn last_removed(&self) -> &[FacetId] {
         &self.scratch.removed
     }
 
-    /// Facets created by the last expansion.
-    pub fn last_created(&self) -> &[FacetId] {
+    /// The engine's side of [`StrategyHooks::last_created`](crate::hull::StrategyHooks::last_created).
+    pub(crate) fn last_created(&self) -> &[FacetId] {
         &self.scratch.created
     }
 
-    /// Moves into facet `id`'s outside set points of other outside sets that lie strictly beyond
-    /// it: those in the nearest rings of facets around it that hold any (up to
-    /// 1024 facets), else every one. Returns whether its outside set is now non-empty.
-    ///
-    /// Each point sits in one outside set only, so an empty set does not yet prove that nothing
-    /// lies beyond a facet; after this call returns `false` it does. Strategies that stop on "no
-    /// point beyond this facet" must call it. Its cost is one predicate per point of the rings'
-    /// sets, and only when they hold nothing beyond, one per remaining outside point: scanning
-    /// every set each time made the partial hull of cospherical points slower than the full one
-    /// (the points beyond a new facet are nearly always a ring or two away).
-    pub fn claim_beyond(&mut self, id: FacetId) -> bool {
+    /// The engine's side of [`StrategyHooks::claim_beyond`](crate::hull::StrategyHooks::claim_beyond).
+    pub(crate) fn claim_beyond(&mut self, id: FacetId) -> bool {
         if !self.facets.get(id.index()).is_some_and(|f| f.alive) {
             return false;
         }

@@ -8,7 +8,7 @@ use crate::predicates::FacetPlane;
 /// Ids are slot indices. When an expansion removes a facet its slot is tombstoned and may be reused
 /// by a facet created in a *later* expansion, so a strategy that keeps ids across expansions should
 /// also keep the facet's [`serial`](Facet::serial) and compare it (see
-/// [`Hull::is_current`](crate::Hull::is_current)).
+/// [`StrategyHooks::is_current`](crate::hull::StrategyHooks::is_current)).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct FacetId(pub(in crate::hull) u32);
 
@@ -49,7 +49,7 @@ pub struct Facet<const D: usize> {
     /// Unit outward normal.
     pub(in crate::hull) normal: [f64; D],
     /// Whether `normal` is certified to a relative 1e−11 (else it is the floating-point normal of
-    /// a facet whose cofactors cancelled, refined on demand by `Hull::refine_normal`).
+    /// a facet whose cofactors cancelled, refined on demand by `StrategyHooks::refine_normal`).
     pub(in crate::hull) precise: bool,
     /// Offset in the caller's coordinates.
     pub(in crate::hull) offset: f64,

@@ -1,6 +1,6 @@
 //! `FarthestPoint`: plain QuickHull, run to completion.
 
-use super::{FacetId, Hull, Step, Strategy, TraceContext};
+use super::{FacetId, Hull, Step, Strategy, TraceContext, TraceReason};
 
 /// Plain QuickHull to completion: every facet with a non-empty outside set is expanded with its
 /// farthest point until no outside set remains. The result is the full hull, and the baseline every
@@ -58,10 +58,7 @@ impl<const D: usize> Strategy<D> for FarthestPoint {
                 return Step::Continue;
             }
         }
-        hull.trace_stop(
-            None,
-            "no outside set remains: every point is inside, the hull is complete",
-        );
+        hull.trace_stop(None, FarthestReason::Complete);
         Step::Stop
     }
 
@@ -80,12 +77,49 @@ impl<const D: usize> Strategy<D> for FarthestPoint {
 fn trace_choice<const D: usize>(hull: &mut Hull<D>, id: FacetId) {
     let facet = hull.facet(id);
     if let Some(p) = facet.farthest_point().filter(|_| facet.is_alive()) {
-        let key = hull.signed_distance(id, &hull.point(p));
-        hull.trace_choice(
-            id,
-            Some(("distance of its farthest outside point", key)),
-            "oldest pending facet with outside points (breadth-first); its farthest outside \
-             point is added",
-        );
+        let distance = hull.signed_distance(id, &hull.point(p));
+        hull.trace_choice(id, FarthestReason::Oldest { distance });
+    }
+}
+
+/// The steps of [`FarthestPoint`] a trace records ([`TraceReason`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum FarthestReason {
+    /// The oldest pending facet with outside points (breadth first): its farthest outside
+    /// point is added.
+    Oldest {
+        /// That point's floating-point distance beyond the facet's plane.
+        distance: f64,
+    },
+    /// No outside set remains: the hull is complete.
+    Complete,
+}
+
+impl TraceReason for FarthestReason {
+    fn code(&self) -> &'static str {
+        match self {
+            FarthestReason::Oldest { .. } => "oldest-pending",
+            FarthestReason::Complete => "complete",
+        }
+    }
+
+    fn describe(&self) -> String {
+        match self {
+            FarthestReason::Oldest { .. } => "oldest pending facet with outside points \
+                                              (breadth-first); its farthest outside point is added"
+                .to_string(),
+            FarthestReason::Complete => {
+                "no outside set remains: every point is inside, the hull is complete".to_string()
+            }
+        }
+    }
+
+    fn key(&self) -> Option<(&'static str, f64)> {
+        match self {
+            FarthestReason::Oldest { distance } => {
+                Some(("distance of its farthest outside point", *distance))
+            }
+            FarthestReason::Complete => None,
+        }
     }
 }

@@ -1,8 +1,8 @@
 //! The QuickHull engine: facet arena, initial simplex, horizon, outside sets, expansion, checker.
 //!
 //! The engine knows topology and predicates, never a strategy's goal. A [`Strategy`] drives it
-//! through [`Hull::expand`] (add the farthest point beyond a facet), [`Hull::expand_with`] (add a
-//! chosen point) and [`Hull::claim_beyond`] (make sure a facet's outside set holds every remaining
+//! through [`StrategyHooks::expand`] (add the farthest point beyond a facet), [`StrategyHooks::expand_with`] (add a
+//! chosen point) and [`StrategyHooks::claim_beyond`] (make sure a facet's outside set holds every remaining
 //! point beyond it), and stops when it likes.
 //!
 //! # Invariants kept between expansions
@@ -23,6 +23,7 @@ mod error;
 mod expand;
 mod facet;
 mod farthest_point;
+mod hooks;
 mod planes;
 mod record;
 mod strategy;
@@ -32,8 +33,9 @@ mod volume;
 pub use build::{MAX_DIMENSION, MIN_DIMENSION};
 pub use error::{HullError, InvariantViolation};
 pub use facet::{Facet, FacetId};
-pub use farthest_point::FarthestPoint;
-pub use record::{Event, FacetSnapshot, Key, Replay, Trace, TraceContext, TraceText};
+pub use farthest_point::{FarthestPoint, FarthestReason};
+pub use hooks::StrategyHooks;
+pub use record::{Event, FacetSnapshot, Key, Replay, Trace, TraceContext, TraceReason};
 pub use strategy::{ReusableStrategy, Stats, Step, Strategy};
 
 use crate::geometry::vector::norm;
@@ -301,8 +303,8 @@ impl<const D: usize> Hull<D> {
         &self.facets[id.index()]
     }
 
-    /// Whether `id` still names the facet created with `serial`.
-    pub fn is_current(&self, id: FacetId, serial: u64) -> bool {
+    /// The engine's side of [`StrategyHooks::is_current`].
+    pub(crate) fn is_current(&self, id: FacetId, serial: u64) -> bool {
         self.facets
             .get(id.index())
             .is_some_and(|f| f.alive && f.serial == serial)
@@ -345,28 +347,21 @@ impl<const D: usize> Hull<D> {
             .then_some(scaled)
     }
 
-    /// A bound on the input's coordinates (caller's units): every coordinate is at most this in
-    /// magnitude, and the largest is more than half of it (unless the input's magnitudes were too
-    /// extreme to be scaled exactly).
-    pub fn coordinate_bound(&self) -> f64 {
+    /// The engine's side of [`StrategyHooks::coordinate_bound`].
+    pub(crate) fn coordinate_bound(&self) -> f64 {
         1.0 / self.scale
     }
 
-    /// Signed distance of `x` (caller's units) beyond facet `id`'s plane from the exact
-    /// determinant and the exact cofactors: a few ulps however close `x` is to the plane (see
-    /// `FacetPlane::exact_distance`), or `None` when `x` cannot be scaled exactly (as in
-    /// [`side_of`](Self::side_of)).
-    pub fn exact_signed_distance(&self, id: FacetId, x: &[f64; D]) -> Option<f64> {
+    /// The engine's side of [`StrategyHooks::exact_signed_distance`].
+    pub(crate) fn exact_signed_distance(&self, id: FacetId, x: &[f64; D]) -> Option<f64> {
         let scaled = self.scaled_exactly(x)?;
         let (plane, vertices) = self.exact_plane_of(id);
         let distance = plane.exact_distance(&self.coords(vertices), &scaled);
         Some(distance / self.scale)
     }
 
-    /// An upper bound on the exact signed distance of `x` beyond facet `id`'s plane: the
-    /// floating-point distance when the facet's normal is precise, else a certified bound from the
-    /// plane's error analysis (`+∞` when the floating-point cofactors say nothing).
-    pub fn distance_upper_bound(&self, id: FacetId, x: &[f64; D]) -> f64 {
+    /// The engine's side of [`StrategyHooks::distance_upper_bound`].
+    pub(crate) fn distance_upper_bound(&self, id: FacetId, x: &[f64; D]) -> f64 {
         let facet = self.facet(id);
         if facet.precise {
             return facet.signed_distance(x);

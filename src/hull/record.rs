@@ -40,12 +40,14 @@ pub enum Event<const D: usize> {
         facet: u64,
         /// Its vertices (so that the event reads on its own).
         vertices: [usize; D],
-        /// Why this facet, e.g. `"smallest inflation factor"`.
+        /// Why this facet, in words, e.g. `"smallest inflation factor"`.
         reason: String,
+        /// The kind of reason, stable for programs ([`TraceReason::code`]).
+        code: &'static str,
         /// The number the choice was ordered by, if any.
         key: Option<Key>,
     },
-    /// [`Hull::claim_beyond`](crate::Hull::claim_beyond) moved points from other outside sets
+    /// [`StrategyHooks::claim_beyond`](crate::hull::StrategyHooks::claim_beyond) moved points from other outside sets
     /// into this facet's (recorded only when it moved any).
     Claimed {
         /// The claiming facet's serial.
@@ -53,8 +55,8 @@ pub enum Event<const D: usize> {
         /// The points moved, in the order they were claimed.
         points: Vec<usize>,
     },
-    /// A point that was not in the input (an implicit source, [`Hull::insert_beyond`](
-    /// crate::Hull::insert_beyond)) joined the points; an [`Event::Expanded`] adding it follows.
+    /// A point that was not in the input (an implicit source, [`insert_beyond`](
+    /// super::StrategyHooks::insert_beyond)) joined the points; an [`Event::Expanded`] adding it follows.
     Inserted {
         /// The facet it lies beyond.
         facet: u64,
@@ -80,6 +82,8 @@ pub enum Event<const D: usize> {
     Note {
         /// The message.
         text: String,
+        /// The kind of note, stable for programs ([`TraceReason::code`]).
+        code: &'static str,
         /// A point to mark (caller's units).
         point: Option<[f64; D]>,
     },
@@ -87,6 +91,8 @@ pub enum Event<const D: usize> {
     Stop {
         /// Why it could stop: the certificate it holds.
         reason: String,
+        /// The kind of stop, stable for programs ([`TraceReason::code`]).
+        code: &'static str,
         /// The deciding facet's serial, when there is one.
         facet: Option<u64>,
     },
@@ -263,23 +269,56 @@ impl<'a, const D: usize> Replay<'a, D> {
     }
 }
 
-/// Text for a trace, built only when a run is traced: a `&'static str` (free to pass), or a
-/// closure returning a `String`, called only when tracing (so `format!` costs nothing on an
-/// untraced run). Taken by [`Hull::trace_choice`](crate::Hull::trace_choice),
-/// [`Hull::trace_note`](crate::Hull::trace_note) and [`Hull::trace_stop`](crate::Hull::trace_stop).
-pub trait TraceText {
-    /// The text.
-    fn into_text(self) -> String;
-}
-
-impl TraceText for &'static str {
-    fn into_text(self) -> String {
-        self.to_string()
+/// Why a strategy chose a facet, noted something or stopped: a typed value (each built-in
+/// strategy has its own enum of reasons), turned into the trace's words only when the run is
+/// traced, so an untraced run builds no string. Taken by
+/// [`StrategyHooks::trace_choice`](super::StrategyHooks::trace_choice),
+/// [`trace_note`](super::StrategyHooks::trace_note) and
+/// [`trace_stop`](super::StrategyHooks::trace_stop).
+///
+/// A `&'static str` is a reason too (code `"text"`), for a quick strategy of one's own.
+///
+/// ```
+/// use pqhull::hull::TraceReason;
+///
+/// /// Why a best-first strategy picked a facet.
+/// enum Why {
+///     Highest { height: f64 },
+/// }
+/// impl TraceReason for Why {
+///     fn code(&self) -> &'static str {
+///         "highest"
+///     }
+///     fn describe(&self) -> String {
+///         let Why::Highest { height } = self;
+///         format!("highest outside point ({height})")
+///     }
+///     fn key(&self) -> Option<(&'static str, f64)> {
+///         let Why::Highest { height } = self;
+///         Some(("height", *height))
+///     }
+/// }
+/// assert_eq!(Why::Highest { height: 2.0 }.describe(), "highest outside point (2)");
+/// assert_eq!("because".code(), "text");
+/// ```
+pub trait TraceReason {
+    /// The kind of reason: a short identifier, stable across versions, for programs that read
+    /// a trace (the words may change).
+    fn code(&self) -> &'static str;
+    /// The reason in words, as the trace shows it.
+    fn describe(&self) -> String;
+    /// For a choice, the number it was ordered by and what that number measures.
+    fn key(&self) -> Option<(&'static str, f64)> {
+        None
     }
 }
 
-impl<F: FnOnce() -> String> TraceText for F {
-    fn into_text(self) -> String {
-        self()
+impl TraceReason for &'static str {
+    fn code(&self) -> &'static str {
+        "text"
+    }
+
+    fn describe(&self) -> String {
+        (*self).to_string()
     }
 }

@@ -55,7 +55,7 @@ pub trait Strategy<const D: usize> {
     type Output;
     /// Called once the initial simplex exists.
     fn start(&mut self, hull: &Hull<D>);
-    /// Expand (through [`Hull::expand`]) or stop.
+    /// Expand (through [`StrategyHooks::expand`](crate::hull::StrategyHooks::expand)) or stop.
     fn step(&mut self, hull: &mut Hull<D>) -> Step;
     /// Produce the result.
     fn finish(self, hull: &Hull<D>) -> Self::Output;
@@ -80,8 +80,8 @@ pub trait Strategy<const D: usize> {
     /// disturbances); asked once by [`Hull::try_with_strategy_traced`], never on an untraced
     /// run. Default: nothing (the engine names the strategy after its type).
     ///
-    /// A strategy explains itself in a trace through [`Hull::trace_choice`],
-    /// [`Hull::trace_note`] and [`Hull::trace_stop`]; the engine records the rest.
+    /// A strategy explains itself in a trace through [`StrategyHooks::trace_choice`](crate::hull::StrategyHooks::trace_choice),
+    /// [`StrategyHooks::trace_note`](crate::hull::StrategyHooks::trace_note) and [`StrategyHooks::trace_stop`](crate::hull::StrategyHooks::trace_stop); the engine records the rest.
     fn trace_context(&self) -> TraceContext<D> {
         TraceContext::default()
     }

@@ -3,11 +3,11 @@
 //! The hull holds `Option<Box<Trace>>`, `None` unless the run was started with
 //! [`Hull::try_with_strategy_traced`]. Every hook starts with `if let Some(..)`/`is_some()` on
 //! that field, the recording itself is out of line (`#[cold]`), and strategies pass their
-//! explanations as static strings or as closures called only when tracing ([`TraceText`]), so
-//! an untraced run pays one predictable branch per hook and builds no string. The box keeps
+//! explanations as typed values put into words only when tracing ([`TraceReason`]), so an
+//! untraced run pays one predictable branch per hook and builds no string. The box keeps
 //! the field one pointer wide, so `Hull` barely grows.
 
-use super::{Event, FacetId, FacetSnapshot, Hull, HullError, Key, Strategy, Trace, TraceText};
+use super::{Event, FacetId, FacetSnapshot, Hull, HullError, Key, Strategy, Trace, TraceReason};
 
 impl<const D: usize> Hull<D> {
     /// As [`Hull::try_with_strategy`], and also returns the [`Trace`] of the run: the initial
@@ -62,6 +62,7 @@ impl<const D: usize> Hull<D> {
         if !matches!(trace.events.last(), Some(Event::Stop { .. })) {
             trace.events.push(Event::Stop {
                 reason: "the strategy stopped (it gave no reason)".to_string(),
+                code: "no-reason",
                 facet: None,
             });
         }
@@ -69,81 +70,37 @@ impl<const D: usize> Hull<D> {
         Ok((hull, output, trace))
     }
 
-    /// Whether this run is being traced. Strategies may test it before computing something they
-    /// only need for the trace.
-    #[inline]
-    pub fn is_tracing(&self) -> bool {
+    /// The engine's side of [`StrategyHooks::is_tracing`](crate::hull::StrategyHooks::is_tracing).
+    pub(crate) fn is_tracing(&self) -> bool {
         self.trace.is_some()
     }
 
-    /// Records that the strategy picked facet `id` (an [`Event::Chose`]), ordered by `key`
-    /// (what it measures, its value) and explained by `reason` (a `&'static str`, or a closure
-    /// called only when tracing: see [`TraceText`]). Does nothing when not tracing or when `id`
-    /// is not live.
-    ///
-    /// ```
-    /// use pqhull::Step;
-    /// use pqhull::{Hull, Strategy};
-    ///
-    /// /// Expands the facet with the most outside points, and says so.
-    /// struct Busiest;
-    /// impl<const D: usize> Strategy<D> for Busiest {
-    ///     type Output = ();
-    ///     fn start(&mut self, _: &Hull<D>) {}
-    ///     fn step(&mut self, hull: &mut Hull<D>) -> Step {
-    ///         let best = hull.facets().max_by_key(|(_, f)| f.outside_len());
-    ///         match best.map(|(id, f)| (id, f.outside_len())) {
-    ///             Some((id, n)) if n > 0 => {
-    ///                 hull.trace_choice(id, Some(("outside points", n as f64)), "busiest facet");
-    ///                 hull.expand(id);
-    ///                 Step::Continue
-    ///             }
-    ///             _ => {
-    ///                 let n = hull.facet_count();
-    ///                 hull.trace_stop(None, move || format!("{n} facets, none with outside points"));
-    ///                 Step::Stop
-    ///             }
-    ///         }
-    ///     }
-    ///     fn finish(self, _: &Hull<D>) {}
-    /// }
-    /// let points = pqhull::rbox::generate::<3>(&pqhull::rbox::Family::UniformCube, 100, 1);
-    /// let (_, (), trace) = Hull::try_with_strategy_traced(&points, Busiest)?;
-    /// assert_eq!(trace.context.strategy, "Busiest");
-    /// assert!(trace.stop_reason().unwrap().ends_with("none with outside points"));
-    /// # Ok::<(), pqhull::HullError>(())
-    /// ```
-    #[inline]
-    pub fn trace_choice(
-        &mut self,
-        id: FacetId,
-        key: Option<(&'static str, f64)>,
-        reason: impl TraceText,
-    ) {
+    /// The engine's side of [`StrategyHooks::trace_choice`](crate::hull::StrategyHooks::trace_choice).
+    pub(crate) fn trace_choice(&mut self, id: FacetId, reason: impl TraceReason) {
         if self.trace.is_some() {
-            self.record_choice(id, key, reason.into_text());
+            self.record_choice(id, &reason);
         }
     }
 
-    /// Records a note (an [`Event::Note`]), optionally marking a point (caller's units).
-    #[inline]
-    pub fn trace_note(&mut self, point: Option<[f64; D]>, text: impl TraceText) {
+    /// The engine's side of [`StrategyHooks::trace_note`](crate::hull::StrategyHooks::trace_note).
+    pub(crate) fn trace_note(&mut self, point: Option<[f64; D]>, reason: impl TraceReason) {
         if let Some(trace) = &mut self.trace {
             trace.events.push(Event::Note {
-                text: text.into_text(),
+                text: reason.describe(),
+                code: reason.code(),
                 point,
             });
         }
     }
 
-    /// Records why the strategy stops (an [`Event::Stop`]) and the deciding facet, if any.
-    #[inline]
-    pub fn trace_stop(&mut self, facet: Option<FacetId>, reason: impl TraceText) {
+    /// The engine's side of [`StrategyHooks::trace_stop`](crate::hull::StrategyHooks::trace_stop).
+    pub(crate) fn trace_stop(&mut self, facet: Option<FacetId>, reason: impl TraceReason) {
         if self.trace.is_some() {
             let facet = facet.map(|id| self.facet(id).serial);
             if let Some(trace) = &mut self.trace {
                 trace.events.push(Event::Stop {
-                    reason: reason.into_text(),
+                    reason: reason.describe(),
+                    code: reason.code(),
                     facet,
                 });
             }
@@ -151,15 +108,16 @@ impl<const D: usize> Hull<D> {
     }
 
     #[cold]
-    fn record_choice(&mut self, id: FacetId, key: Option<(&'static str, f64)>, reason: String) {
+    fn record_choice(&mut self, id: FacetId, reason: &impl TraceReason) {
         let Some(facet) = self.facets.get(id.index()).filter(|f| f.alive) else {
             return;
         };
         let event = Event::Chose {
             facet: facet.serial,
             vertices: facet.vertices(),
-            reason,
-            key: key.map(|(name, value)| Key {
+            reason: reason.describe(),
+            code: reason.code(),
+            key: reason.key().map(|(name, value)| Key {
                 name: name.to_string(),
                 value,
             }),
@@ -202,7 +160,7 @@ impl<const D: usize> Hull<D> {
         }
     }
 
-    /// After [`Hull::claim_beyond`] moved `points` into facet `id`'s outside set.
+    /// After [`StrategyHooks::claim_beyond`](crate::hull::StrategyHooks::claim_beyond) moved `points` into facet `id`'s outside set.
     #[cold]
     pub(super) fn record_claim(&mut self, id: FacetId, points: Vec<usize>) {
         let facet = self.facets[id.index()].serial;
@@ -211,7 +169,7 @@ impl<const D: usize> Hull<D> {
         }
     }
 
-    /// Before [`Hull::insert_beyond`] expands facet `id` with the new point `index`.
+    /// Before [`StrategyHooks::insert_beyond`](crate::hull::StrategyHooks::insert_beyond) expands facet `id` with the new point `index`.
     #[cold]
     pub(super) fn record_insertion(&mut self, id: FacetId, index: usize, coordinates: [f64; D]) {
         let facet = self.facets[id.index()].serial;

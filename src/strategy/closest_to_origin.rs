@@ -1,5 +1,6 @@
 //! `ClosestToOrigin`: the PQHGWS algorithm (Liu & Carpin, Algorithm 1), made exact.
 
+use super::reasons::NearestReason;
 use super::{Queued, ReusableStrategy, Stats, Step, Strategy};
 use crate::geometry::Support;
 use crate::geometry::vector::{dot, norm};
@@ -18,7 +19,7 @@ use std::fmt;
 ///
 /// Facets wait in a priority queue keyed by how far the query point lies beyond their plane. The
 /// strategy pops the top facet; if any point lies strictly beyond it (its outside set, after
-/// [`Hull::claim_beyond`]), the facet is expanded and its replacements queued. Otherwise the facet's
+/// [`StrategyHooks::claim_beyond`](crate::hull::StrategyHooks::claim_beyond)), the facet is expanded and its replacements queued. Otherwise the facet's
 /// plane supports *every* input point, and:
 ///
 /// * **query inside** (checked exactly against every live facet): the partial hull `P` is inside the
@@ -103,7 +104,7 @@ pub struct DistanceResult<const D: usize> {
     /// The deciding facet's vertices (input indices).
     pub closest_facet_vertices: [usize; D],
     /// The point of the hull boundary nearest the query point. For a query with a coordinate
-    /// beyond twice the input's [`coordinate_bound`](Hull::coordinate_bound), the exact one
+    /// beyond twice the input's [`coordinate_bound`](crate::hull::StrategyHooks::coordinate_bound), the exact one
     /// rounded to the nearest `f64` in each coordinate (so a point of the hull to half an ulp);
     /// nearer, to a few ulps of the query's and the input's coordinates.
     pub nearest_point: [f64; D],
@@ -123,7 +124,7 @@ impl<const D: usize> DistanceResult<D> {
 ///
 /// [`ClosestToOrigin::with_source`] asks it before declaring a facet certain, so "nothing
 /// beyond" covers the implicit points too. The hull's input must contain the set's extreme points
-/// along every coordinate axis (see [`Hull::insert_beyond`]).
+/// along every coordinate axis (see [`StrategyHooks::insert_beyond`](crate::hull::StrategyHooks::insert_beyond)).
 ///
 /// ```
 /// use pqhull::geometry::Support;
@@ -159,7 +160,7 @@ impl<const D: usize> DistanceResult<D> {
 ///
 /// Every point returned — by [`beyond`](Self::beyond) or by
 /// [`support_point`](Support::support_point) — must be finite and within the hull's coordinate
-/// range ([`Hull::coordinate_bound`]: seed the input with the set's extreme points along every
+/// range ([`StrategyHooks::coordinate_bound`](crate::hull::StrategyHooks::coordinate_bound): seed the input with the set's extreme points along every
 /// axis), and a point from `beyond` must be strictly beyond the facet asked about. The strategy
 /// checks both exactly; a point that breaks them ends the run with a [`SourceError`] (it used to
 /// panic).
@@ -226,7 +227,7 @@ pub enum SourceError<const D: usize> {
         side: Sign,
     },
     /// [`PointSource::beyond`] returned a point with a coordinate that is not finite or is
-    /// larger in magnitude than the hull's [`coordinate_bound`](Hull::coordinate_bound).
+    /// larger in magnitude than the hull's [`coordinate_bound`](crate::hull::StrategyHooks::coordinate_bound).
     OutOfRange {
         /// The facet asked about.
         facet: FacetId,
@@ -315,7 +316,7 @@ impl<const D: usize> fmt::Display for SourceError<D> {
 impl<const D: usize> std::error::Error for SourceError<D> {}
 
 /// Whether every coordinate of `point` is finite and at most `bound` in magnitude (the range
-/// [`Hull::insert_beyond`] accepts).
+/// [`StrategyHooks::insert_beyond`](crate::hull::StrategyHooks::insert_beyond) accepts).
 fn in_range<const D: usize>(point: &[f64; D], bound: f64) -> bool {
     point.iter().all(|x| x.abs() <= bound)
 }
@@ -418,14 +419,8 @@ impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
             }
             hull.trace_choice(
                 id,
-                Some(("distance of the query beyond the plane", entry.key)),
-                || {
-                    if entry.key > 0.0 {
-                        "the query lies farthest beyond this facet's plane"
-                    } else {
-                        "nearest plane to the query (the query is beneath every queued plane)"
-                    }
-                    .to_string()
+                NearestReason::<D>::Nearest {
+                    distance: entry.key,
                 },
             );
             if self.grow_beyond(hull, id) {
@@ -434,11 +429,7 @@ impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
             // Nothing lies beyond `id`: its plane supports the full hull.
             let query_side = hull.side_of(id, &self.query);
             if query_side == Sign::Positive {
-                hull.trace_note(
-                    None,
-                    "nothing lies beyond this facet and the query is strictly beyond it: the \
-                     query is outside the full hull; searching for the nearest point",
-                );
+                hull.trace_note(None, NearestReason::<D>::Outside);
                 self.phase = Phase::Outside;
                 return Step::Continue;
             }
@@ -450,22 +441,13 @@ impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
             if let Some(g) = beyond {
                 self.queue.push(entry);
                 if hull.is_tracing() {
-                    let key = hull.signed_distance(g, &self.query);
-                    hull.trace_choice(
-                        g,
-                        Some(("distance of the query beyond the plane", key)),
-                        "the query is strictly beyond this facet (exact test): it is not yet \
-                         inside the partial hull",
-                    );
+                    let distance = hull.signed_distance(g, &self.query);
+                    hull.trace_choice(g, NearestReason::<D>::QueryBeyond { distance });
                 }
                 if hull.facet(g).outside_len() > 0 || hull.claim_beyond(g) {
                     self.expand(hull, g, None);
                 } else {
-                    hull.trace_note(
-                        None,
-                        "nothing lies beyond that facet: the query is outside the full hull; \
-                         searching for the nearest point",
-                    );
+                    hull.trace_note(None, NearestReason::<D>::Outside);
                     self.phase = Phase::Outside;
                 }
                 return Step::Continue;
@@ -495,17 +477,13 @@ impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
             let foot = std::array::from_fn(|c| self.query[c] + distance * normal[c]);
             self.answer = Some((distance, id, foot));
             self.phase = Phase::Done;
-            hull.trace_stop(Some(id), || {
-                let side = if query_side == Sign::Zero {
-                    "query on the boundary"
-                } else {
-                    "query inside"
-                };
-                format!(
-                    "nothing lies beyond the nearest facet and the query is inside every facet: \
-                     distance {distance} certified ({side})"
-                )
-            });
+            hull.trace_stop(
+                Some(id),
+                NearestReason::<D>::InsideCertified {
+                    distance,
+                    on_boundary: query_side == Sign::Zero,
+                },
+            );
             return Step::Stop;
         }
         unreachable!("a hull always has live facets, each queued when created")
@@ -564,7 +542,7 @@ impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
     }
 
     /// Adds a point strictly beyond facet `id` — an input point (after
-    /// [`Hull::claim_beyond`]) or one of the source's — and queues the new facets; `false` when
+    /// [`StrategyHooks::claim_beyond`](crate::hull::StrategyHooks::claim_beyond)) or one of the source's — and queues the new facets; `false` when
     /// nothing lies beyond it, so that its plane supports the full hull.
     fn grow_beyond(&mut self, hull: &mut Hull<D>, id: FacetId) -> bool {
         if hull.facet(id).outside_len() > 0 || hull.claim_beyond(id) {
@@ -606,7 +584,9 @@ impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
 
     /// Stops the run on a broken source contract.
     fn fail(&mut self, hull: &mut Hull<D>, error: SourceError<D>) {
-        hull.trace_stop(None, || format!("stopped: {error}"));
+        if hull.is_tracing() {
+            hull.trace_stop(None, NearestReason::<D>::Failed(error.clone()));
+        }
         self.error = Some(error);
         self.phase = Phase::Done;
     }
@@ -615,11 +595,7 @@ impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
     fn step_outside(&mut self, hull: &mut Hull<D>) -> Step {
         let closest = self.nearest_point(hull);
         let x = closest.point;
-        hull.trace_note(
-            Some(x),
-            "nearest point of the partial hull to the query: does anything lie beyond the \
-             supporting plane through it?",
-        );
+        hull.trace_note(Some(x), NearestReason::<D>::NearestPoint);
         // Heights along q − x measured from the query, where q − x is known accurately: the
         // supporting plane through x is at height −|q − x|². For a far query, measured from x
         // instead (the plane at height 0): p − q would lose every bit of p's offset from x.
@@ -672,16 +648,8 @@ impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
         }
         match best {
             Some((height, g, p)) => {
-                let key = (
-                    "height of the point beyond the supporting plane",
-                    height - level,
-                );
-                hull.trace_choice(g, Some(key), || {
-                    format!(
-                        "holds point {p}, the farthest beyond the supporting plane through the \
-                         nearest point: it is added"
-                    )
-                });
+                let height = height - level;
+                hull.trace_choice(g, NearestReason::<D>::BeyondSupport { point: p, height });
                 self.expand(hull, g, Some(p));
                 Step::Continue
             }
@@ -689,12 +657,7 @@ impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
                 let (distance, id, x) = self.outside_answer(hull, closest);
                 self.answer = Some((-distance, id, x));
                 self.phase = Phase::Done;
-                hull.trace_stop(Some(id), || {
-                    format!(
-                        "nothing lies beyond the supporting plane through the nearest point: \
-                         distance {distance} certified (query outside)"
-                    )
-                });
+                hull.trace_stop(Some(id), NearestReason::<D>::OutsideCertified { distance });
                 Step::Stop
             }
         }

@@ -2,11 +2,16 @@
 //!
 //! A [`Strategy`] is a stateful value the engine consults: [`start`](Strategy::start) once the
 //! initial simplex exists, then [`step`](Strategy::step) until it returns [`Step::Stop`] — each
-//! step typically names a facet to [`Hull::expand`](crate::Hull::expand) and reads [`Hull::last_removed`](crate::Hull::last_removed) /
-//! [`Hull::last_created`](crate::Hull::last_created) to update its own queue — and finally [`finish`](Strategy::finish) to
-//! produce its result. The engine never knows a strategy's goal.
+//! step typically names a facet to [`expand`](crate::hull::StrategyHooks::expand) and reads
+//! [`last_removed`](crate::hull::StrategyHooks::last_removed) /
+//! [`last_created`](crate::hull::StrategyHooks::last_created) to update its own queue — and
+//! finally [`finish`](Strategy::finish) to produce its result. The engine never knows a
+//! strategy's goal. The hooks a strategy drives the engine with are the trait
+//! [`StrategyHooks`](crate::hull::StrategyHooks), apart from `Hull`'s own methods (what a user of
+//! a hull calls).
 //!
 //! ```
+//! use pqhull::hull::StrategyHooks; // expand, last_created, ...: the hooks a strategy uses
 //! use pqhull::{Hull, Strategy};
 //! use pqhull::Step;
 //!
@@ -42,20 +47,23 @@
 mod closest_to_origin;
 mod complete;
 mod ows_inflation;
+mod reasons;
 
 pub use crate::hull::{FarthestPoint, ReusableStrategy, Stats, Step, Strategy};
 pub use closest_to_origin::{ClosestToOrigin, DistanceResult, NoSource, PointSource, SourceError};
 pub use complete::Complete;
 pub use ows_inflation::{OwsInflation, OwsResult, inflation_factor};
 pub use ows_inflation::{exact_factor, factor_lower_bound};
+pub use reasons::{InflationReason, NearestReason};
 
 /// A facet waiting in a strategy's priority queue (`BinaryHeap`, a max-heap): the largest `key`
 /// first, ties to the older facet (smaller serial) so the order is deterministic. `serial` tells
 /// an entry whose facet was since removed (its slot possibly reused) from a live one
-/// ([`Hull::is_current`](crate::Hull::is_current)); `data` is whatever the strategy keeps with it. The built-in strategies
+/// ([`StrategyHooks::is_current`](crate::hull::StrategyHooks::is_current)); `data` is whatever the strategy keeps with it. The built-in strategies
 /// queue their facets with it; `examples/custom_strategy.rs` shows one written outside the crate.
 ///
 /// ```
+/// use pqhull::hull::StrategyHooks;
 /// use pqhull::strategy::Queued;
 /// use pqhull::Hull;
 /// use std::collections::BinaryHeap;

@@ -1,5 +1,6 @@
 //! `OwsInflation`: the PQHOWS algorithm (Liu & Carpin, Algorithm 2), made exact.
 
+use super::reasons::InflationReason;
 use super::{Queued, ReusableStrategy, Stats, Step, Strategy};
 use crate::geometry::SupportIndex;
 use crate::geometry::vector::dot;
@@ -30,7 +31,7 @@ use std::collections::BinaryHeap;
 ///    number ([`OwsResult::value`] is `None`).
 /// 2. Assign every disturbance to the facet its ray leaves through (the facet with the smallest
 ///    inflation factor); queue every facet by the smallest factor of its disturbances.
-/// 3. Pop the smallest. If no point lies beyond that facet (after [`Hull::claim_beyond`]), its plane
+/// 3. Pop the smallest. If no point lies beyond that facet (after [`StrategyHooks::claim_beyond`](crate::hull::StrategyHooks::claim_beyond)), its plane
 ///    supports the full hull, so the full hull's factor for that disturbance equals the partial
 ///    one; every other disturbance's partial factor is at least as large, and the full hull
 ///    contains the partial one, so full factors are larger still: the popped factor is the answer.
@@ -137,7 +138,7 @@ pub fn factor_lower_bound<const D: usize>(
 }
 
 /// The exact key of facet `id`: the origin's exact distance inside its plane (a few ulps, see
-/// [`Hull::exact_signed_distance`]) over `support(−n)`, the largest rate of any disturbance
+/// [`StrategyHooks::exact_signed_distance`](crate::hull::StrategyHooks::exact_signed_distance)) over `support(−n)`, the largest rate of any disturbance
 /// against the exact plane's unit normal `n`, with that disturbance; `None` when no disturbance
 /// reaches the plane.
 pub fn exact_factor<const D: usize>(
@@ -194,13 +195,6 @@ pub struct OwsResult<const D: usize> {
     pub deciding_disturbance: Option<usize>,
     /// Work done by the partial hull.
     pub stats: Stats,
-}
-
-impl<const D: usize> OwsResult<D> {
-    /// Whether the origin is strictly inside the hull (force closure).
-    pub fn is_force_closure(&self) -> bool {
-        self.value.is_some()
-    }
 }
 
 /// The inflation factor of ray `u` against a facet plane `normal · x = offset` whose offset is
@@ -470,30 +464,18 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
             }
         }
         let Some((beyond, id)) = worst else {
-            hull.trace_note(
-                Some(origin),
-                "the origin is strictly inside the partial hull (exact tests): inflating the \
-                 disturbances",
-            );
+            hull.trace_note(Some(origin), InflationReason::OriginInside);
             self.begin_inflation(hull);
             return Step::Continue;
         };
-        hull.trace_choice(
-            id,
-            Some(("distance of the origin beyond the plane", beyond)),
-            "the origin is on or beyond this facet's plane (farthest beyond first)",
-        );
+        hull.trace_choice(id, InflationReason::OriginBeyond { distance: beyond });
         if hull.facet(id).outside_len() > 0 || hull.claim_beyond(id) {
             hull.expand(id);
             Step::Continue
         } else {
             // This facet's plane supports the full hull with the origin on or beyond it.
             self.phase = Phase::Outside;
-            hull.trace_stop(
-                Some(id),
-                "nothing lies beyond a facet with the origin on or beyond its plane: not force \
-                 closure (no value)",
-            );
+            hull.trace_stop(Some(id), InflationReason::NotForceClosure);
             Step::Stop
         }
     }
@@ -514,12 +496,13 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
                 Key::Bound(d) => (d, false),
                 Key::Exact(d) => (d, true),
             };
-            hull.trace_choice(id, Some(("inflation factor", entry.factor())), || {
-                format!(
-                    "smallest inflation factor (disturbance {disturbance} reaches this facet's \
-                     plane first)"
-                )
-            });
+            hull.trace_choice(
+                id,
+                InflationReason::Smallest {
+                    disturbance: disturbance as usize,
+                    factor: entry.factor(),
+                },
+            );
             if hull.facet(id).outside_len() > 0 || hull.claim_beyond(id) {
                 hull.expand(id);
                 self.after_expansion(hull);
@@ -536,21 +519,18 @@ impl<'a, const D: usize> OwsInflation<'a, D> {
             }
             self.answer = Some((entry.factor(), id, disturbance as usize));
             self.phase = Phase::Done;
-            hull.trace_stop(Some(id), || {
-                format!(
-                    "nothing lies beyond the facet with the smallest inflation factor: Q = {} \
-                     certified (disturbance {disturbance})",
-                    entry.factor(),
-                )
-            });
+            hull.trace_stop(
+                Some(id),
+                InflationReason::Certified {
+                    disturbance: disturbance as usize,
+                    value: entry.factor(),
+                },
+            );
             return Step::Stop;
         }
         // Every disturbance is zero: nothing to resist.
         self.phase = Phase::Done;
-        hull.trace_stop(
-            None,
-            "no disturbance reaches any facet (every disturbance is zero): Q = infinity",
-        );
+        hull.trace_stop(None, InflationReason::NoDisturbance);
         Step::Stop
     }
 }

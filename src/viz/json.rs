@@ -33,12 +33,14 @@ fn event_json<const D: usize>(event: &Event<D>) -> Value {
             facet,
             vertices,
             reason,
+            code,
             key,
         } => json!({
             "kind": "chose",
             "facet": facet,
             "vertices": vertices.to_vec(),
             "reason": reason,
+            "code": code,
             "key": key.as_ref().map(|k| json!({"name": k.name, "value": k.value})),
         }),
         Event::Claimed { facet, points } => {
@@ -66,11 +68,16 @@ fn event_json<const D: usize>(event: &Event<D>) -> Value {
             "removed": removed,
             "created": created.iter().map(snapshot_json).collect::<Vec<_>>(),
         }),
-        Event::Note { text, point } => json!({
+        Event::Note { text, code, point } => json!({
             "kind": "note",
             "text": text,
+            "code": code,
             "point": point.map(|p| p.to_vec()),
         }),
-        Event::Stop { reason, facet } => json!({"kind": "stop", "reason": reason, "facet": facet}),
+        Event::Stop {
+            reason,
+            code,
+            facet,
+        } => json!({"kind": "stop", "reason": reason, "code": code, "facet": facet}),
     }
 }

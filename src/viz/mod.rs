@@ -4,7 +4,7 @@
 //!   records: the initial simplex, each facet a strategy chose and why, each point added with the
 //!   facets removed and created, and the stop with the certificate that allowed it. Recording is
 //!   off unless asked for, and then costs nothing but one branch per hook (see
-//!   [`Hull::trace_choice`](crate::Hull::trace_choice)). [`Trace::replay`](crate::hull::Trace::replay) rebuilds the hull
+//!   [`StrategyHooks::trace_choice`](crate::hull::StrategyHooks::trace_choice)). [`Trace::replay`](crate::hull::Trace::replay) rebuilds the hull
 //!   after any event; [`trace_json`] serialises it.
 //! * [`html::trace_page`] — a self-contained HTML page (inline script, no network) drawing one
 //!   or two traces step by step on a canvas, with a step slider and, in 3-D, mouse rotation.

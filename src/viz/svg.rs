@@ -334,6 +334,7 @@ fn describe<const D: usize>(event: &Event<D>) -> String {
             vertices,
             reason,
             key,
+            ..
         } => {
             let key = key
                 .as_ref()

@@ -1,8 +1,8 @@
 //! Regression tests on inputs that once gave a wrong answer (`tests/data/`), each checked against
 //! an independent exact reference.
 
-use pqhull::{ClosestToOrigin, Hull};
 use crate::support::cases::{CYLINDER, read_points, reference, scale};
+use pqhull::{ClosestToOrigin, Hull};
 
 #[test]
 fn near_boundary_cylinder_6d() {

@@ -9,12 +9,11 @@
 //! with small pivots: −0.264 where the exact value is −0.140 on a cylinder grasp with torque
 //! scale 1e−8).
 
-
+use crate::support::min_norm::exact_min_norm_distance;
 use pqhull::geometry::Rng;
 use pqhull::grasp::quality::{Evaluator, Method, Metric};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
 use pqhull::mesh::{Mesh, SurfaceSampler};
-use crate::support::min_norm::exact_min_norm_distance;
 
 fn norm(w: &[f64; 6]) -> f64 {
     w.iter().map(|x| x * x).sum::<f64>().sqrt()

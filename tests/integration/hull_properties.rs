@@ -3,12 +3,11 @@
 //! `ClosestToOrigin` answer equals the full hull's answer (inside: nearest facet plane; outside:
 //! an independent minimum-norm-point computation).
 
-
+use crate::support::min_norm::min_norm_point;
+use crate::support::points_as_vecs;
 use pqhull::rbox::{self, Family};
 use pqhull::{ClosestToOrigin, Hull};
 use proptest::prelude::*;
-use crate::support::min_norm::min_norm_point;
-use crate::support::points_as_vecs;
 
 /// Cases per dimension; the default keeps the suite to a few minutes in release on 2 cores. Set
 /// PROPTEST_CASES to run more.

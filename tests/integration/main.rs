@@ -7,6 +7,7 @@ mod support;
 mod cases;
 mod custom_strategy;
 mod degenerate;
+mod docs_paths;
 mod ellipsoid;
 mod extreme_scales;
 mod far_query;

@@ -1,10 +1,9 @@
 //! Tests of the test-support reference `min_norm_point` (Wolfe's algorithm) against closed forms
 //! and against brute-force projection onto every face.
 
-
+use crate::support::{min_norm_point, points_as_vecs};
 use pqhull::geometry::Rng;
 use pqhull::rbox::{Family, generate};
-use crate::support::{min_norm_point, points_as_vecs};
 
 fn dist(a: &[f64], b: &[f64]) -> f64 {
     a.iter()

@@ -3,13 +3,12 @@
 //! checked against exact rational references (`tests/support/min_norm.rs`) that share no code
 //! with the engine.
 
-
+use crate::support::min_norm::{exact_distance_to_affine_hull, exact_min_norm_distance};
 use pqhull::geometry::Rng;
 use pqhull::predicates::Sign;
 use pqhull::rbox::{self, Family};
 use pqhull::{ClosestToOrigin, Hull};
 use proptest::prelude::*;
-use crate::support::min_norm::{exact_distance_to_affine_hull, exact_min_norm_distance};
 
 fn signed_distance<const D: usize>(points: &[[f64; D]], query: [f64; D]) -> f64 {
     let (partial, result) =

@@ -2,6 +2,7 @@
 //! point, not a panic (`ClosestToOrigin` used to `assert!` it).
 
 use pqhull::geometry::Support;
+use pqhull::hull::StrategyHooks;
 use pqhull::predicates::Sign;
 use pqhull::strategy::{DistanceResult, PointSource, SourceError};
 use pqhull::{ClosestToOrigin, FacetId, Hull};

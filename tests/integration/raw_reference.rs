@@ -28,15 +28,14 @@
 //! Run with `cargo test --release --features qhull --test raw_reference -- --nocapture`.
 #![cfg(feature = "qhull")]
 
-
-use pqhull::geometry::Rng;
-use pqhull::grasp::FrictionModel;
-use pqhull::grasp::quality::{Method, Metric};
 use crate::support::raw_reference::{
     FORCE_CLOSURE_EPSILON, Report, Shape, check_formula, check_ows, check_q1, check_qinf,
     cylinder_case, degenerate_grasps, evaluate, expected_verdict, hull_reference, minkowski_scale,
     near_boundary_family, note_references, random_disturbances, random_grasp, seed, union_scale,
 };
+use pqhull::geometry::Rng;
+use pqhull::grasp::FrictionModel;
+use pqhull::grasp::quality::{Method, Metric};
 
 /// Disturbances per task wrench space.
 const DISTURBANCES: usize = 50;

@@ -44,7 +44,7 @@ impl Pools {
                 message: "a pool needs at least one thread".to_string(),
             });
         }
-            let pools = sizes
+        let pools = sizes
             .iter()
             .map(|&n| {
                 rayon::ThreadPoolBuilder::new()
@@ -58,7 +58,7 @@ impl Pools {
             .collect::<Result<Vec<_>, _>>()?;
         Ok(Pools {
             sizes: sizes.to_vec(),
-                    pools,
+            pools,
         })
     }
 

@@ -80,7 +80,7 @@ pub enum Preset {
     #[default]
     Standard,
     /// Small sizes, for tests: a twentieth of the standard point counts (at least 60), smaller
-    /// grids.
+    /// grids, fewer cone edges.
     Quick,
 }
 

@@ -17,10 +17,10 @@ use super::{
 };
 use crate::bench::stats::{median, micros};
 use crate::bench::workloads::surface_grasps;
+use crate::object::{DEFAULT_OBJECT_NAME, default_object};
 use pqhull::grasp::FrictionModel;
 use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, relative_error};
 use pqhull::grasp::quality::Method;
-use crate::object::{DEFAULT_OBJECT_NAME, default_object};
 
 /// Contacts per grasp.
 pub const CONTACTS: usize = 4;

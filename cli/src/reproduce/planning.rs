@@ -9,11 +9,11 @@ use super::{
     Comparison, Figure, FigureId, PAPER_NOT_QUOTED, Progress, ReproduceError, Size, Table,
 };
 use crate::bench::stats::{median, micros};
+use crate::object::{DEFAULT_OBJECT_NAME, default_object};
 use pqhull::grasp::FrictionModel;
 use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
 use pqhull::grasp::quality::{Evaluator, Method, Metric};
 use pqhull::mesh::Mesh;
-use crate::object::{DEFAULT_OBJECT_NAME, default_object};
 use pqhull::plan::samples;
 
 /// Contacts per grasp.

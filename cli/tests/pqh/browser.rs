@@ -321,7 +321,8 @@ fn three_d_comparison_from_the_cli_loads_and_draws() {
     let right = [left + w + 14, top, w, h]; // the panels are laid out with a 14 px gap
     assert_drawn(&shot.region(right), "3-D comparison, right panel");
     if std::env::var("PQHULL_UPDATE_SCREENSHOTS").as_deref() == Ok("1") {
-        let target = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/..")).join("docs/images/trace-3d.png");
+        let target =
+            Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/..")).join("docs/images/trace-3d.png");
         std::fs::create_dir_all(target.parent().unwrap()).unwrap();
         std::fs::copy(&shot_file, &target).expect("update docs/images/trace-3d.png");
         eprintln!("updated {}", target.display());
@@ -454,7 +455,8 @@ fn planned_grasps_page_loads_draws_both_panels_and_rotates() {
         "planned grasps, another viewpoint",
     );
     if std::env::var("PQHULL_UPDATE_SCREENSHOTS").as_deref() == Ok("1") {
-        let target = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/..")).join("docs/images/plan-grasp.png");
+        let target = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
+            .join("docs/images/plan-grasp.png");
         std::fs::create_dir_all(target.parent().unwrap()).unwrap();
         std::fs::copy(&shot_file, &target).expect("update docs/images/plan-grasp.png");
         eprintln!("updated {}", target.display());

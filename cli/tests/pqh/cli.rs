@@ -1,6 +1,5 @@
 //! End-to-end tests of the `pqh` binary: documented output and error behaviour.
 
-
 use crate::support::run::{file, pqh};
 use serde_json::Value;
 use std::path::PathBuf;
@@ -707,7 +706,8 @@ fn hull_and_trace_share_strategy_names_and_the_query_flag() {
 
 #[test]
 fn the_sample_grasps_file_evaluates_by_every_metric() {
-    let path = PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/..")).join("data/grasps/sample.jsonl");
+    let path =
+        PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/..")).join("data/grasps/sample.jsonl");
     let path = path.to_str().unwrap();
     let lines = |args: &[&str]| -> Vec<Value> {
         let o = pqh(args, None);
@@ -745,7 +745,10 @@ fn the_sample_grasps_file_evaluates_by_every_metric() {
         "--metric",
         "ows",
         "--mesh",
-        &format!("{}/data/meshes/woody.obj", concat!(env!("CARGO_MANIFEST_DIR"), "/..")),
+        &format!(
+            "{}/data/meshes/woody.obj",
+            concat!(env!("CARGO_MANIFEST_DIR"), "/..")
+        ),
         path,
     ]);
     assert_eq!(ows.len(), 4);

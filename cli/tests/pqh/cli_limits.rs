@@ -3,7 +3,6 @@
 //! line, and exit statuses and messages follow docs/limits.md. Every input is built here; no test
 //! allocates more than a few megabytes or runs more than a moment.
 
-
 use crate::support::run::{file, pqh, temp};
 use pqhull::grasp::{MAX_CONE_EDGES, MAX_CONTACTS};
 use pqhull::plan::MAX_SAMPLES;

@@ -24,7 +24,10 @@ fn lines(stdout: &str) -> Vec<Value> {
         .collect()
 }
 
-const SAMPLE: &str = concat!(concat!(env!("CARGO_MANIFEST_DIR"), "/.."), "/data/grasps/sample.jsonl");
+const SAMPLE: &str = concat!(
+    concat!(env!("CARGO_MANIFEST_DIR"), "/.."),
+    "/data/grasps/sample.jsonl"
+);
 
 #[test]
 fn resist_equals_ows_with_that_single_disturbance() {

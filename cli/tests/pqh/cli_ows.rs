@@ -1,6 +1,5 @@
 //! End-to-end tests of `pqh grasp --metric ows` (the object wrench space metric).
 
-
 use crate::support::run::file;
 use serde_json::Value;
 use std::process::Output;

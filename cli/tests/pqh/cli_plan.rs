@@ -1,6 +1,5 @@
 //! End-to-end tests of `pqh plan` and `pqh demo` (the planner demo).
 
-
 use crate::support::run::temp;
 use serde_json::Value;
 use std::path::PathBuf;

@@ -13,16 +13,15 @@
 //! Run with `cargo test --release --features qhull --test cli_raw_reference -- --nocapture`.
 #![cfg(feature = "qhull")]
 
-
+use crate::support::library::raw_reference::{
+    FULL_QINF_LIMIT, HullReference, Report, Shape, check_formula, cylinder_case_path,
+    degenerate_grasps, grasp_from_json, grasp_to_json, hull_reference, judge, judge_ows,
+    near_boundary_family, note_references, ows_reference_for, qinf_reference, random_disturbances,
+    random_grasp, seed, union_scale,
+};
 use crate::support::run::file;
 use pqhull::geometry::Rng;
 use pqhull::grasp::{FrictionModel, Grasp};
-use crate::support::library::raw_reference::{
-    cylinder_case_path, FULL_QINF_LIMIT, HullReference, Report, Shape, check_formula, degenerate_grasps,
-    grasp_from_json, grasp_to_json, hull_reference, judge, judge_ows, near_boundary_family,
-    note_references, ows_reference_for, qinf_reference, random_disturbances, random_grasp, seed,
-    union_scale,
-};
 use serde_json::Value;
 use std::io::Read;
 use std::process::{Command, Stdio};

@@ -3,7 +3,6 @@
 //! and the document is exactly what serde_json prints for it (sorted keys, compact, shortest
 //! round-trip floats).
 
-
 use crate::support::run::{file, pqh};
 use pqhull::rbox::{Family, generate};
 use pqhull::{ClosestToOrigin, Hull};

@@ -12,13 +12,7 @@ fn near_boundary_cylinder_6d_cli() {
     let scale = scale(&points);
     let expected = reference(&points);
     let output = pqh(
-        &[
-            "hull",
-            "--strategy",
-            "closest-to-origin",
-            &path,
-            "--json",
-        ],
+        &["hull", "--strategy", "closest-to-origin", &path, "--json"],
         None,
     );
     assert!(

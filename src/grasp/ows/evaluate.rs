@@ -328,7 +328,8 @@ fn partial<S: crate::Strategy<6, Output = crate::strategy::OwsResult<6>>>(
 ) -> Result<Option<OwsQuality>, QualityError> {
     match HullBuffers::build(hull, wrenches, pyramids, strategy) {
         Ok((_, result)) => Ok(Some(OwsQuality {
-            force_closure: result.is_force_closure(),
+            // The strategy has a value exactly when the origin is strictly inside the hull.
+            force_closure: result.value.is_some(),
             value: result.value,
             deciding_disturbance: result.deciding_disturbance,
             stats: result.stats,

@@ -15,12 +15,7 @@ pub const BAR_FRICTION: f64 = 0.5;
 
 /// `count` seeded random grasps of `contacts` fingers on the seed paper's 1 × 0.4 × 0.2 bar,
 /// by the library's generator ([`Grasp::random_on_box`](Grasp::random_on_box)).
-pub fn bar_grasps(
-    seed: u64,
-    count: usize,
-    contacts: usize,
-    friction: FrictionModel,
-) -> Vec<Grasp> {
+pub fn bar_grasps(seed: u64, count: usize, contacts: usize, friction: FrictionModel) -> Vec<Grasp> {
     let mut rng = Rng::new(seed);
     (0..count)
         .map(|_| Grasp::random_on_box(&mut rng, BAR_HALF_EXTENTS, contacts, friction))
@@ -31,7 +26,12 @@ pub fn bar_grasps(
 /// cone edges.
 pub fn random_bar_grasp(rng: &mut Rng, m: usize, k: usize) -> Grasp {
     let mu = rng.uniform_in(0.2, 1.0);
-    Grasp::random_on_box(rng, BAR_HALF_EXTENTS, m, FrictionModel::try_new(mu, k).unwrap())
+    Grasp::random_on_box(
+        rng,
+        BAR_HALF_EXTENTS,
+        m,
+        FrictionModel::try_new(mu, k).unwrap(),
+    )
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -183,4 +183,3 @@ pub fn with_contact_moved(grasp: &Grasp, i: usize, v: [f64; 3], s: f64) -> Grasp
         .build()
         .expect("a valid grasp")
 }
-

@@ -3,7 +3,9 @@
 use crate::error::CliError;
 use clap::Args;
 use clap::builder::PossibleValuesParser;
-use pqhull_cli::bench::hull::{self, CaseRow, FAMILY_NAMES, HullBenchConfig, HullBenchReport, Preset};
+use pqhull_cli::bench::hull::{
+    self, CaseRow, FAMILY_NAMES, HullBenchConfig, HullBenchReport, Preset,
+};
 use std::io::Write;
 
 pub const LONG_ABOUT: &str = "\
@@ -29,7 +31,7 @@ pub struct HullArgs {
     #[arg(long, value_delimiter = ',', value_name = "D,...",
           value_parser = crate::limits::count(3, 6))]
     pub dimensions: Vec<usize>,
-    /// Small sizes: a twentieth of the standard point counts, smaller grids (what the tests run)
+    /// Small sizes: a twentieth of the point counts, smaller grids, fewer edges (what tests run)
     #[arg(long)]
     pub quick: bool,
     /// Timed runs of each call, the best reported, 1 to 1000

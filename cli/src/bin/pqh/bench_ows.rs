@@ -2,8 +2,8 @@
 
 use crate::error::CliError;
 use clap::Args;
-use pqhull_cli::bench::ows::{self, OwsBenchError, OwsConfig, OwsReport};
 use pqhull::grasp::FrictionModel;
+use pqhull_cli::bench::ows::{self, OwsBenchError, OwsConfig, OwsReport};
 use std::io::Write;
 use std::path::PathBuf;
 

@@ -8,15 +8,15 @@ use std::io::Write;
 
 /// The long help of `pqh compare`.
 pub const LONG_ABOUT: &str = "\
-Shows what pqhull is for, on built-in seeded point sets (no input needed): the distance from the
-origin to the hull boundary (the Ferrari-Canny metric when the points are contact wrenches),
-from the full hull (FarthestPoint) and from a partial hull grown toward the origin
-(ClosestToOrigin), with their difference and the work each did: points added, facets created,
-time, and the ratios full / partial. Point sets: 'sphere' (uniform on the radius-0.5 sphere:
-every point a hull vertex), 'cube' (uniform in [-0.5, 0.5)^D) and, in 6-D only, 'wrenches' (32
-wrenches: 4 random contacts on the unit box, 8 cone edges each, mu = 0.5). Answers more than
-1e-9 apart are still printed, then pqh exits with status 1. Times are meaningful only in a
-release build.
+Shows what pqhull is for, on built-in seeded point sets (no input needed): computes the distance
+from the origin to the hull boundary (the Ferrari-Canny metric when the points are contact
+wrenches) from the full hull (FarthestPoint) and from a partial hull grown toward the origin
+(ClosestToOrigin), and prints both, their difference and the work each did: points added, facets
+created, time, and the ratios full / partial. Point sets: 'sphere' (uniform on the radius-0.5
+sphere: every point a hull vertex), 'cube' (uniform in [-0.5, 0.5)^D) and, in 6-D only,
+'wrenches' (32 wrenches: 4 random contacts on the unit box, 8 cone edges each, mu = 0.5).
+Answers more than 1e-9 apart are still printed, then pqh exits with status 1. Times are
+meaningful only in a release build.
 
 Measured ratios: docs/benchmarks.md, \"Distance from the origin\"; limits: docs/limits.md.";
 

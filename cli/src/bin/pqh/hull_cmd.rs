@@ -5,9 +5,9 @@ use crate::error::CliError;
 use crate::format::number;
 use crate::input::{Source, parse_point};
 use clap::{Args, ValueEnum};
-use pqhull_cli::points_file::PointTable;
 use pqhull::strategy::DistanceResult;
 use pqhull::{ClosestToOrigin, FacetId, Hull, HullError, Stats};
+use pqhull_cli::points_file::PointTable;
 use std::io::Write;
 use std::path::PathBuf;
 

@@ -23,8 +23,8 @@ pub const MAX_BENCH_GRASPS: usize = 100_000;
 /// [`MAX_REPEATS`](pqhull_cli::bench::hull::MAX_REPEATS)).
 ///
 /// Why: the best of a few runs is what the suite reports; a thousand runs is a thousand times
-/// the suite's work (cases of up to about 100,000 points; their times in docs/benchmarks.md), far more
-/// than a stable best needs.
+/// the suite's work (cases of up to about 100,000 points; their times in docs/benchmarks.md),
+/// far more than a stable best needs.
 pub const MAX_BENCH_REPEATS: usize = pqhull_cli::bench::hull::MAX_REPEATS;
 
 /// The most Minkowski points per grasp (`Grasp::minkowski_points`) that Q∞ by a full method

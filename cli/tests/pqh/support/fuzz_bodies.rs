@@ -15,9 +15,9 @@ use pqhull::grasp::ows::ObjectWrenchSpace;
 use pqhull::grasp::quality::{Evaluator, Method, Metric};
 use pqhull::grasp::{FrictionModel, Grasp, MAX_CONE_EDGES, MAX_CONTACTS, MIN_CONE_EDGES};
 use pqhull::mesh::Mesh;
-use pqhull_cli::points_file::parse_points;
 use pqhull::predicates::Sign;
 use pqhull::{ClosestToOrigin, FarthestPoint, Hull, HullError};
+use pqhull_cli::points_file::parse_points;
 
 /// The fuzz targets, by name: the name of the target, of its `fuzz/regressions/` directory and
 /// of the body below.
