@@ -228,7 +228,7 @@ pub fn qhull_full_hull<const D: usize>(points: &[[f64; D]]) -> Result<QhullHull,
 ///   lies beyond any facet *plane*. This is the facet-plane convention Qhull users apply, **not**
 ///   the Euclidean distance from the origin to the hull: its magnitude can be smaller than the
 ///   true distance (when the foot of the perpendicular falls outside that facet). pqhull's
-///   [`ClosestToOrigin`](crate::ClosestToOrigin) returns the true Euclidean distance instead.
+///   `ClosestToOrigin` strategy returns the true Euclidean distance instead.
 /// * **Origin on the boundary:** 0 up to rounding (Qhull is not exact).
 ///
 /// # Errors
