@@ -125,9 +125,34 @@ fn partial_hull(c: &mut Criterion) {
     partial::<6>(c, Family::UniformCube, 2_000);
 }
 
+/// Incremental hulls: 1 % more points added to a built hull (`Hull::add_points`) against the
+/// hull of all the points built afresh, side by side.
+fn incremental_hull(c: &mut Criterion) {
+    fn grow<const D: usize>(c: &mut Criterion, family: Family, n: usize) {
+        let points = generate::<D>(&family, n + n / 100, SEED);
+        let (old, new) = points.split_at(n);
+        let built = Hull::try_new(old).expect("general-position input");
+        let mut group = c.benchmark_group(format!("incremental/{family}-{D}d-{n}+1%"));
+        group.bench_function("add_points", |b| {
+            b.iter_batched(
+                || built.clone(),
+                |mut hull| hull.add_points(new).expect("finite points"),
+                criterion::BatchSize::LargeInput,
+            )
+        });
+        group.bench_function("rebuild", |b| {
+            b.iter(|| Hull::try_new(&points).expect("general-position input"))
+        });
+        group.finish();
+    }
+    grow::<3>(c, Family::UniformCube, 100_000);
+    grow::<3>(c, Family::SphereSurface, 20_000);
+    grow::<5>(c, Family::UniformCube, 5_000);
+}
+
 criterion_group! {
     name = benches;
     config = configure();
-    targets = full_hull, suite_hull, partial_hull
+    targets = full_hull, suite_hull, partial_hull, incremental_hull
 }
 criterion_main!(benches);

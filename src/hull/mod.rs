@@ -24,6 +24,7 @@ mod expand;
 mod facet;
 mod farthest_point;
 mod hooks;
+mod incremental;
 mod planes;
 mod record;
 mod strategy;

@@ -1,4 +1,4 @@
-//! The volume of a hull, in the caller's units, without underflow or NaN.
+//! The volume and the surface area of a hull, in the caller's units.
 
 use super::Hull;
 use crate::predicates::{FacetPlane, times_power_of_two};
@@ -41,6 +41,55 @@ impl<const D: usize> Hull<D> {
             return self.volume_by_axis_scaled_determinants();
         }
         self.to_caller_volume(sum, 0)
+    }
+
+    /// The area of the current hull's boundary (its facets' (D − 1)-dimensional volumes
+    /// summed), in the caller's units: the perimeter in 2-D, as scipy's `ConvexHull.area`.
+    ///
+    /// Each facet's measure is the product of the lengths its edges from one vertex keep once
+    /// made orthogonal (Gram–Schmidt, twice, in the hull's scaled coordinates), over (D − 1)!:
+    /// accurate to a few ulps per facet, thin facets included (a Gram determinant would square
+    /// their condition). Floating point, like the volume; `+∞` beyond `f64::MAX`.
+    ///
+    /// ```
+    /// use pqhull::Hull;
+    /// let cube: Vec<[f64; 3]> = (0..8)
+    ///     .map(|i| [(i & 1) as f64, (i >> 1 & 1) as f64, (i >> 2 & 1) as f64])
+    ///     .collect();
+    /// assert!((Hull::try_new(&cube)?.area() - 6.0).abs() < 1e-14);
+    /// let triangle = [[0.0, 0.0], [3.0, 0.0], [0.0, 4.0]];
+    /// assert!((Hull::try_new(&triangle)?.area() - 12.0).abs() < 1e-14);
+    /// # Ok::<(), pqhull::HullError>(())
+    /// ```
+    pub fn area(&self) -> f64 {
+        let mut sum = 0.0;
+        for (_, facet) in self.facets() {
+            let vertices = facet.vertices();
+            let origin = self.points[vertices[0]];
+            // The orthonormalised directions so far, and the product of the residuals' lengths.
+            let mut basis = [[0.0; D]; D];
+            let mut measure = 1.0;
+            for (k, &v) in vertices[1..].iter().enumerate() {
+                let mut r: [f64; D] = std::array::from_fn(|a| self.points[v][a] - origin[a]);
+                for _ in 0..2 {
+                    for b in &basis[..k] {
+                        let c: f64 = r.iter().zip(b).map(|(x, y)| x * y).sum();
+                        for (x, y) in r.iter_mut().zip(b) {
+                            *x -= c * y;
+                        }
+                    }
+                }
+                let length = r.iter().map(|x| x * x).sum::<f64>().sqrt();
+                measure *= length;
+                if length > 0.0 {
+                    basis[k] = r.map(|x| x / length);
+                }
+            }
+            sum += measure;
+        }
+        let factorial: f64 = (1..D).map(|k| k as f64).product();
+        let s = self.scale.log2().round() as i32;
+        times_power_of_two(sum / factorial, -(D as i32 - 1) * s)
     }
 
     /// `sum` (D! times a volume in internal coordinates, further multiplied by `2^extra`) in

@@ -15,6 +15,7 @@ mod full_method_exact;
 mod grasp_quality;
 mod hull_known;
 mod hull_properties;
+mod incremental;
 mod layers;
 mod mesh;
 mod metrics;
