@@ -19,6 +19,7 @@ use criterion::{Criterion, criterion_group, criterion_main};
 use pqhull::grasp::FrictionModel;
 use pqhull::grasp::quality::q1;
 use pqhull::rbox::{Family, generate};
+use pqhull::strategy::distances_to_boundary;
 use pqhull::{ClosestToOrigin, FarthestPoint, Hull};
 use pqhull_cli::bench::hull::grid;
 use pqhull_cli::bench::workloads::{BAR_FRICTION, bar_grasps};
@@ -150,9 +151,48 @@ fn incremental_hull(c: &mut Criterion) {
     grow::<5>(c, Family::UniformCube, 5_000);
 }
 
+/// Many distance queries against one point set: one partial hull shared by every query
+/// (`strategy::distances_to_boundary`), a partial hull per query, and the full hull built once
+/// and then asked every query.
+fn many_queries(c: &mut Criterion) {
+    fn queries<const D: usize>(c: &mut Criterion, family: Family, n: usize, count: usize) {
+        let points = generate::<D>(&family, n, SEED);
+        let queries = generate::<D>(&Family::UniformCube, count, SEED + 1);
+        let mut group = c.benchmark_group(format!("queries/{family}-{D}d-{n}/{count}"));
+        group.bench_function("one shared partial hull", |b| {
+            b.iter(|| distances_to_boundary(&points, &queries).expect("valid input"))
+        });
+        group.bench_function("a partial hull per query", |b| {
+            b.iter(|| {
+                for &q in &queries {
+                    black_box(
+                        Hull::try_with_strategy(&points, ClosestToOrigin::towards(q))
+                            .expect("valid input"),
+                    );
+                }
+            })
+        });
+        group.bench_function("full hull, then every query", |b| {
+            b.iter(|| {
+                let mut hull = Hull::try_new(&points).expect("valid input");
+                for &q in &queries {
+                    black_box(
+                        hull.resume_with_strategy(ClosestToOrigin::towards(q))
+                            .expect("a hull"),
+                    );
+                }
+            })
+        });
+        group.finish();
+    }
+    queries::<3>(c, Family::UniformCube, 20_000, 500);
+    queries::<5>(c, Family::UniformCube, 2_000, 500);
+    queries::<6>(c, Family::SphereSurface, 1_000, 100);
+}
+
 criterion_group! {
     name = benches;
     config = configure();
-    targets = full_hull, suite_hull, partial_hull, incremental_hull
+    targets = full_hull, suite_hull, partial_hull, incremental_hull, many_queries
 }
 criterion_main!(benches);

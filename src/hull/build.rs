@@ -506,7 +506,9 @@ fn point_hash<const D: usize>(p: &[f64; D]) -> u64 {
     })
 }
 
-pub(in crate::hull) fn first_non_finite<const D: usize>(points: &[[f64; D]]) -> Option<(usize, usize)> {
+pub(in crate::hull) fn first_non_finite<const D: usize>(
+    points: &[[f64; D]],
+) -> Option<(usize, usize)> {
     points
         .iter()
         .enumerate()

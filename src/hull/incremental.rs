@@ -114,6 +114,35 @@ impl<const D: usize> Hull<D> {
         Ok((old..total, self.run_in_place(strategy)))
     }
 
+    /// Lets `strategy` expand this hull from its current state, as if the hull were the one it
+    /// had built so far: a partial hull left by one query grows further for another, and a full
+    /// hull answers at once. `ClosestToOrigin` resumed on any hull of the points (partial or
+    /// full) gives the distance it gives from scratch.
+    ///
+    /// ```
+    /// use pqhull::{ClosestToOrigin, Hull};
+    /// let points = pqhull::rbox::generate::<3>(&pqhull::rbox::Family::UniformCube, 500, 1);
+    /// let (mut hull, first) = Hull::try_with_strategy(&points, ClosestToOrigin::new())?;
+    /// let grown = hull.stats().points_processed;
+    /// let second = hull.resume_with_strategy(ClosestToOrigin::towards([0.45, 0.0, 0.0]))?;
+    /// let (_, fresh) = Hull::try_with_strategy(&points, ClosestToOrigin::towards([0.45, 0.0, 0.0]))?;
+    /// assert_eq!(second.signed_distance, fresh.signed_distance);
+    /// assert!(hull.stats().points_processed >= grown); // the hull only grows
+    /// # let _ = first;
+    /// # Ok::<(), pqhull::HullError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// Only for a hull with no facets ([`Hull::empty`], or a failed rebuild): what
+    /// [`Hull::try_new`] gives for its points.
+    pub fn resume_with_strategy<S: Strategy<D>>(
+        &mut self,
+        strategy: S,
+    ) -> Result<S::Output, HullError> {
+        self.add_points_with_strategy(&[], strategy)
+            .map(|(_, output)| output)
+    }
+
     /// Whether `p` (caller's units) scales exactly into the range the hull's arithmetic works
     /// in: every coordinate within ±1 once scaled, and none rounded by the scaling.
     fn fits(&self, p: &[f64; D]) -> bool {

@@ -47,6 +47,7 @@
 mod closest_to_origin;
 mod complete;
 mod ows_inflation;
+mod queries;
 mod reasons;
 
 pub use crate::hull::{FarthestPoint, ReusableStrategy, Stats, Step, Strategy};
@@ -54,6 +55,7 @@ pub use closest_to_origin::{ClosestToOrigin, DistanceResult, NoSource, PointSour
 pub use complete::Complete;
 pub use ows_inflation::{OwsInflation, OwsResult, inflation_factor};
 pub use ows_inflation::{exact_factor, factor_lower_bound};
+pub use queries::{BoundaryDistances, QueryError, distances_to_boundary};
 pub use reasons::{InflationReason, NearestReason};
 
 /// A facet waiting in a strategy's priority queue (`BinaryHeap`, a max-heap): the largest `key`

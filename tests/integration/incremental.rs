@@ -39,7 +39,8 @@ fn grow_in_chunks<const D: usize>(
         let end = (at + chunk).min(points.len());
         let added = hull.add_points(&points[at..end]).expect("finite points");
         assert_eq!(added, at..end, "{what}");
-        hull.check().unwrap_or_else(|e| panic!("{what}, after {end}: {e}"));
+        hull.check()
+            .unwrap_or_else(|e| panic!("{what}, after {end}: {e}"));
         at = end;
     }
     assert_eq!(hull.point_count(), points.len(), "{what}");
@@ -50,14 +51,21 @@ fn grow_in_chunks<const D: usize>(
         assert_eq!(facets(&hull), facets(&full), "{what}: facets");
     }
     let (volume, area) = (full.volume(), full.area());
-    assert!((hull.volume() - volume).abs() <= 1e-12 * volume, "{what}: volume");
+    assert!(
+        (hull.volume() - volume).abs() <= 1e-12 * volume,
+        "{what}: volume"
+    );
     assert!((hull.area() - area).abs() <= 1e-12 * area, "{what}: area");
     #[cfg(not(feature = "qhull"))]
     let _ = general;
     #[cfg(feature = "qhull")]
     if general && D <= 6 {
         let qhull = pqhull::qhull_baseline::qhull_full_hull(points).expect("Qhull");
-        assert_eq!(hull.vertex_indices(), qhull.vertices, "{what}: Qhull's vertices");
+        assert_eq!(
+            hull.vertex_indices(),
+            qhull.vertices,
+            "{what}: Qhull's vertices"
+        );
     }
 }
 
@@ -142,9 +150,7 @@ fn far_points_are_added_exactly() {
 fn a_non_finite_point_is_an_error_and_leaves_the_hull() {
     let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
     let mut hull = Hull::try_new(&square).unwrap();
-    let error = hull
-        .add_points(&[[3.0, 3.0], [0.5, f64::NAN]])
-        .unwrap_err();
+    let error = hull.add_points(&[[3.0, 3.0], [0.5, f64::NAN]]).unwrap_err();
     assert_eq!(
         error,
         HullError::NonFinite {

@@ -26,6 +26,7 @@ mod ows_eq6;
 mod plan_metrics;
 mod point_source;
 mod qhull_crosscheck;
+mod queries;
 mod raw_reference;
 mod soft;
 mod trace;
