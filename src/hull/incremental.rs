@@ -34,7 +34,7 @@ impl<const D: usize> Hull<D> {
     /// assert_eq!(hull.vertex_indices(), vec![0, 1, 2, 3, 5]);
     /// assert!((hull.volume() - 1.25).abs() < 1e-15);
     /// hull.check()?;
-    /// # Ok::<(), pqhull::HullError>(())
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     ///
     /// # Errors
@@ -49,7 +49,7 @@ impl<const D: usize> Hull<D> {
 
     /// As [`add_points`](Self::add_points), then lets `strategy` expand the hull from its
     /// current state (instead of [`FarthestPoint`]): a partial strategy resumes its search with
-    /// the new points in play. [`ClosestToOrigin`](crate::strategy::ClosestToOrigin) on a
+    /// the new points in play. `ClosestToOrigin` on a
     /// partial hull grown by new points gives the distance it gives on all the points.
     ///
     /// ```
@@ -62,7 +62,7 @@ impl<const D: usize> Hull<D> {
     /// let (_, after) = hull.add_points_with_strategy(&wide, ClosestToOrigin::new())?;
     /// assert!((after.signed_distance - 2.0).abs() < 1e-15);
     /// hull.check()?;
-    /// # Ok::<(), pqhull::HullError>(())
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     ///
     /// # Errors
