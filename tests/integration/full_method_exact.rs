@@ -1,9 +1,12 @@
-//! Every method exact on grasps that are not force closure (issue 25): Q1 and Q∞ by the partial
-//! and the full method against an exact rational reference on the caller's own wrenches —
-//! Wolfe's minimum-norm-point algorithm in rationals (`support/min_norm.rs`), written for the
-//! tests and knowing nothing of hulls — with torque scales from 1e−8 to 1e8 and positions scaled
-//! by 1e−6 to 1e6. The contract: the value within 1e−12 relative, or 1e−14 of the scale, of
-//! −(the exact distance from the origin to the hull), and never force closure.
+//! Every method exact on the caller's own wrenches (issue 25), with torque scales from 1e−8 to
+//! 1e8 and positions scaled by 1e−6 to 1e6:
+//! - Q1 and Q∞ by the partial and the full method on grasps that are not force closure, against
+//!   Wolfe's minimum-norm-point algorithm in rationals (`support/min_norm.rs`, written for the
+//!   tests and knowing nothing of hulls): the value within 1e−12 relative, or 1e−14 of the
+//!   scale, of −(the exact distance from the origin to the hull), and never force closure;
+//! - Q_OWS by the partial, the ray-assignment and the full (brute-force) method, force closure
+//!   or not, against an exact integer simplex per disturbance (`support/exact_lp.rs`): the
+//!   verdict exact, the value within 1e−12 relative.
 //!
 //! The full method used to fail here (an outside distance from projections that dropped faces
 //! with small pivots: −0.264 where the exact value is −0.140 on a cylinder grasp with torque
@@ -231,4 +234,88 @@ fn subnormal_torques_are_evaluated_exactly() {
         failures.extend(judge(&grasp, qinf, sum_distance, sum_scale, "subnormal"));
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// Q_OWS by every exact method (the partial hull, the published ray assignment, the full hull's
+/// brute force) against an exact reference on the caller's wrenches: for each disturbance `d`
+/// the largest `r` with `−r·d` in their hull, by an exact integer simplex
+/// (`support/exact_lp.rs`), the least of them; force closure exactly when every one is positive.
+/// Torque scales 1e−8 to 1e8, positions × 1e−6 to 1e6; the value within 1e−12 relative.
+#[test]
+fn q_ows_of_every_method_is_exact_at_every_scale() {
+    use crate::support::exact_lp::{IntegerPoints, exact_ray_exit};
+    use crate::support::grasps::random_disturbances;
+    use num_traits::ToPrimitive;
+    use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
+
+    let mut rng = Rng::new(2026);
+    let mut failures = Vec::new();
+    let (mut checked, mut closures) = (0, 0);
+    for (g, base) in base_grasps(12).iter().enumerate() {
+        for (factor, rho) in [
+            (1.0, 1e-8),
+            (1.0, 1.0),
+            (1.0, 1e8),
+            (1e-6, 1e-6),
+            (1e6, 1e6),
+        ] {
+            let grasp = reframed(base, factor, rho);
+            let w = grasp.wrenches();
+            let disturbances = random_disturbances(&mut rng, 6);
+            let space = ObjectWrenchSpace::from_disturbances(disturbances.clone())
+                .expect("valid disturbances");
+            let integers = IntegerPoints::new(&[&w, &disturbances]);
+            let exits: Vec<_> = integers.sets[1]
+                .iter()
+                .map(|d| exact_ray_exit(&integers.sets[0], d))
+                .collect();
+            // Strictly inside: every ray leaves at a positive distance.
+            let exact = exits
+                .iter()
+                .map(|r| r.as_ref().filter(|r| num_traits::Signed::is_positive(*r)))
+                .collect::<Option<Vec<_>>>()
+                .map(|r| {
+                    r.into_iter()
+                        .min()
+                        .expect("disturbances")
+                        .to_f64()
+                        .expect("finite")
+                });
+            closures += usize::from(exact.is_some());
+            let case = format!("grasp {g}, positions × {factor:e}, torque scale {rho:e}");
+            for method in [Method::Partial, Method::PartialRays, Method::Full] {
+                checked += 1;
+                let q = match OwsEvaluator::new(method).evaluate(&grasp, &space) {
+                    Ok(q) => q,
+                    Err(e) => {
+                        failures.push(format!("{case} {method:?}: error {e}"));
+                        continue;
+                    }
+                };
+                let right = match (q.value, exact) {
+                    (None, None) => !q.force_closure,
+                    (Some(got), Some(want)) => {
+                        q.force_closure && (got - want).abs() <= 1e-12 * want
+                    }
+                    _ => false,
+                };
+                if !right {
+                    failures.push(format!(
+                        "{case} {method:?}: {:?} (force closure {}), exact {exact:?}",
+                        q.value, q.force_closure
+                    ));
+                }
+            }
+        }
+    }
+    assert!(
+        checked >= 150 && closures >= 10,
+        "{checked} evaluations, {closures} closures"
+    );
+    assert!(
+        failures.is_empty(),
+        "{} of {checked}:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
 }

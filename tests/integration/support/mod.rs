@@ -5,6 +5,7 @@
 #![allow(dead_code)]
 
 pub mod cases;
+pub mod exact_lp;
 pub mod grasps;
 pub mod min_norm;
 #[cfg(feature = "qhull")]
