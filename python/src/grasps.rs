@@ -453,8 +453,8 @@ pub fn evaluate(
     // A scorer that cannot be made (a zero wrench to resist) is refused before any work.
     Scorer::new(metric, method, space).map_err(crate::metrics::error)?;
     let frame = frame(cone_edges, torque_reference, torque_scale)?;
-    if threads == Some(0) || threads.is_some_and(|t| t > 256) {
-        return Err(errors::input("threads must be from 1 to 256"));
+    if let Some(t) = threads {
+        pqhull::grasp::check_threads(t).map_err(|e| errors::input(format!("threads: {e}")))?;
     }
     let (p, nrm) = (positions.as_array(), normals.as_array());
     let t = tangents.as_ref().map(|t| t.as_array());
@@ -518,14 +518,7 @@ pub fn evaluate(
     };
     let started = std::time::Instant::now();
     let results = py.detach(|| -> Result<_, String> {
-        match threads {
-            None => Ok(run()),
-            Some(k) => rayon::ThreadPoolBuilder::new()
-                .num_threads(k)
-                .build()
-                .map(|pool| pool.install(run))
-                .map_err(|e| e.to_string()),
-        }
+        pqhull::grasp::with_threads(threads, run).map_err(|e| e.to_string())
     });
     let evaluation_s = started.elapsed().as_secs_f64();
     let results = results.map_err(errors::input)?;

@@ -68,11 +68,15 @@ pub mod ows;
 pub mod quality;
 mod random;
 mod snap;
+mod threads;
 mod wrench;
 
 pub use contact::{Contact, TANGENT_PARALLEL_TOLERANCE};
 pub use error::GraspError;
 pub use friction::{FrictionModel, MAX_CONE_EDGES, MIN_CONE_EDGES};
+#[cfg(feature = "parallel")]
+pub use threads::thread_pool;
+pub use threads::{MAX_THREADS, ThreadsError, check_threads, with_threads};
 
 use crate::geometry::vector::is_finite;
 

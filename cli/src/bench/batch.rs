@@ -1,30 +1,15 @@
 //! Batch throughput: [`evaluate_batch`] of one grasp set inside thread pools of several sizes.
 //!
-//! With the `parallel` feature each size gets its own rayon pool; without it only a pool of one
-//! thread (this one) can be measured.
+//! Each size gets its own pool, started by the library's thread policy
+//! ([`pqhull::grasp::thread_pool`]: 1 to [`MAX_THREADS`](pqhull::grasp::MAX_THREADS) threads).
 
 use super::stats::{median_of, min_or_infinity};
-use pqhull::grasp::Grasp;
 use pqhull::grasp::quality::{Method, Metric, Quality, evaluate_batch};
-use std::fmt;
+use pqhull::grasp::{Grasp, ThreadsError, thread_pool};
 use std::time::Instant;
 
-/// A pool of the requested size could not be started.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct PoolError {
-    /// The size asked for.
-    pub threads: usize,
-    /// Why it failed.
-    pub message: String,
-}
-
-impl fmt::Display for PoolError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "cannot start {} threads: {}", self.threads, self.message)
-    }
-}
-
-impl std::error::Error for PoolError {}
+/// A pool of the requested size could not be had: the library's [`ThreadsError`].
+pub type PoolError = ThreadsError;
 
 /// Thread pools of the given sizes, started once and reused by every measurement.
 pub struct Pools {
@@ -36,25 +21,12 @@ impl Pools {
     /// One pool per size, in order.
     ///
     /// # Errors
-    /// [`PoolError`] for a size of 0, or a pool the system cannot start.
+    /// [`PoolError`] for a size out of range (0, or above the library's `MAX_THREADS`), or a
+    /// pool the system cannot start.
     pub fn new(sizes: &[usize]) -> Result<Pools, PoolError> {
-        if let Some(&threads) = sizes.iter().find(|&&n| n == 0) {
-            return Err(PoolError {
-                threads,
-                message: "a pool needs at least one thread".to_string(),
-            });
-        }
         let pools = sizes
             .iter()
-            .map(|&n| {
-                rayon::ThreadPoolBuilder::new()
-                    .num_threads(n)
-                    .build()
-                    .map_err(|e| PoolError {
-                        threads: n,
-                        message: e.to_string(),
-                    })
-            })
+            .map(|&n| thread_pool(n))
             .collect::<Result<Vec<_>, _>>()?;
         Ok(Pools {
             sizes: sizes.to_vec(),

@@ -6,6 +6,7 @@ use crate::limits::{FULL_QINF_POINTS, MAX_THREADS};
 use crate::methods::{MethodArg, MetricArg, method_for};
 use clap::Args;
 use pqhull::Stats;
+use pqhull::grasp::ThreadsError;
 use pqhull::grasp::json::{error_line, parse_grasp, quality_line, split_grasps};
 use pqhull::grasp::metrics::{ConeBracket, Score, Scorer, cone_bracket};
 use pqhull::grasp::ows::ObjectWrenchSpace;
@@ -162,22 +163,18 @@ fn evaluate_lines<E, T: Send, Er: std::fmt::Display + Send>(
         .collect())
 }
 
-/// Runs `work` on `threads` workers (default: rayon's global pool, all cores).
+/// Runs `work` on `threads` workers (default: rayon's global pool, all cores), by the
+/// library's thread policy.
 pub fn with_threads<T: Send>(
     threads: Option<usize>,
     work: impl FnOnce() -> T + Send,
 ) -> Result<T, CliError> {
-    match threads {
-        Some(n) if !(1..=MAX_THREADS).contains(&n) => Err(CliError::Usage(format!(
-            "--threads: {n} is not in 1..={MAX_THREADS}"
-        ))),
-        Some(n) => Ok(rayon::ThreadPoolBuilder::new()
-            .num_threads(n)
-            .build()
-            .map_err(|e| CliError::Usage(format!("cannot start {n} threads: {e}")))?
-            .install(work)),
-        None => Ok(work()),
-    }
+    pqhull::grasp::with_threads(threads, work).map_err(|e| match e {
+        ThreadsError::OutOfRange { threads } => {
+            CliError::Usage(format!("--threads: {threads} is not in 1..={MAX_THREADS}"))
+        }
+        e => CliError::Usage(e.to_string()),
+    })
 }
 
 /// The object wrench space for `--metric ows`, from `--mesh` or `--disturbances`; `friction` is

@@ -6,12 +6,9 @@
 pub use pqhull::grasp::{MAX_CONE_EDGES, MAX_CONTACTS, MIN_CONE_EDGES};
 pub use pqhull::plan::MAX_SAMPLES;
 
-/// The most worker threads `--threads` starts (`pqh grasp`, each pool of `pqh bench gws`).
-///
-/// Why: a worker per core is all the work can use (the default is one per available core); 256 is
-/// more cores than the machines this runs on have, and every thread costs a stack. Without a bound,
-/// `--threads 10000` started 10,000 OS threads.
-pub const MAX_THREADS: usize = 256;
+/// The most worker threads `--threads` starts (`pqh grasp`, each pool of `pqh bench gws`): the
+/// library's one thread policy (see [`pqhull::grasp::MAX_THREADS`] for why).
+pub use pqhull::grasp::MAX_THREADS;
 
 /// The most random grasps `pqh bench gws|ows --grasps` generates.
 ///
