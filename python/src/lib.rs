@@ -2,14 +2,18 @@
 //!
 //! Arrays come in as numpy `float64` arrays (read in place, no copy of the caller's data beyond
 //! the one into the hull's own scaled storage) and go out as new numpy arrays. Every error is a
-//! `pqhull.Error` subclass carrying the library's message; batch evaluation reports a bad row as
-//! NaN plus an error entry and keeps the other rows. Long computations release the GIL.
+//! `pqhull.Error` subclass carrying the library's message (but `ConvexHull.add_points` on a
+//! hull that is not incremental, or closed, raises scipy's `RuntimeError`); batch evaluation
+//! reports a bad row as NaN plus an error entry and keeps the other rows. Long computations
+//! release the GIL.
 
+mod convex_hull;
 mod errors;
 mod grasps;
 mod hull;
 mod metrics;
 mod ows;
+mod qhull_options;
 
 use pyo3::prelude::*;
 
@@ -17,7 +21,7 @@ use pyo3::prelude::*;
 #[pymodule]
 fn _pqhull(m: &Bound<'_, PyModule>) -> PyResult<()> {
     errors::register(m)?;
-    m.add_class::<hull::ConvexHull>()?;
+    m.add_class::<convex_hull::ConvexHull>()?;
     m.add_class::<hull::Distance>()?;
     m.add_class::<grasps::Quality>()?;
     m.add_class::<grasps::Batch>()?;

@@ -4,10 +4,100 @@ metrics they make fast (Liu & Carpin's PQHGWS), with numpy arrays in and out.
 >>> import numpy as np, pqhull
 >>> square = np.array([[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0], [0.2, 0.1]])
 >>> hull = pqhull.ConvexHull(square)
->>> hull.volume
-4.0
+>>> hull.volume, hull.area
+(4.0, 8.0)
 >>> pqhull.distance_to_boundary(square, [0.5, 0.0]).signed_distance
 0.5
+
+ConvexHull, a drop-in for scipy.spatial.ConvexHull
+--------------------------------------------------
+
+``pqhull.ConvexHull(points, incremental=False, qhull_options=None)`` takes scipy's arguments
+and has its attributes: ``points``, ``vertices`` (counter-clockwise in 2-D, increasing
+otherwise), ``simplices``, ``neighbors``, ``equations`` (``normal . x + offset <= 0`` inside),
+``coplanar``, ``good``, ``area`` (the perimeter in 2-D), ``volume``, ``ndim``, ``npoints``,
+``nsimplex``, ``min_bound`` and ``max_bound``, indices as ``np.intc``; and two of its own,
+``points_processed`` and ``facets_created`` (the engine's work counters). With
+``incremental=True``, ``add_points(points, restart=False)`` grows the hull to the exact hull of
+all the points (``restart=True`` rebuilds from all of them: the same hull), and ``close()``
+ends that: ``add_points`` then raises ``RuntimeError("incremental mode not enabled or already
+closed")``, as on a hull that is not incremental, both as in scipy. Each attribute is one numpy
+array, the same object at every access, remade by ``add_points``.
+
+Facets are listed by their vertex indices taken largest first, compared lexicographically: the
+order in which inserting the points one at a time, in input order, creates them, which is what
+Qhull's ``add_points`` does. So after ``add_points`` the facets that survive keep their order
+and the new ones follow, as in scipy, and the order does not depend on how the hull was reached
+(at once, grown, rebuilt or unpickled). Each row of ``simplices`` lists its vertices largest
+first as far as the facet's orientation allows (the last two swapped when needed).
+
+``qhull_options`` (Qhull's options, separated by spaces; several after one ``Q`` as Qhull reads
+them, e.g. ``Qci``):
+
+* accepted with no effect, as they only tune how Qhull copes with its rounding and the hull is
+  exact: ``Qt`` (always on in scipy too), ``Qbb``, ``Qx``, ``Qs``, ``Qv``, ``Qw``, ``Qf``,
+  ``Qm``, ``Qr``, ``Qa``, ``QJ`` / ``QJn``, ``Q0`` to ``Q12`` and ``Q14``, ``Pp``, ``Po``,
+  ``Tv``, ``Tc``, ``FA``, and the precision thresholds ``C-n``, ``Cn``, ``A-n``, ``An``, ``En``,
+  ``Rn``, ``Un``, ``Vn``, ``Wn``;
+* ``Qc``: ``coplanar`` lists, as ``[point, facet, nearest vertex]`` rows, every input point
+  exactly on the boundary (exact test) that is not a vertex, duplicates of vertices included,
+  with the facet through it whose simplex contains it and that facet's vertex nearest it;
+  ``Qi``: every point strictly inside, with the facet of the nearest plane. Without them
+  ``coplanar`` is empty, shape (0, 3), as scipy's. Rows are ordered by facet, then point;
+* ``QGn`` / ``QG-n``: point n takes no part in the hull (as in Qhull), and ``good`` says per
+  facet whether point n sees it, strictly beyond its plane, decided exactly (``QG-n``: does not
+  see it); without a ``QG`` option ``good`` is None;
+* anything else raises ``pqhull.InputError`` naming the option: scaling (``QbB``, ``Qbk:n``,
+  ``QBk:n``), random rotation (``QRn``), ``QVn``, ``Qg``, the Delaunay options ``Qz`` and
+  ``Qu`` (scipy refuses them too), another mode (``d``, ``v``, ``Hn``), the qhull program's
+  print and output options (``P``, ``F``, ``G``, ``T`` ones other than those above, ``o``,
+  ``i``, ``n``, ``p``, ``s``, ``m``, ``f``), ``Q13``, ``Q15`` and unknown options. As in scipy,
+  ``Qbb`` is refused with ``incremental=True`` ("incompatible with incremental mode").
+
+Masked arrays are refused with scipy's message, "Input points cannot be a masked array", as a
+``pqhull.InputError`` (a ``ValueError``, as scipy's); a NaN is a ``ValueError``
+(``pqhull.HullError``), as in scipy. scipy's own ConvexHull
+tests (``python/tests/test_scipy_convexhull.py`` runs them from the installed scipy) all pass.
+
+Differences from scipy
+~~~~~~~~~~~~~~~~~~~~~~
+
+* Exceptions: input that admits no hull (fewer than d + 1 points, all of them in a hyperplane,
+  an infinite coordinate) raises ``pqhull.HullError``, a ``pqhull.Error`` and so a
+  ``ValueError``, where scipy raises ``scipy.spatial.QhullError`` (a ``RuntimeError``); a
+  refused or unknown option raises ``pqhull.InputError`` (a ``ValueError``) where scipy raises
+  ``QhullError`` (or accepts it, for the refused options it knows); points that are not a 2-D
+  array raise ``pqhull.InputError`` (scipy: ``ValueError`` or ``IndexError``).
+* Dimensions 2 to 8 only (scipy's Qhull takes any dimension from 2).
+* The hull is exact: its vertices are exactly the extreme points, a point on an edge or a face
+  is never a vertex, and nothing is merged or joggled. Where Qhull's rounding decides (nearly
+  coplanar points, ``QJ``, large thresholds such as ``C0.1``, ``A0.9``, ``W0.5``, ``E1e-3``
+  that make Qhull merge into an approximate hull, or fail), the answers differ: pqhull's is the
+  hull of the points as given. On degenerate input (four or more points on one facet plane)
+  the triangulation of that face may differ from Qhull's; both are valid. Of several copies of
+  one point, the vertex is the first (lowest index), the others are coplanar points; Qhull may
+  make another copy the vertex, and may list the other copies or drop them.
+* ``Qbb``: in scipy's ConvexHull Qhull scales the last coordinate (of the caller's array, in
+  place, when it is already C-contiguous float64) and reports the hull of the scaled points;
+  pqhull ignores the option.
+* The facet order (see above) is pqhull's own; it agrees with Qhull's after ``add_points`` (new
+  facets after the surviving ones) but not, in general, for a hull built at once. The 2-D
+  vertex list may start at another vertex (it is counter-clockwise in both).
+* ``coplanar`` is decided exactly (Qhull's with its tolerance), its facet and nearest vertex as
+  described above (Qhull's are the facet it partitioned the point to and the nearest vertex of
+  that), and after ``add_points`` it covers every point (scipy's incremental Qhull lists no
+  added point that lands inside until a restart). ``Qc`` and ``Qi`` cost a distance test of
+  every non-vertex point against every facet (Qhull gets them from its partitioning).
+* ``good`` is decided exactly (Qhull: a floating-point distance > 0).
+* ``add_points`` refuses a NaN or infinite coordinate with ``pqhull.HullError``, naming the
+  point, and leaves the hull as it was (scipy takes a NaN and reports a NaN volume).
+* ``points`` is a copy (scipy's non-incremental hull keeps the caller's array when it is already
+  C-contiguous float64). The attributes are read-only properties (scipy's can be reassigned);
+  there are no private ``_points`` / ``_vertices`` / ``_qhull``.
+* Pickling (and ``copy``) rebuilds the hull from its points and options; an incremental hull
+  that is not closed comes back incremental (scipy cannot pickle an incremental hull).
+* ``add_points`` runs without the GIL; another thread using the same hull meanwhile gets a
+  ``RuntimeError`` ("Already mutably borrowed") rather than waiting.
 """
 
 from __future__ import annotations
