@@ -2,7 +2,8 @@
 //! the dimension and the conversion of arrays. `ConvexHull` is in `convex_hull.rs`.
 
 use crate::errors;
-use numpy::{PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
+use numpy::{PyArray1, PyArray2, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArrayMethods};
+use pqhull::strategy::{QueryError, distances_to_boundary as distances_of};
 use pqhull::{ClosestToOrigin, Hull};
 use pyo3::prelude::*;
 
@@ -116,4 +117,131 @@ pub fn distance_to_boundary(
 ) -> PyResult<Distance> {
     let dimension = points.shape()[1];
     with_dimension!(dimension, distance(py, &points, query.as_ref()))
+}
+
+/// Signed distances from many query points to one hull's boundary.
+#[pyclass(module = "pqhull", frozen)]
+pub struct Distances {
+    signed_distance: Py<PyArray1<f64>>,
+    facets: Py<PyArray2<i32>>,
+    nearest_points: Py<PyArray2<f64>>,
+    points_processed: usize,
+    facets_created: usize,
+}
+
+#[pymethods]
+impl Distances {
+    /// Per query: positive inside, negative outside, zero on the boundary (the sign is exact).
+    #[getter]
+    fn signed_distance<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray1<f64>> {
+        self.signed_distance.bind(py).clone()
+    }
+
+    /// Per query, the deciding facet's vertex indices, (m, d).
+    #[getter]
+    fn facets<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<i32>> {
+        self.facets.bind(py).clone()
+    }
+
+    /// Per query, the point of the boundary nearest it, (m, d).
+    #[getter]
+    fn nearest_points<'py>(&self, py: Python<'py>) -> Bound<'py, PyArray2<f64>> {
+        self.nearest_points.bind(py).clone()
+    }
+
+    /// Points the shared partial hull (or the largest fresh one) added.
+    #[getter]
+    fn points_processed(&self) -> usize {
+        self.points_processed
+    }
+
+    /// Facets it created.
+    #[getter]
+    fn facets_created(&self) -> usize {
+        self.facets_created
+    }
+
+    fn __len__(&self, py: Python<'_>) -> usize {
+        self.signed_distance.bind(py).len()
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> String {
+        format!(
+            "Distances(queries={}, points_processed={})",
+            self.signed_distance.bind(py).len(),
+            self.points_processed
+        )
+    }
+}
+
+fn distances<const D: usize>(
+    py: Python<'_>,
+    points: &PyReadonlyArray2<'_, f64>,
+    queries: &PyReadonlyArray2<'_, f64>,
+) -> PyResult<Distances> {
+    if queries.shape()[1] != D {
+        return Err(errors::input(format!(
+            "queries have {} coordinates but the points have {D}",
+            queries.shape()[1]
+        )));
+    }
+    let (input, qs) = (rows::<D>(points), rows::<D>(queries));
+    let results = py
+        .detach(|| distances_of(&input, &qs))
+        .map_err(|e| match e {
+            QueryError::Hull(e) => errors::hull(e),
+            e => errors::input(e.to_string()),
+        })?;
+    let facets = results
+        .iter()
+        .map(|r| {
+            r.closest_facet_vertices
+                .iter()
+                .map(|&v| i32::try_from(v).map_err(|_| errors::input("more than 2^31 points")))
+                .collect::<PyResult<Vec<i32>>>()
+        })
+        .collect::<PyResult<Vec<_>>>()?;
+    let table = |rows: Vec<Vec<f64>>| -> PyResult<Py<PyArray2<f64>>> {
+        if rows.is_empty() {
+            return Ok(PyArray2::zeros(py, [0, D], false).unbind());
+        }
+        Ok(PyArray2::from_vec2(py, &rows)
+            .map_err(|e| errors::input(e.to_string()))?
+            .unbind())
+    };
+    let facets = if facets.is_empty() {
+        PyArray2::zeros(py, [0, D], false).unbind()
+    } else {
+        PyArray2::from_vec2(py, &facets)
+            .map_err(|e| errors::input(e.to_string()))?
+            .unbind()
+    };
+    let work = results
+        .iter()
+        .map(|r| r.stats)
+        .max_by_key(|s| s.points_processed);
+    Ok(Distances {
+        signed_distance: PyArray1::from_vec(
+            py,
+            results.iter().map(|r| r.signed_distance).collect(),
+        )
+        .unbind(),
+        facets,
+        nearest_points: table(results.iter().map(|r| r.nearest_point.to_vec()).collect())?,
+        points_processed: work.map_or(0, |s| s.points_processed),
+        facets_created: work.map_or(0, |s| s.facets_created),
+    })
+}
+
+/// distances_to_boundary(points, queries): the signed distance from each row of `queries`
+/// ((m, d)) to the boundary of the hull of `points`, from one partial hull shared by the queries
+/// (each exact, as a query answered alone); the GIL released.
+#[pyfunction]
+pub fn distances_to_boundary(
+    py: Python<'_>,
+    points: PyReadonlyArray2<'_, f64>,
+    queries: PyReadonlyArray2<'_, f64>,
+) -> PyResult<Distances> {
+    let dimension = points.shape()[1];
+    with_dimension!(dimension, distances(py, &points, &queries))
 }

@@ -23,10 +23,12 @@ fn _pqhull(m: &Bound<'_, PyModule>) -> PyResult<()> {
     errors::register(m)?;
     m.add_class::<convex_hull::ConvexHull>()?;
     m.add_class::<hull::Distance>()?;
+    m.add_class::<hull::Distances>()?;
     m.add_class::<grasps::Quality>()?;
     m.add_class::<grasps::Batch>()?;
     m.add_class::<ows::ObjectWrenchSpace>()?;
     m.add_function(wrap_pyfunction!(hull::distance_to_boundary, m)?)?;
+    m.add_function(wrap_pyfunction!(hull::distances_to_boundary, m)?)?;
     m.add_function(wrap_pyfunction!(grasps::q1, m)?)?;
     m.add_function(wrap_pyfunction!(grasps::qinf, m)?)?;
     m.add_function(wrap_pyfunction!(grasps::ows, m)?)?;

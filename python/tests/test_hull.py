@@ -84,3 +84,28 @@ def test_distance_to_boundary_is_the_full_hulls():
             assert got.points_processed <= len(points)
     with pytest.raises(pqhull.InputError, match="query has 3 coordinates"):
         pqhull.distance_to_boundary(rng.standard_normal((10, 2)), [0.0, 0.0, 0.0])
+
+
+def test_many_queries_share_one_partial_hull():
+    """An (m, d) array of queries: every answer is the one a query alone gets (itself checked
+    against the full hull above), the sign against scipy's facets."""
+    rng = np.random.default_rng(11)
+    for d in (2, 3, 5):
+        points = rng.standard_normal((400, d))
+        queries = rng.standard_normal((50, d)) * 1.5
+        many = pqhull.distance_to_boundary(points, queries)
+        assert isinstance(many, pqhull.Distances) and len(many) == 50
+        assert many.signed_distance.shape == (50,)
+        assert many.facets.shape == (50, d) and many.facets.dtype == np.intc
+        assert many.nearest_points.shape == (50, d)
+        equations = scipy.spatial.ConvexHull(points).equations
+        for i, q in enumerate(queries):
+            alone = pqhull.distance_to_boundary(points, q)
+            assert abs(many.signed_distance[i] - alone.signed_distance) <= 1e-12
+            outside = (equations[:, :-1] @ q + equations[:, -1]).max()
+            if abs(outside) > 1e-9:
+                assert (many.signed_distance[i] < 0) == (outside > 0)
+    with pytest.raises(pqhull.InputError):
+        pqhull.distance_to_boundary(rng.standard_normal((10, 2)), np.zeros((3, 3)))
+    with pytest.raises(pqhull.InputError):
+        pqhull.distance_to_boundary(rng.standard_normal((10, 2)), [[0.0, np.nan]])

@@ -109,6 +109,7 @@ from ._pqhull import (
     Batch,
     ConvexHull,
     Distance,
+    Distances,
     Error,
     GraspError,
     HullError,
@@ -134,6 +135,7 @@ __all__ = [
     "grasp_matrix_metrics",
     "Batch",
     "Distance",
+    "Distances",
     "Quality",
     "Error",
     "HullError",
@@ -174,8 +176,15 @@ def distance_to_boundary(points, query=None):
     """The signed distance from `query` (default: the origin) to the boundary of the hull of
     `points`: positive inside, negative outside, exactly signed; from a partial hull that stops
     as soon as the nearest facet is certain. Returns a Distance (`signed_distance`, `facet`,
-    `nearest_point` and the work counters)."""
-    return _pqhull.distance_to_boundary(_array(points, 2, "points"), _optional(query, 1, "query"))
+    `nearest_point` and the work counters).
+
+    `query` may also be an (m, d) array of queries: they are answered from one partial hull
+    shared by all of them (each answer the one a query alone gets), and the result is a
+    Distances of arrays (`signed_distance` (m,), `facets` (m, d), `nearest_points` (m, d))."""
+    points = _array(points, 2, "points")
+    if query is not None and np.ndim(query) == 2:
+        return _pqhull.distances_to_boundary(points, _array(query, 2, "query"))
+    return _pqhull.distance_to_boundary(points, _optional(query, 1, "query"))
 
 
 def _frame(torque_reference):

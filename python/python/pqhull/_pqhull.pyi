@@ -97,9 +97,20 @@ class Batch:
     errors: list[tuple[int, str]]
     evaluation_s: float
 
+class Distances:
+    signed_distance: npt.NDArray[np.float64]
+    facets: npt.NDArray[np.intc]
+    nearest_points: npt.NDArray[np.float64]
+    points_processed: int
+    facets_created: int
+    def __len__(self) -> int: ...
+
 def distance_to_boundary(
     points: npt.NDArray[np.float64], query: Optional[npt.NDArray[np.float64]] = None
 ) -> Distance: ...
+def distances_to_boundary(
+    points: npt.NDArray[np.float64], queries: npt.NDArray[np.float64]
+) -> Distances: ...
 def q1(
     positions: npt.NDArray[np.float64],
     normals: npt.NDArray[np.float64],
