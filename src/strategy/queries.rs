@@ -1,6 +1,7 @@
-//! Many queries against one point set, answered from one partial hull: each query resumes
+//! Many queries against one point set, answered from shared partial hulls: each query resumes
 //! [`ClosestToOrigin`] on the hull the previous ones left, so the hull grows only as far as the
-//! queries need and no query rebuilds it.
+//! queries need and no query rebuilds it; [`distances_to_boundary`] runs one such hull per
+//! worker thread.
 
 use super::{ClosestToOrigin, DistanceResult, Step, Strategy};
 use crate::hull::{Hull, HullError};
@@ -147,7 +148,10 @@ fn check_query<const D: usize>(index: usize, query: &[f64; D]) -> Result<(), Que
 }
 
 /// The signed distance from each of `queries` to the boundary of the hull of `points`, in
-/// order, from one partial hull ([`BoundaryDistances`]).
+/// order. With the `parallel` feature (a default) the queries are cut into one run of
+/// consecutive queries per worker of rayon's current pool, each run answered from its own
+/// shared partial hull ([`BoundaryDistances`]); without it, one run. Every answer is the one
+/// [`ClosestToOrigin::towards`] gives alone, whatever the cut.
 ///
 /// ```
 /// use pqhull::strategy::distances_to_boundary;
@@ -168,6 +172,25 @@ pub fn distances_to_boundary<const D: usize>(
     for (index, query) in queries.iter().enumerate() {
         check_query(index, query)?;
     }
-    let mut distances = BoundaryDistances::new(points)?;
-    queries.iter().map(|&q| distances.distance(q)).collect()
+    let first = BoundaryDistances::new(points)?;
+    let run = |mut distances: BoundaryDistances<D>, run: &[[f64; D]]| {
+        run.iter()
+            .map(|&q| distances.distance(q))
+            .collect::<Result<Vec<_>, _>>()
+    };
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        let workers = rayon::current_num_threads().max(1);
+        let size = queries.len().div_ceil(workers).max(1);
+        let runs: Vec<Vec<DistanceResult<D>>> = queries
+            .par_chunks(size)
+            .map(|chunk| run(first.clone(), chunk))
+            .collect::<Result<_, _>>()?;
+        Ok(runs.into_iter().flatten().collect())
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        run(first, queries)
+    }
 }
