@@ -113,3 +113,62 @@ fn cli_far_queries() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// `pqh hull --queries QFILE`: one JSON line per query, in order, each the answer `--query`
+/// gives alone; a queries file of another dimension is a usage error.
+#[test]
+fn many_queries_are_the_single_queries() {
+    let mut rng = pqhull::geometry::Rng::new(8);
+    let points: String = (0..300)
+        .map(|_| {
+            let p: Vec<String> = (0..3)
+                .map(|_| rng.uniform_in(-1.0, 1.0).to_string())
+                .collect();
+            p.join(" ") + "\n"
+        })
+        .collect();
+    let queries: Vec<[f64; 3]> = (0..25)
+        .map(|_| std::array::from_fn(|_| rng.uniform_in(-2.0, 2.0)))
+        .collect();
+    let text: String = queries
+        .iter()
+        .map(|q| format!("{} {} {}\n", q[0], q[1], q[2]))
+        .collect();
+    let points_file = file("many-queries-points.txt", &points);
+    let queries_file = file("many-queries-queries.txt", &text);
+    let (p, q) = (
+        points_file.to_str().unwrap(),
+        queries_file.to_str().unwrap(),
+    );
+    let out = pqh(&["hull", p, "--queries", q, "--json"], None);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let lines: Vec<serde_json::Value> = String::from_utf8(out.stdout)
+        .unwrap()
+        .lines()
+        .map(|l| serde_json::from_str(l).expect("a JSON line"))
+        .collect();
+    assert_eq!(lines.len(), queries.len());
+    for (line, query) in lines.iter().zip(&queries) {
+        let arg = format!("--query={},{},{}", query[0], query[1], query[2]);
+        let alone = pqh(
+            &["hull", p, "--strategy", "closest-to-origin", &arg, "--json"],
+            None,
+        );
+        let alone: serde_json::Value = serde_json::from_slice(&alone.stdout).expect("JSON");
+        assert_eq!(line["origin"], alone["origin"]);
+        let (a, b) = (
+            line["origin_distance"].as_f64().unwrap(),
+            alone["origin_distance"].as_f64().unwrap(),
+        );
+        assert!((a - b).abs() <= 1e-12, "{query:?}: {a} against {b} alone");
+        assert_eq!(a < 0.0, b < 0.0, "{query:?}");
+    }
+    let flat = file("many-queries-2d.txt", "0 0\n1 1\n");
+    let out = pqh(&["hull", p, "--queries", flat.to_str().unwrap()], None);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("dimension 2"));
+}

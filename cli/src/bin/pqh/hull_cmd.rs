@@ -5,7 +5,7 @@ use crate::error::CliError;
 use crate::format::number;
 use crate::input::{Source, parse_point};
 use clap::{Args, ValueEnum};
-use pqhull::strategy::DistanceResult;
+use pqhull::strategy::{DistanceResult, QueryError, distances_to_boundary};
 use pqhull::{ClosestToOrigin, FacetId, Hull, HullError, Stats};
 use pqhull_cli::points_file::PointTable;
 use std::io::Write;
@@ -19,7 +19,8 @@ completion and reports the vertices, facets and volume. --strategy closest-to-or
 hull only toward the query point (--query, default the origin; `--origin` is an alias) until the
 facet nearest it is certain, and reports the signed distance from the query point to the hull
 boundary (positive inside), the closest facet and the nearest boundary point; the facets listed
-are the partial hull's.
+are the partial hull's. --queries QFILE answers every point of QFILE (a points file of the same
+dimension) as a query, from partial hulls shared by the queries: one line per query.
 
 Details (points files, JSON keys): README.md, \"The pqh hull command\"; limits: docs/limits.md.";
 
@@ -44,7 +45,13 @@ pub struct HullArgs {
     )]
     query: Option<String>,
 
-    /// Print one JSON object instead of a human-readable summary
+    /// A points file of query points (the points' dimension): the signed distance of each, one
+    /// line per query in order, from partial hulls shared by the queries (whatever --strategy)
+    #[arg(long, value_name = "QFILE", conflicts_with = "query")]
+    queries: Option<PathBuf>,
+
+    /// Print one JSON object instead of a human-readable summary (with --queries, one JSON
+    /// object per line)
     #[arg(long)]
     json: bool,
 }
@@ -72,6 +79,9 @@ impl StrategyArg {
 
 /// Runs `pqh hull`.
 pub fn run(args: &HullArgs) -> Result<(), CliError> {
+    if let Some(queries) = &args.queries {
+        return run_queries(args, queries);
+    }
     let origin = match (&args.query, args.strategy) {
         (None, _) => None,
         (Some(text), StrategyArg::ClosestToOrigin) => Some(parse_point("--query", text)?),
@@ -401,4 +411,75 @@ fn write_human<const D: usize>(
         stats.expansions,
         stats.elapsed.as_secs_f64() * 1e3
     )
+}
+
+/// `pqh hull --queries`: every query's signed distance, a line each.
+fn run_queries(args: &HullArgs, queries: &std::path::Path) -> Result<(), CliError> {
+    let source = Source::new(args.file.as_deref());
+    let table = source.read_points()?;
+    let query_source = Source::new(Some(queries));
+    let query_table = query_source.read_points()?;
+    let (d, name, query_name) = (table.dimension(), source.name(), query_source.name());
+    if query_table.dimension() != d {
+        return Err(CliError::Usage(format!(
+            "the queries in {query_name} have dimension {} but the points in {name} have {d}",
+            query_table.dimension()
+        )));
+    }
+    let json = args.json;
+    with_dimension!(d, |D| write_queries::<D>(&table, &query_table, json, &name), else |_| Err(CliError::Input(format!(
+        "{name}: the points have dimension {d}; pqh supports dimensions 2 to 8"
+    ))))
+}
+
+fn write_queries<const D: usize>(
+    table: &PointTable,
+    queries: &PointTable,
+    json: bool,
+    name: &str,
+) -> Result<(), CliError> {
+    let points = table
+        .to_arrays::<D>()
+        .expect("dispatched on the table's dimension");
+    let qs = queries
+        .to_arrays::<D>()
+        .expect("the same dimension, checked");
+    let answers = distances_to_boundary(&points, &qs).map_err(|e| match e {
+        QueryError::Hull(e) => CliError::Geometry(format!("{name}: {e}")),
+        e => CliError::Input(e.to_string()),
+    })?;
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::with_capacity(1 << 16, stdout.lock());
+    for (q, a) in qs.iter().zip(&answers) {
+        if json {
+            if !a.signed_distance.is_finite() {
+                return Err(CliError::Input(format!(
+                    "{name}: the distance to query {q:?} exceeds the largest f64 (1.8e308) and \
+                     cannot be written as JSON; divide the input by a power of two"
+                )));
+            }
+            let mut obj = JsonObject::begin(&mut out)?;
+            obj.key(&mut out, "closest_facet")?;
+            put!(&mut out, &a.closest_facet_vertices[..])?;
+            obj.key(&mut out, "nearest_point")?;
+            put!(&mut out, &a.nearest_point[..])?;
+            obj.key(&mut out, "origin")?;
+            put!(&mut out, &q[..])?;
+            obj.key(&mut out, "origin_distance")?;
+            put!(&mut out, &a.signed_distance)?;
+            obj.end(&mut out)?;
+            writeln!(out)?;
+        } else {
+            let coords = |xs: &[f64]| xs.iter().map(|&x| number(x)).collect::<Vec<_>>().join(", ");
+            writeln!(
+                out,
+                "query ({})  signed distance {}  nearest point ({})",
+                coords(q),
+                number(a.signed_distance),
+                coords(&a.nearest_point)
+            )?;
+        }
+    }
+    out.flush()?;
+    Ok(())
 }
