@@ -33,7 +33,10 @@ impl fmt::Display for ThreadsError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             ThreadsError::OutOfRange { threads } => {
-                write!(f, "{threads} threads: the count must be 1 to {MAX_THREADS}")
+                write!(
+                    f,
+                    "{threads} worker threads asked for; the count must be 1 to {MAX_THREADS}"
+                )
             }
             ThreadsError::Start { threads, message } => {
                 write!(f, "cannot start {threads} threads: {message}")
