@@ -454,7 +454,7 @@ pub fn evaluate(
     Scorer::new(metric, method, space).map_err(crate::metrics::error)?;
     let frame = frame(cone_edges, torque_reference, torque_scale)?;
     if let Some(t) = threads {
-        pqhull::grasp::check_threads(t).map_err(|e| errors::input(format!("threads: {e}")))?;
+        pqhull::grasp::check_threads(t).map_err(|e| errors::input(e.to_string()))?;
     }
     let (p, nrm) = (positions.as_array(), normals.as_array());
     let t = tangents.as_ref().map(|t| t.as_array());
