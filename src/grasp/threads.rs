@@ -88,9 +88,11 @@ pub fn thread_pool(threads: usize) -> Result<rayon::ThreadPool, ThreadsError> {
 /// let friction = FrictionModel::try_new(0.5, 8)?;
 /// let grasps: Vec<Grasp> =
 ///     (0..20).map(|_| Grasp::random_on_box(&mut rng, [0.5, 0.2, 0.1], 4, friction)).collect();
-/// let two = with_threads(Some(2), || evaluate_batch(&grasps, Metric::Q1, Method::Partial))?;
-/// let all = with_threads(None, || evaluate_batch(&grasps, Metric::Q1, Method::Partial))?;
-/// assert_eq!(two, all);
+/// let values = |threads| -> Result<Vec<(f64, bool)>, Box<dyn std::error::Error>> {
+///     let batch = with_threads(threads, || evaluate_batch(&grasps, Metric::Q1, Method::Partial))?;
+///     Ok(batch.into_iter().map(|q| q.map(|q| (q.value, q.force_closure))).collect::<Result<_, _>>()?)
+/// };
+/// assert_eq!(values(Some(2))?, values(None)?); // the same values, whatever the pool
 /// assert!(with_threads(Some(0), || ()).is_err());
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
