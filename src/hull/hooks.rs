@@ -21,8 +21,8 @@ impl<const D: usize> sealed::Sealed for Hull<D> {}
 /// documentation; implemented by [`Hull`] only.
 ///
 /// ```
+/// use pqhull::Hull;
 /// use pqhull::hull::StrategyHooks;
-/// use pqhull::{FarthestPoint, Hull};
 ///
 /// let points = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 1.0], [0.4, 0.4]];
 /// let mut hull = Hull::try_new(&points)?;
@@ -31,7 +31,6 @@ impl<const D: usize> sealed::Sealed for Hull<D> {}
 /// let serial = facet.serial();
 /// assert!(hull.is_current(id, serial));
 /// assert!(!hull.claim_beyond(id));
-/// # let _ = FarthestPoint::new();
 /// # Ok::<(), pqhull::HullError>(())
 /// ```
 pub trait StrategyHooks<const D: usize>: sealed::Sealed {
