@@ -138,15 +138,27 @@ fn evaluate_lines<E, T: Send, Er: std::fmt::Display + Send>(
     line: impl Fn(usize, &T) -> Value,
 ) -> Result<Vec<Value>, CliError> {
     let bar = crate::progress::bar(entries.len(), "grasps");
+    // A few runs of consecutive grasps per worker, one evaluator each, reused along its run
+    // (rayon's `map_init` makes one per job it splits off: a cold hull arena each time).
     let results = with_threads(threads, || {
         use rayon::prelude::*;
+        let runs = 4 * rayon::current_num_threads();
+        let size = entries.len().div_ceil(runs).max(1);
         entries
-            .par_iter()
-            .map_init(&new_evaluator, |ev, g| {
-                let result = g.as_ref().ok().map(|g| evaluate(ev, g));
-                bar.inc(1);
-                result
+            .par_chunks(size)
+            .map(|run| {
+                let mut ev = new_evaluator();
+                run.iter()
+                    .map(|g| {
+                        let result = g.as_ref().ok().map(|g| evaluate(&mut ev, g));
+                        bar.inc(1);
+                        result
+                    })
+                    .collect::<Vec<_>>()
             })
+            .collect::<Vec<_>>()
+            .into_iter()
+            .flatten()
             .collect::<Vec<_>>()
     })?;
     bar.finish_and_clear();
