@@ -33,7 +33,7 @@ fn robust_safe(points: &[&[f64]]) -> bool {
 }
 
 /// The exponent of the lowest set bit of a finite non-zero `x` (`x` is an odd multiple of 2^e).
-pub(in crate::predicates) fn lowest_bit_exponent(x: f64) -> i32 {
+pub(crate) fn lowest_bit_exponent(x: f64) -> i32 {
     decompose(x).1
 }
 

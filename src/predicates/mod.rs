@@ -74,6 +74,7 @@ mod tests;
 mod wide;
 
 pub use exact::exact_cofactor_direction;
+pub(crate) use exact::lowest_bit_exponent;
 pub use filter::FacetPlane;
 pub use grid::ExactGrid;
 pub use wide::times_power_of_two;

@@ -46,15 +46,20 @@
 
 mod closest_to_origin;
 mod complete;
+mod minkowski_sum;
 mod ows_inflation;
+mod penetration;
 mod queries;
 mod reasons;
 
 pub use crate::hull::{FarthestPoint, ReusableStrategy, Stats, Step, Strategy};
 pub use closest_to_origin::{ClosestToOrigin, DistanceResult, NoSource, PointSource, SourceError};
 pub use complete::Complete;
+pub use minkowski_sum::MinkowskiSum;
 pub use ows_inflation::{OwsInflation, OwsResult, inflation_factor};
 pub use ows_inflation::{exact_factor, factor_lower_bound};
+pub use penetration::penetration_depth;
+pub use penetration::{Body, FLAT_PAIRS_LIMIT, Penetration, PenetrationError, Relation};
 pub use queries::{BoundaryDistances, QueryError, distances_to_boundary};
 pub use reasons::{InflationReason, NearestReason};
 
