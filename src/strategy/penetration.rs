@@ -10,7 +10,7 @@
 //! [`MinkowskiSum`] of `A` and `−B`, in any dimension 2 to 8, with GJK first for separated
 //! bodies.
 
-use super::{ClosestToOrigin, MinkowskiSum, SourceError, Stats};
+use super::{ClosestToOrigin, DistanceResult, MinkowskiSum, SourceError, Stats};
 use crate::geometry::vector::{dot, norm};
 use crate::geometry::{GJK_ITERATIONS, GJK_TOUCHING, Gjk, GjkVerdict, Support};
 use crate::geometry::{Rng, min_norm_point, min_norm_point_exact};
@@ -242,23 +242,20 @@ pub fn penetration_depth<const D: usize>(
     if let GjkVerdict::Separated { .. } =
         gjk.run(&mut sum, scale, &seeds, GJK_ITERATIONS, GJK_TOUCHING)
     {
+        // GJK's face holds a point of the difference within 1e−13 of the distance (its
+        // certificate): its nearest point, exactly.
         let face = gjk.face();
         let nearest = min_norm_point(face.len(), |i| face[i], &[0.0; D]);
-        if nearest.distance > 0.0 {
-            let direction = unit(nearest.point.map(|c| -c));
-            return Ok(answer(-nearest.distance, direction, Stats::default()));
+        let slack = 1e-12 * nearest.distance + 1e-15 * scale;
+        if let Some((depth, direction)) = exact_nearest(face, nearest.distance, slack) {
+            return Ok(answer(depth, direction, Stats::default()));
         }
     }
 
     let strategy = ClosestToOrigin::with_source([0.0; D], sum);
     match Hull::try_with_strategy(&seeds, strategy) {
         Ok((hull, Ok(result))) => {
-            let depth = result.signed_distance;
-            let direction = if depth < 0.0 {
-                unit(result.nearest_point.map(|c| -c))
-            } else {
-                hull.facet(result.closest_facet).normal()
-            };
+            let (depth, direction) = refined(&hull, &result);
             Ok(answer(depth, direction, result.stats))
         }
         Ok((_, Err(e))) => Err(PenetrationError::Source(e)),
@@ -268,6 +265,47 @@ pub fn penetration_depth<const D: usize>(
         }
         Err(e) => Err(PenetrationError::Hull(e)),
     }
+}
+
+/// The depth and direction from [`ClosestToOrigin`]'s answer, its last ulps made exact: inside,
+/// the deciding facet's distance from the exact determinant and cofactors (a few ulps, where the
+/// plane's floating-point offset carries the rounding of its vertices' size); outside, Wolfe's
+/// algorithm in exact arithmetic over the deciding facet's D vertices (which hold the nearest
+/// point), rounded once — kept only when it agrees with the floating-point answer to the latter's
+/// accuracy, as it must.
+fn refined<const D: usize>(hull: &Hull<D>, result: &DistanceResult<D>) -> (f64, [f64; D]) {
+    let depth = result.signed_distance;
+    let facet = result.closest_facet;
+    if depth > 0.0 {
+        let exact = hull
+            .exact_signed_distance(facet, &[0.0; D])
+            .map_or(depth, |d| -d);
+        let depth = if exact > 0.0 { exact } else { depth };
+        return (depth, hull.facet(facet).normal());
+    }
+    if depth == 0.0 {
+        return (0.0, hull.facet(facet).normal());
+    }
+    let vertices = result.closest_facet_vertices.map(|v| hull.point(v));
+    let slack = 1e-12 * depth.abs() + 1e-15 * hull.coordinate_bound();
+    exact_nearest(&vertices, -depth, slack)
+        .unwrap_or((depth, unit(result.nearest_point.map(|c| -c))))
+}
+
+/// Minus the distance from the origin to `conv(face)` and the direction toward the face's
+/// nearest point from it, by Wolfe's algorithm in exact arithmetic (rounded once), when that
+/// distance is positive and within `slack` of `rough` (the floating-point distance it refines).
+fn exact_nearest<const D: usize>(
+    face: &[[f64; D]],
+    rough: f64,
+    slack: f64,
+) -> Option<(f64, [f64; D])> {
+    if face.is_empty() {
+        return None;
+    }
+    let nearest = min_norm_point_exact(face.len(), |i| face[i], &[0.0; D], &[]);
+    let agrees = (nearest.distance - rough).abs() <= slack;
+    (agrees && nearest.distance > 0.0).then(|| (-nearest.distance, unit(nearest.point.map(|c| -c))))
 }
 
 /// The seeds span fewer than D dimensions: the difference itself may (bodies whose difference
@@ -288,12 +326,7 @@ fn flat<const D: usize>(
         .collect();
     match Hull::try_with_strategy(&differences, ClosestToOrigin::new()) {
         Ok((hull, result)) => {
-            let depth = result.signed_distance;
-            let direction = if depth < 0.0 {
-                unit(result.nearest_point.map(|c| -c))
-            } else {
-                hull.facet(result.closest_facet).normal()
-            };
+            let (depth, direction) = refined(&hull, &result);
             Ok((depth, direction, result.stats))
         }
         Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {

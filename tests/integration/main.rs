@@ -23,6 +23,7 @@ mod min_norm_reference;
 mod near_boundary;
 mod ows;
 mod ows_eq6;
+mod penetration;
 mod plan_metrics;
 mod point_source;
 mod qhull_crosscheck;

@@ -13,5 +13,6 @@ mod cli_raw_reference;
 mod cli_stream;
 mod fuzz_bounded;
 mod hull_queries;
+mod penetration_cmd;
 mod reproduce;
 mod trace_cmd;

@@ -17,6 +17,7 @@ mod hull_cmd;
 mod input;
 mod limits;
 mod methods;
+mod penetration_cmd;
 mod plan_cmd;
 mod plan_view;
 mod progress;
@@ -69,6 +70,9 @@ enum Command {
     /// Convex hull of a points file (full, or partial toward a query point)
     #[command(long_about = hull_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
     Hull(hull_cmd::HullArgs),
+    /// Signed penetration depth of two convex polytopes (positive: overlap; negative: distance)
+    #[command(long_about = penetration_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
+    Penetration(penetration_cmd::PenetrationArgs),
     /// Grasp quality (Q1, Q∞, Q_OWS) of grasps given as JSON, one JSON line per grasp
     #[command(long_about = grasp_cmd::LONG_ABOUT, after_help = EXIT_STATUS_HELP)]
     Grasp(grasp_cmd::GraspArgs),
@@ -201,6 +205,7 @@ fn main() -> ExitCode {
     progress::set_quiet(cli.quiet);
     let result = match cli.command {
         Command::Hull(args) => hull_cmd::run(&args),
+        Command::Penetration(args) => penetration_cmd::run(&args),
         Command::Demo(args) => demo_cmd::run(&args),
         Command::Compare(args) => compare_cmd::run(&args),
         Command::Reproduce(args) => reproduce_cmd::run(&args),
