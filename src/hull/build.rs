@@ -422,7 +422,11 @@ impl<const D: usize> Hull<D> {
     }
 
     /// Puts `p` in the outside set of `best`'s facet (with its orientation value), if any.
-    fn push_outside(&mut self, p: u32, best: Option<(FacetId, f64, f64)>) -> bool {
+    pub(in crate::hull) fn push_outside(
+        &mut self,
+        p: u32,
+        best: Option<(FacetId, f64, f64)>,
+    ) -> bool {
         let Some((id, _, value)) = best else {
             return false;
         };

@@ -8,6 +8,7 @@
 
 use super::build::first_non_finite;
 use super::{FacetId, FarthestPoint, Hull, HullError, Strategy};
+use crate::predicates::Sign;
 use std::ops::Range;
 use std::time::Instant;
 
@@ -101,7 +102,14 @@ impl<const D: usize> Hull<D> {
         self.started = Instant::now()
             .checked_sub(self.stats.elapsed)
             .unwrap_or_else(Instant::now);
-        let live: Vec<FacetId> = self.facets().map(|(id, _)| id).collect();
+        // A walk locates each new point (see `locate`); one scan of every live facet (the
+        // locator's own check, or a point's fallback) costs what a single point's scan does.
+        let mut locator = if points.len() > 1 {
+            self.locator()
+        } else {
+            None
+        };
+        let mut live: Vec<FacetId> = Vec::new();
         for p in points {
             let scaled = p.map(|x| x * self.scale);
             if self.grid.is_some_and(|grid| !grid.contains(&scaled)) {
@@ -109,7 +117,23 @@ impl<const D: usize> Hull<D> {
             }
             let index = self.points.len() as u32;
             self.points.push(scaled);
-            self.assign(index, &live);
+            let located = locator
+                .as_mut()
+                .and_then(|locator| self.locate(locator, &scaled));
+            match located {
+                Some((id, Sign::Positive)) => {
+                    let facet = &self.facets[id.index()];
+                    let value = facet.filter.value(&scaled).max(0.0);
+                    self.push_outside(index, Some((id, value * facet.inv_norm, value)));
+                }
+                Some(_) => {} // in conv(centre ∪ facet): inside the hull
+                None => {
+                    if live.is_empty() {
+                        live.extend(self.facets().map(|(id, _)| id));
+                    }
+                    self.assign(index, &live);
+                }
+            }
         }
         Ok((old..total, self.run_in_place(strategy)))
     }

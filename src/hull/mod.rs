@@ -25,6 +25,7 @@ mod facet;
 mod farthest_point;
 mod hooks;
 mod incremental;
+mod locate;
 mod planes;
 mod record;
 mod strategy;

@@ -111,6 +111,55 @@ fn a_grown_hull_in_six_to_eight_dimensions() {
     }
 }
 
+/// Integer grids grown from their corners, in shuffled chunks: most new points lie exactly on a
+/// facet, a ridge or the line from the hull's interior point through a vertex (the walk's
+/// degenerate cases, where every orientation it tests is an exact zero).
+#[test]
+fn grids_grown_from_their_corners() {
+    fn grid<const D: usize>(side: usize, seed: u64) {
+        let mut points: Vec<[f64; D]> = (0..side.pow(D as u32))
+            .map(|mut i| {
+                std::array::from_fn(|_| {
+                    let c = (i % side) as f64;
+                    i /= side;
+                    c
+                })
+            })
+            .collect();
+        // Corners first, the rest in a seeded order.
+        let corner = |p: &[f64; D]| p.iter().all(|&c| c == 0.0 || c == (side - 1) as f64);
+        points.sort_by_key(|p| !corner(p));
+        let corners = points.iter().filter(|p| corner(p)).count();
+        let mut rng = pqhull::geometry::Rng::new(seed);
+        for i in (corners + 1..points.len()).rev() {
+            let j = corners + rng.index(i - corners + 1);
+            points.swap(i, j);
+        }
+        let what = format!("grid {side}^{D}");
+        grow_in_chunks(&points, corners, 7 + seed as usize, false, &what);
+        // Points added beyond the grid's corners grow it; the centre's rays then cross the
+        // old vertices exactly.
+        let mut hull = Hull::try_new(&points).unwrap();
+        let far: Vec<[f64; D]> = points
+            .iter()
+            .filter(|p| corner(p))
+            .map(|p| p.map(|c| 2.0 * c - (side - 1) as f64 / 2.0))
+            .collect();
+        hull.add_points(&far).unwrap();
+        hull.check().unwrap_or_else(|e| panic!("{what}: {e}"));
+        let mut all = points.clone();
+        all.extend_from_slice(&far);
+        assert_eq!(
+            hull.vertex_indices(),
+            Hull::try_new(&all).unwrap().vertex_indices(),
+            "{what}"
+        );
+    }
+    grid::<2>(9, 1);
+    grid::<3>(5, 2);
+    grid::<4>(4, 3);
+}
+
 /// Inside points, repeats of vertices and points on facets change nothing.
 #[test]
 fn points_inside_or_on_the_hull_change_nothing() {
