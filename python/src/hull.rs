@@ -27,7 +27,7 @@ macro_rules! with_dimension {
 pub(crate) use with_dimension;
 
 /// The rows of an (n, D) array as points.
-fn rows<const D: usize>(points: &PyReadonlyArray2<'_, f64>) -> Vec<[f64; D]> {
+pub(crate) fn rows<const D: usize>(points: &PyReadonlyArray2<'_, f64>) -> Vec<[f64; D]> {
     let view = points.as_array();
     view.rows()
         .into_iter()

@@ -13,6 +13,7 @@ mod grasps;
 mod hull;
 mod metrics;
 mod ows;
+mod penetration;
 mod qhull_options;
 
 use pyo3::prelude::*;
@@ -27,8 +28,10 @@ fn _pqhull(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<grasps::Quality>()?;
     m.add_class::<grasps::Batch>()?;
     m.add_class::<ows::ObjectWrenchSpace>()?;
+    m.add_class::<penetration::Penetration>()?;
     m.add_function(wrap_pyfunction!(hull::distance_to_boundary, m)?)?;
     m.add_function(wrap_pyfunction!(hull::distances_to_boundary, m)?)?;
+    m.add_function(wrap_pyfunction!(penetration::penetration_depth, m)?)?;
     m.add_function(wrap_pyfunction!(grasps::q1, m)?)?;
     m.add_function(wrap_pyfunction!(grasps::qinf, m)?)?;
     m.add_function(wrap_pyfunction!(grasps::ows, m)?)?;

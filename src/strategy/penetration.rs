@@ -61,8 +61,9 @@ pub struct Penetration<const D: usize> {
     /// within [`rounding`](Self::rounding) of the true one.
     pub depth: f64,
     /// Unit: translating `b` by `depth · direction` (or `a` by the opposite) makes the bodies
-    /// touch. Overlapping, the outward normal of the difference's facet nearest the origin;
-    /// disjoint, from the nearest point of `b` to the nearest point of `a`.
+    /// touch. Overlapping, the outward normal of the difference's facet nearest the origin (`b`
+    /// is pushed along it); disjoint, from the nearest point of `a` toward the nearest point of
+    /// `b` (the depth is negative: `b` moves back along it by the distance).
     pub direction: [f64; D],
     /// How they lie.
     pub relation: Relation,
@@ -171,8 +172,10 @@ impl<const D: usize> std::error::Error for PenetrationError<D> {
 }
 
 /// The most vertex pairs the flat case (a difference spanning fewer than D dimensions, within
-/// rounding of the origin) materialises for Wolfe's exact nearest point: 2^20.
-pub const FLAT_PAIRS_LIMIT: usize = 1 << 20;
+/// rounding of the origin) materialises for its exact affine rank and Wolfe's exact nearest
+/// point: 2^16, whose time (two coplanar 256-gons in 3-D) docs/limits.md gives; both grow
+/// faster than the pairs.
+pub const FLAT_PAIRS_LIMIT: usize = 1 << 16;
 
 /// The signed penetration depth of the convex hulls of `a` and `b` (their vertices, or any
 /// points whose hulls they are), with the direction that separates them.
@@ -227,6 +230,7 @@ pub fn penetration_depth<const D: usize>(
     let answer = |depth: f64, direction: [f64; D], stats: Stats| {
         let mut stats = stats;
         stats.elapsed = started.elapsed();
+        let depth = if depth == 0.0 { 0.0 } else { depth }; // no −0
         Penetration {
             depth,
             direction,
@@ -514,7 +518,7 @@ fn seed_points<const D: usize>(sum: &mut MinkowskiSum<D>) -> Vec<[f64; D]> {
             }
         }
     }
-    let mut rng = Rng::new(0x5eed_0f_de97);
+    let mut rng = Rng::new(0x5eed_0fde_97a3);
     for _ in 0..RANDOM_SEEDS {
         let direction: [f64; D] = std::array::from_fn(|_| rng.normal());
         add(sum, direction);

@@ -8,6 +8,8 @@ metrics they make fast (Liu & Carpin's PQHGWS), with numpy arrays in and out.
 (4.0, 8.0)
 >>> pqhull.distance_to_boundary(square, [0.5, 0.0]).signed_distance
 0.5
+>>> pqhull.penetration_depth(square, square + [1.5, 0.0]).depth  # they overlap by 0.5 along x
+0.5
 
 ConvexHull, a drop-in for scipy.spatial.ConvexHull
 --------------------------------------------------
@@ -102,6 +104,8 @@ Differences from scipy
 
 from __future__ import annotations
 
+import sys
+
 import numpy as np
 
 from . import _pqhull
@@ -115,6 +119,7 @@ from ._pqhull import (
     HullError,
     InputError,
     ObjectWrenchSpace,
+    Penetration,
     Quality,
     QualityError,
     load_mesh,
@@ -123,6 +128,7 @@ from ._pqhull import (
 __all__ = [
     "ConvexHull",
     "distance_to_boundary",
+    "penetration_depth",
     "q1",
     "qinf",
     "ows",
@@ -136,6 +142,7 @@ __all__ = [
     "Batch",
     "Distance",
     "Distances",
+    "Penetration",
     "Quality",
     "Error",
     "HullError",
@@ -185,6 +192,30 @@ def distance_to_boundary(points, query=None):
     if query is not None and np.ndim(query) == 2:
         return _pqhull.distances_to_boundary(points, _array(query, 2, "query"))
     return _pqhull.distance_to_boundary(points, _optional(query, 1, "query"))
+
+
+def penetration_depth(a, b):
+    """The signed penetration depth of the convex hulls of `a` ((n, d)) and `b` ((m, d), the
+    same d, 2 to 8): the signed distance from the origin to the boundary of their Minkowski
+    difference {a_i - b_j}, positive when the interiors overlap (the length of the smallest
+    translation of `b` that separates them), negative when the bodies are disjoint (minus their
+    distance), zero when they touch; by GJK, then a partial hull over the difference, which is
+    never materialised, with the GIL released. Returns a Penetration (`depth`, unit
+    `direction` (d,), `translation` = depth * direction (d,): moving `b` by it makes the bodies
+    touch, `relation`: "overlapping", "touching" or "separated", `rounding` and `scale`: the
+    accuracy's terms, and the work counters).
+
+    Masked arrays are refused (pqhull.InputError), as by ConvexHull; an empty body or a NaN or
+    infinite coordinate raises pqhull.HullError naming the body ("a" or "b") and the vertex."""
+    return _pqhull.penetration_depth(_body(a, "a"), _body(b, "b"))
+
+
+def _body(value, name):
+    # A masked array exists only once numpy.ma is imported (as ConvexHull checks it).
+    ma = sys.modules.get("numpy.ma")
+    if ma is not None and ma.isMaskedArray(value):
+        raise InputError(f"{name} cannot be a masked array")
+    return _array(value, 2, name)
 
 
 def _frame(torque_reference):

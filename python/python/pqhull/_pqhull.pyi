@@ -105,12 +105,25 @@ class Distances:
     facets_created: int
     def __len__(self) -> int: ...
 
+class Penetration:
+    depth: float
+    direction: npt.NDArray[np.float64]
+    translation: npt.NDArray[np.float64]
+    relation: str
+    rounding: float
+    scale: float
+    points_processed: int
+    facets_created: int
+
 def distance_to_boundary(
     points: npt.NDArray[np.float64], query: Optional[npt.NDArray[np.float64]] = None
 ) -> Distance: ...
 def distances_to_boundary(
     points: npt.NDArray[np.float64], queries: npt.NDArray[np.float64]
 ) -> Distances: ...
+def penetration_depth(
+    a: npt.NDArray[np.float64], b: npt.NDArray[np.float64]
+) -> Penetration: ...
 def q1(
     positions: npt.NDArray[np.float64],
     normals: npt.NDArray[np.float64],
