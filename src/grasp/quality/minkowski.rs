@@ -7,7 +7,7 @@ use crate::grasp::certify::{self, RawSide, UnitBall, support_with_error};
 use crate::grasp::flatness::{FLAT, Flatness};
 use crate::grasp::snap::SnappedCones;
 use crate::predicates::Sign;
-use crate::strategy::{ClosestToOrigin, PointSource};
+use crate::strategy::{ClosestToOrigin, MinkowskiSum, PointSource};
 use crate::{FacetId, Hull, HullError};
 use std::time::Instant;
 
@@ -15,32 +15,44 @@ use std::time::Instant;
 pub const MINKOWSKI_MATERIALISE_LIMIT: usize = 1 << 20;
 
 /// Refills `sets` with the per-contact wrench sets (with the zero wrench if asked), reusing
-/// their buffers: the snapped wrenches, or the caller's raw ones when `raw`, each scaled by its
-/// contact's multiplicity (r copies of a convex set sum to r times it; see
-/// [`snap`](crate::grasp::snap)). A soft contact's set is the union of its two pyramids (2k
-/// wrenches): one summand, since one finger exerts one force and one torsional moment.
+/// their buffers: the snapped wrenches, or the caller's raw ones when `raw` (see [`fill_set`]).
 fn fill_sets(
     sets: &mut Vec<Vec<[f64; 6]>>,
     cones: &SnappedCones,
     with_zero_wrench: bool,
     raw: bool,
 ) {
-    let k = cones.edges();
     sets.resize_with(cones.distinct_contacts(), Vec::new);
     for (c, set) in sets.iter_mut().enumerate() {
         set.clear();
-        let r = f64::from(cones.multiplicity[c]);
-        let scaled = |w: [f64; 6]| w.map(|x| r * x);
-        for p in cones.pyramids_of(c) {
-            if raw {
-                set.extend(cones.raw[p * k..(p + 1) * k].iter().map(|&w| scaled(w)));
-            } else {
-                set.extend((0..k).map(|j| scaled(cones.wrench(p, j))));
-            }
+        fill_set(set, cones, c, with_zero_wrench, raw);
+    }
+}
+
+/// Appends contact `c`'s wrench set to `set`: the snapped wrenches, or the caller's raw ones
+/// when `raw`, each scaled by the contact's multiplicity (r copies of a convex set sum to r
+/// times it; see [`snap`](crate::grasp::snap)), and the zero wrench if asked. A soft contact's
+/// set is the union of its two pyramids (2k wrenches): one summand, since one finger exerts
+/// one force and one torsional moment.
+fn fill_set(
+    set: &mut Vec<[f64; 6]>,
+    cones: &SnappedCones,
+    c: usize,
+    with_zero_wrench: bool,
+    raw: bool,
+) {
+    let k = cones.edges();
+    let r = f64::from(cones.multiplicity[c]);
+    let scaled = |w: [f64; 6]| w.map(|x| r * x);
+    for p in cones.pyramids_of(c) {
+        if raw {
+            set.extend(cones.raw[p * k..(p + 1) * k].iter().map(|&w| scaled(w)));
+        } else {
+            set.extend((0..k).map(|j| scaled(cones.wrench(p, j))));
         }
-        if with_zero_wrench {
-            set.push([0.0; 6]);
-        }
+    }
+    if with_zero_wrench {
+        set.push([0.0; 6]);
     }
 }
 
@@ -153,20 +165,15 @@ pub(super) fn materialise(
     }
 }
 
-/// The Minkowski sum answered through its support function; refilled per grasp in place.
+/// The Minkowski sum answered through its support function; refilled per grasp in place. The
+/// search itself is the strategy layer's [`MinkowskiSum`] (its exact "beyond"); this adds the
+/// grasp's bookkeeping: the raw sets and the tuple behind every point handed out.
 #[derive(Clone, Debug, Default)]
 pub(super) struct MinkowskiSource {
-    sets: Vec<Vec<[f64; 6]>>,
-    /// Per contact: the largest wrench norm (for the score slack), computed once per grasp.
-    sizes: Vec<f64>,
-    /// Per contact: (score, edge) of the candidates for the current facet.
-    candidates: Vec<Vec<(f64, usize)>>,
-    choice: Vec<usize>,
-    /// The odometer over tied candidates in [`PointSource::beyond`].
-    position: Vec<usize>,
+    sum: MinkowskiSum<6>,
     /// Whether the last contact-set entry is the zero wrench.
     with_zero_wrench: bool,
-    /// The caller's raw wrench sets (with the zero wrench if asked), whatever `sets` holds.
+    /// The caller's raw wrench sets (with the zero wrench if asked), whatever `sum` holds.
     raw_sets: Vec<Vec<[f64; 6]>>,
     /// The caller's raw wrenches, unscaled: the union whose force closure the sum shares.
     union: Vec<[f64; 6]>,
@@ -179,26 +186,21 @@ pub(super) struct MinkowskiSource {
 impl MinkowskiSource {
     /// The sum for `cones`' grasp, over the snapped wrenches or, when `raw`, the raw ones.
     fn fill(&mut self, cones: &SnappedCones, with_zero_wrench: bool, raw: bool) {
-        fill_sets(&mut self.sets, cones, with_zero_wrench, raw);
+        self.sum.refill(cones.distinct_contacts(), |c, set| {
+            fill_set(set, cones, c, with_zero_wrench, raw);
+        });
         fill_sets(&mut self.raw_sets, cones, with_zero_wrench, true);
         self.union.clear();
         self.union.extend_from_slice(&cones.raw);
         self.log.clear();
         self.tuples.clear();
         self.with_zero_wrench = with_zero_wrench;
-        self.sizes.clear();
-        self.sizes.extend(
-            self.sets
-                .iter()
-                .map(|set| set.iter().map(|w| dot(*w, *w).sqrt()).fold(0.0, f64::max)),
-        );
-        self.candidates.resize_with(self.sets.len(), Vec::new);
     }
 
-    /// Records `point`, the sum of the choices in `choice`, for [`raw_point`](Self::raw_point).
-    fn record(&mut self, point: [f64; 6], choice: impl Iterator<Item = usize>) {
+    /// Records `point`, the sum of the tuple [`MinkowskiSum::last_tuple`] names.
+    fn record(&mut self, point: [f64; 6]) {
         self.log.push(point);
-        self.tuples.extend(choice);
+        self.tuples.extend_from_slice(self.sum.last_tuple());
     }
 
     /// The raw sum (in `f64`) of the tuple behind `point`, a point this source handed out.
@@ -228,107 +230,21 @@ impl MinkowskiSource {
     fn raw_scale(&self) -> f64 {
         raw_scale(&self.raw_sets)
     }
-
-    /// Each contact's support edge for `direction`, into `self.choice`.
-    fn support_choice(&mut self, direction: &[f64; 6]) {
-        self.choice.clear();
-        self.choice.extend(self.sets.iter().map(|set| {
-            (0..set.len())
-                .max_by(|&a, &b| dot(*direction, set[a]).total_cmp(&dot(*direction, set[b])))
-                .expect("a contact has cone edges")
-        }));
-    }
 }
 
 impl PointSource<6> for MinkowskiSource {
-    /// Exact: a tuple strictly beyond the facet has, for every contact, a score within `gap` of
-    /// that contact's best (see below), so testing every such tuple exactly misses none.
+    /// [`MinkowskiSum`]'s exact answer, recorded.
     fn beyond(&mut self, hull: &Hull<6>, id: FacetId) -> Option<[f64; 6]> {
-        let facet = hull.facet(id);
-        let normal = facet.normal();
-        let offset = facet.offset();
-        // Slack per contact covering the (precise, 1e−11 relative) normal's error and the
-        // rounding of the scores, and the same for the offset.
-        let mut best_total = 0.0;
-        let mut slack = 1e-10 * offset.abs();
-        for ((set, candidates), &size) in
-            self.sets.iter().zip(&mut self.candidates).zip(&self.sizes)
-        {
-            candidates.clear();
-            candidates.extend(set.iter().enumerate().map(|(j, w)| (dot(normal, *w), j)));
-            let best = candidates
-                .iter()
-                .map(|c| c.0)
-                .fold(f64::NEG_INFINITY, f64::max);
-            best_total += best;
-            slack += 1e-10 * size;
-        }
-        // Any tuple beyond satisfies Σ score > offset − slack, hence score_i > best_i − gap.
-        let gap = best_total - offset + slack;
-        if gap < 0.0 {
-            return None;
-        }
-        for candidates in &mut self.candidates {
-            let best = candidates
-                .iter()
-                .map(|c| c.0)
-                .fold(f64::NEG_INFINITY, f64::max);
-            candidates.retain(|c| c.0 >= best - gap);
-            candidates.sort_unstable_by(|a, b| b.0.total_cmp(&a.0));
-        }
-        // The best tuple first; when it is clearly beyond, no enumeration is needed.
-        self.choice.clear();
-        self.choice.extend(self.candidates.iter().map(|c| c[0].1));
-        let top = sum(&self.sets, self.choice.iter().copied());
-        if hull.side_of(id, &top) == Sign::Positive {
-            let choice = std::mem::take(&mut self.choice);
-            self.record(top, choice.iter().copied());
-            self.choice = choice;
-            return Some(top);
-        }
-        // Near a true facet of the sum: enumerate the (few) tied tuples exactly.
-        let mut position = std::mem::take(&mut self.position);
-        position.clear();
-        position.resize(self.sets.len(), 0);
-        let found = 'odometer: loop {
-            let mut i = position.len();
-            loop {
-                if i == 0 {
-                    break 'odometer None;
-                }
-                i -= 1;
-                position[i] += 1;
-                if position[i] < self.candidates[i].len() {
-                    break;
-                }
-                position[i] = 0;
-            }
-            let point = sum(
-                &self.sets,
-                position.iter().zip(&self.candidates).map(|(&p, c)| c[p].1),
-            );
-            if hull.side_of(id, &point) == Sign::Positive {
-                break Some(point);
-            }
-        };
-        if let Some(point) = found {
-            self.log.push(point);
-            for (&p, c) in position.iter().zip(&self.candidates) {
-                self.tuples.push(c[p].1);
-            }
-        }
-        self.position = position;
-        found
+        let point = self.sum.beyond(hull, id)?;
+        self.record(point);
+        Some(point)
     }
 }
 
 impl Support<6> for MinkowskiSource {
     fn support_point(&mut self, direction: &[f64; 6]) -> Option<[f64; 6]> {
-        self.support_choice(direction);
-        let point = sum(&self.sets, self.choice.iter().copied());
-        let choice = std::mem::take(&mut self.choice);
-        self.record(point, choice.iter().copied());
-        self.choice = choice;
+        let point = self.sum.support_point(direction)?;
+        self.record(point);
         Some(point)
     }
 }
