@@ -2,6 +2,7 @@
 
 use super::{MAX_WRENCH_COORDINATE, MINKOWSKI_MATERIALISE_LIMIT, Method, Metric};
 use crate::hull::HullError;
+use crate::strategy::SourceError;
 use std::fmt;
 
 /// Why a grasp could not be evaluated.
@@ -61,6 +62,10 @@ pub enum QualityError {
     /// metrics answer without a hull): not expected of a grasp's checked wrenches, reported
     /// rather than assumed away.
     Hull(HullError),
+    /// The implicit Minkowski sum broke the partial hull's point-source contract (a point not
+    /// strictly beyond the facet it was asked about, or out of the seeds' range): a bug of
+    /// Q∞'s own source, reported rather than assumed away.
+    Source(SourceError<6>),
 }
 
 impl fmt::Display for QualityError {
@@ -132,6 +137,7 @@ impl fmt::Display for QualityError {
             ),
             QualityError::Ellipsoid(message) => write!(f, "no enclosing ellipsoid: {message}"),
             QualityError::Hull(e) => write!(f, "the hull engine refused the wrenches: {e}"),
+            QualityError::Source(e) => write!(f, "internal error in Q∞'s Minkowski sum: {e}"),
         }
     }
 }
@@ -140,6 +146,7 @@ impl std::error::Error for QualityError {
     fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
         match self {
             QualityError::Hull(e) => Some(e),
+            QualityError::Source(e) => Some(e),
             _ => None,
         }
     }

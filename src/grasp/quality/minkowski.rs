@@ -470,10 +470,9 @@ pub(super) fn partial(
             Ok(q.banded(scale))
         }
         Err(e) => Err(QualityError::Hull(e)),
-        Ok(Err(e)) => unreachable!(
-            "the Minkowski source returns only points strictly beyond (exact test) and within \
-             its seeds' range: {e}"
-        ),
+        // The source returns only points strictly beyond (exact test) and within its seeds'
+        // range; a broken promise is reported, not assumed away.
+        Ok(Err(e)) => Err(QualityError::Source(e)),
     }
 }
 
