@@ -23,6 +23,10 @@ pub struct Contact {
     normal: [f64; 3],
     tangent: [f64; 3],
     tangent_given: bool,
+    /// The given tangent, normalised, before it was made orthogonal to the normal (zero when
+    /// none was given): what the tangent is re-derived from when the normal moves (the
+    /// metrics' gradients).
+    tangent_input: [f64; 3],
     torsion: f64,
 }
 
@@ -58,6 +62,7 @@ impl Contact {
             return Err(GraspError::NonFiniteNormal { contact: None });
         }
         let normal = normalize(normal).ok_or(GraspError::ZeroNormal { contact: None })?;
+        let mut tangent_input = [0.0; 3];
         let (tangent, tangent_given) = match tangent {
             None => (Contact::default_tangent(normal), false),
             Some(t) => {
@@ -65,6 +70,7 @@ impl Contact {
                     return Err(GraspError::NonFiniteTangent { contact: None });
                 }
                 let t = normalize(t).ok_or(GraspError::ZeroTangent { contact: None })?;
+                tangent_input = t;
                 // Gram–Schmidt, twice ("twice is enough") so the result is orthogonal to
                 // rounding even when t is close to n.
                 let r = sub(t, scale(normal, dot(t, normal)));
@@ -83,6 +89,7 @@ impl Contact {
             normal,
             tangent,
             tangent_given,
+            tangent_input,
             torsion: 0.0,
         })
     }
@@ -172,6 +179,12 @@ impl Contact {
     /// Whether the tangent was given to [`Contact::try_new`] (`false`: the default was used).
     pub fn tangent_given(&self) -> bool {
         self.tangent_given
+    }
+
+    /// The given tangent, normalised but not yet orthogonalised against the normal, when one
+    /// was given.
+    pub(in crate::grasp) fn tangent_input(&self) -> Option<[f64; 3]> {
+        self.tangent_given.then_some(self.tangent_input)
     }
 }
 

@@ -12,6 +12,7 @@ mod ellipsoid;
 mod extreme_scales;
 mod far_query;
 mod full_method_exact;
+mod gradient;
 mod grasp_quality;
 mod hull_known;
 mod hull_properties;

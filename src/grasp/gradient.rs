@@ -1,0 +1,277 @@
+//! The exact gradient of Q1 with respect to the grasp's own inputs: every contact's position
+//! and normal, and the friction coefficient.
+//!
+//! # Why the deciding face gives it
+//!
+//! Q1 is `V = min_{|u|=1} h(u)`, `h(u) = max_w u·w` over the grasp's wrenches: the signed
+//! distance from the origin to the boundary of their hull (positive inside). At the optimum
+//! `u*`, the wrenches attaining `h(u*)` span the deciding face (the nearest facet inside; the
+//! face holding the nearest point outside), and the point `x = Σ_j λ_j w_j` of that face
+//! nearest the origin has `|x| = |V|` (`x = V·u*` inside, `x = −|V|·u*` outside). By Danskin's
+//! theorem for this min–max, wherever the deciding face is unique, its weights positive and no
+//! other wrench on its supporting plane,
+//!
+//! `dV = Σ_j λ_j u*·dw_j`,
+//!
+//! and each `w_j = [f; ((p − c) × f ± γn)/ρ]` with `f = n + μ(cos θ_j t + sin θ_j (n × t))` is a
+//! smooth function of its contact's position `p`, unit normal `n` (the tangent `t` re-derived
+//! from it as the contact does: the given tangent orthogonalised against `n`, or the default
+//! `(n × e_a)/|n × e_a|`) and the friction `μ`. Where those conditions fail — a tie, a zero
+//! weight, a wrench on the supporting plane outside the face, the default tangent's axis at a
+//! tie, the origin on the boundary — the value is not differentiable there; the same formula
+//! then gives one subgradient-like element (the derivative along the face found) and the
+//! result says so.
+
+use super::quality::Quality;
+use super::{Contact, Grasp};
+use crate::geometry::min_norm_point;
+use crate::geometry::vector::{add, cross, dot, norm, scale, sub};
+use faer::Mat;
+use faer::linalg::solvers::SolveLstsq;
+use std::f64::consts::PI;
+use std::fmt;
+
+/// The derivative of a metric's value with respect to the grasp's inputs, contact by contact in
+/// input order.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Gradient {
+    /// `∂V/∂p_i` for each contact.
+    pub positions: Vec<[f64; 3]>,
+    /// `∂V/∂n_i` for each contact, with respect to the unit normal (orthogonal to it: moving
+    /// `n` along itself changes nothing; for a normal given with length `L`, divide by `L`).
+    pub normals: Vec<[f64; 3]>,
+    /// `∂V/∂μ`.
+    pub friction: f64,
+    /// Whether the value is differentiable at this grasp (see the module docs): when `false`,
+    /// the numbers are the derivative along the deciding face that was found, one element of
+    /// the generalised gradient, not the gradient.
+    pub differentiable: bool,
+}
+
+/// Why [`q1_gradient`] could not differentiate.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum GradientError {
+    /// A deciding wrench of the quality is none of the grasp's wrenches: the quality is not
+    /// this grasp's Q1 (or was evaluated in a rescaled unit, for wrenches beyond 2^±256).
+    NotThisGrasp {
+        /// The deciding wrench's position in [`Quality::deciding_wrenches`].
+        deciding: usize,
+    },
+    /// The quality names no deciding wrench.
+    NoDecidingFace,
+}
+
+impl fmt::Display for GradientError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            GradientError::NotThisGrasp { deciding } => write!(
+                f,
+                "deciding wrench {deciding} of the quality is not a wrench of this grasp: \
+                 differentiate the Q1 evaluated on it"
+            ),
+            GradientError::NoDecidingFace => f.write_str("the quality names no deciding wrench"),
+        }
+    }
+}
+
+impl std::error::Error for GradientError {}
+
+/// Relative tolerance of the differentiability tests (weights, other wrenches on the
+/// supporting plane, the value against the band): far above the value's own accuracy (1e−12),
+/// far below a generic grasp's margins.
+const TIE: f64 = 1e-9;
+
+/// A wrench within this fraction of the scale of the supporting plane is on it: the raw
+/// wrenches of one friction pyramid are coplanar to rounding (about 1e−16 of the scale), and the
+/// value is accurate to 1e−12 of it.
+const ON_PLANE: f64 = 1e-11;
+
+/// The gradient of `quality`, this grasp's Q1 (by any method of [`Evaluator`](
+/// super::quality::Evaluator)), with respect to every contact's position and normal and the
+/// friction coefficient.
+///
+/// ```
+/// use pqhull::grasp::quality::{Evaluator, Method, Metric};
+/// use pqhull::grasp::{Contact, FrictionModel, Grasp, q1_gradient};
+/// let contacts = [[1.0, 0.1, 0.0], [-1.0, 0.0, 0.2], [0.1, 1.0, 0.0], [0.0, -1.0, -0.1]]
+///     .map(|p| Contact::try_new(p, p.map(|x| -x), None).unwrap());
+/// let grasp = Grasp::builder(contacts.to_vec(), FrictionModel::try_new(0.5, 8)?).build()?;
+/// let q1 = Evaluator::new(Metric::Q1, Method::Partial).evaluate(&grasp)?;
+/// let gradient = q1_gradient(&grasp, &q1)?;
+/// assert_eq!(gradient.positions.len(), 4);
+/// assert!(gradient.friction > 0.0); // more friction, a wider cone: a better grasp
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+///
+/// # Errors
+/// [`GradientError`] when `quality` is not this grasp's (its deciding wrenches are not the
+/// grasp's wrenches).
+pub fn q1_gradient(grasp: &Grasp, quality: &Quality) -> Result<Gradient, GradientError> {
+    let wrenches = grasp.wrenches();
+    let deciding = quality.deciding_wrenches();
+    if deciding.is_empty() {
+        return Err(GradientError::NoDecidingFace);
+    }
+    for (index, w) in deciding.iter().enumerate() {
+        if !wrenches.contains(w) {
+            return Err(GradientError::NotThisGrasp { deciding: index });
+        }
+    }
+    // u*: from the origin toward the deciding face's nearest point inside, away from it outside.
+    let (_, x) = nearest_in_affine_hull(deciding);
+    let value = quality.value;
+    let distance = norm(x);
+    let sign = if value > 0.0 { 1.0 } else { -1.0 };
+    let u: [f64; 6] = std::array::from_fn(|c| sign * x[c] / distance);
+    let mut differentiable = value != 0.0 && distance > 0.0 && value.abs() > TIE * quality.scale;
+    // The whole face along u*: every wrench on the supporting plane u*·w = V. The deciding
+    // wrenches are one simplex of it; a friction pyramid with three wrenches on the plane lies
+    // in it whole (its k edges span one 2-flat, and stay in one as the inputs move), so the
+    // face is rarely a simplex. Its point nearest the origin, by Wolfe's algorithm, is `x`
+    // again; the weights of that point on its support are the dual weights Danskin's theorem
+    // asks for (any such weights give the same derivative where V is differentiable).
+    let plane: Vec<usize> = (0..wrenches.len())
+        .filter(|&j| dot6(&u, &wrenches[j]) >= value - ON_PLANE * quality.scale)
+        .collect();
+    let nearest = min_norm_point(plane.len(), |i| wrenches[plane[i]], &[0.0; 6]);
+    let support: Vec<usize> = nearest.support().iter().map(|&i| plane[i]).collect();
+    let face: Vec<[f64; 6]> = support.iter().map(|&j| wrenches[j]).collect();
+    let (weights, foot) = nearest_in_affine_hull(&face);
+    // The foot of the face found must be the deciding one's, in the face's relative interior.
+    differentiable &=
+        norm(sub6(&foot, &x)) <= TIE * quality.scale && weights.iter().all(|&l| l > TIE);
+    // A repeated wrench (contacts listed twice): which copy decides is a tie.
+    differentiable &= support
+        .iter()
+        .all(|&j| wrenches.iter().filter(|w| **w == wrenches[j]).count() == 1);
+    let indices = support;
+
+    let m = grasp.contact_count();
+    let friction = grasp.friction();
+    let (mu, k) = (friction.friction(), friction.cone_edges());
+    let rho = grasp.torque_scale();
+    let reference = grasp.torque_reference();
+    let (u_f, u_t) = ([u[0], u[1], u[2]], [u[3], u[4], u[5]]);
+    let mut gradient = Gradient {
+        positions: vec![[0.0; 3]; m],
+        normals: vec![[0.0; 3]; m],
+        friction: 0.0,
+        differentiable,
+    };
+    // u*·dw for a change (df, dτ) of a wrench's force and torque.
+    let along = |df: [f64; 3], dtau: [f64; 3]| dot(u_f, df) + dot(u_t, dtau) / rho;
+    for (&index, &lambda) in indices.iter().zip(&weights) {
+        let (i, edge, twist_sign) = locate(grasp, index);
+        let contact = &grasp.contacts()[i];
+        let (n, t, b) = (contact.normal(), contact.tangent(), contact.bitangent());
+        let (sin, cos) = (2.0 * PI * edge as f64 / k as f64).sin_cos();
+        let g = add(scale(t, cos), scale(b, sin));
+        let f = add(n, scale(g, mu));
+        let r = sub(contact.position(), reference);
+        // Position: u_τ·(dp × f)/ρ = dp·(f × u_τ)/ρ.
+        let dp = scale(cross(f, u_t), lambda / rho);
+        gradient.positions[i] = add(gradient.positions[i], dp);
+        // Friction: df = g.
+        gradient.friction += lambda * along(g, cross(r, g));
+        // Normal: along each axis projected on the sphere, with the tangent re-derived.
+        let (tangent_of, tie) = tangent_derivative(contact);
+        gradient.differentiable &= !tie;
+        for axis in 0..3 {
+            let mut e = [0.0; 3];
+            e[axis] = 1.0;
+            let dn = sub(e, scale(n, n[axis]));
+            let dt = tangent_of(dn);
+            let db = add(cross(dn, t), cross(n, dt));
+            let df = add(dn, scale(add(scale(dt, cos), scale(db, sin)), mu));
+            let dtau = add(cross(r, df), scale(dn, twist_sign * contact.torsion()));
+            gradient.normals[i][axis] += lambda * along(df, dtau);
+        }
+    }
+    Ok(gradient)
+}
+
+/// The contact, cone edge and torsion sign (±1, 0 for a hard finger) of wrench `index` in
+/// [`Grasp::wrenches`]' order.
+fn locate(grasp: &Grasp, index: usize) -> (usize, usize, f64) {
+    let k = grasp.friction().cone_edges();
+    let mut start = 0;
+    for i in 0..grasp.contact_count() {
+        let count = grasp.contact_wrench_count(i);
+        if index < start + count {
+            let j = index - start;
+            return match (grasp.contacts()[i].is_soft(), j < k) {
+                (false, _) => (i, j, 0.0),
+                (true, true) => (i, j, 1.0),
+                (true, false) => (i, j - k, -1.0),
+            };
+        }
+        start += count;
+    }
+    unreachable!("the index was found among the grasp's wrenches")
+}
+
+/// `dt` as a function of `dn` (tangent to the sphere at `n`), for the contact's tangent rule,
+/// and whether the rule is at a switch (the default tangent's axis tied: not differentiable).
+fn tangent_derivative(contact: &Contact) -> (impl Fn([f64; 3]) -> [f64; 3], bool) {
+    let (n, t) = (contact.normal(), contact.tangent());
+    // d(q/|q|) = (I − t tᵀ) dq / |q| for the unnormalised tangent q.
+    let project =
+        move |dq: [f64; 3], length: f64| scale(sub(dq, scale(t, dot(t, dq))), 1.0 / length);
+    let (source, tie) = match contact.tangent_input() {
+        Some(given) => (Source::Given(given), false),
+        None => {
+            let magnitudes = n.map(f64::abs);
+            let a = (1..3).fold(0, |a, i| if magnitudes[i] < magnitudes[a] { i } else { a });
+            let tie = (0..3).any(|i| i != a && magnitudes[i] <= magnitudes[a] * (1.0 + TIE));
+            let mut e = [0.0; 3];
+            e[a] = 1.0;
+            (Source::Axis(e), tie)
+        }
+    };
+    let derivative = move |dn: [f64; 3]| match source {
+        // q = t_g − (t_g·n) n
+        Source::Given(g) => {
+            let q = sub(g, scale(n, dot(g, n)));
+            let dq = sub(scale(n, -dot(g, dn)), scale(dn, dot(g, n)));
+            project(dq, norm(q))
+        }
+        // q = n × e
+        Source::Axis(e) => project(cross(dn, e), norm(cross(n, e))),
+    };
+    (derivative, tie)
+}
+
+#[derive(Clone, Copy)]
+enum Source {
+    Given([f64; 3]),
+    Axis([f64; 3]),
+}
+
+fn sub6(a: &[f64; 6], b: &[f64; 6]) -> [f64; 6] {
+    std::array::from_fn(|c| a[c] - b[c])
+}
+
+fn dot6(a: &[f64; 6], b: &[f64; 6]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+/// The point of the affine hull of `face` nearest the origin, `x = Σ λ_j w_j` with `Σ λ_j = 1`,
+/// and its weights: `x = w_0 + E μ` with `E` the edges from `w_0`, `μ` the least-squares
+/// solution of `E μ = −w_0` (faer's QR).
+fn nearest_in_affine_hull(face: &[[f64; 6]]) -> (Vec<f64>, [f64; 6]) {
+    let base = face[0];
+    let edges = face.len() - 1;
+    if edges == 0 {
+        return (vec![1.0], base);
+    }
+    let e = Mat::from_fn(6, edges, |r, c| face[c + 1][r] - base[r]);
+    let rhs = Mat::from_fn(6, 1, |r, _| -base[r]);
+    let mu = e.qr().solve_lstsq(&rhs);
+    let mut weights = Vec::with_capacity(face.len());
+    weights.push(1.0 - (0..edges).map(|c| mu[(c, 0)]).sum::<f64>());
+    weights.extend((0..edges).map(|c| mu[(c, 0)]));
+    let x =
+        std::array::from_fn(|r| base[r] + (0..edges).map(|c| e[(r, c)] * mu[(c, 0)]).sum::<f64>());
+    (weights, x)
+}

@@ -1,0 +1,210 @@
+//! `grasp::q1_gradient` against central finite differences of the reported Q1 itself, on
+//! seeded generic grasps (force closure and not; default and given tangents; hard and soft
+//! fingers), and the non-differentiable cases flagged.
+
+use crate::support::grasps::{Shape, random_grasp};
+use pqhull::geometry::Rng;
+use pqhull::grasp::quality::{Evaluator, Method, Metric};
+use pqhull::grasp::{Contact, FrictionModel, Grasp, q1_gradient};
+
+/// The inputs of a grasp, to perturb one at a time.
+#[derive(Clone)]
+struct Inputs {
+    positions: Vec<[f64; 3]>,
+    normals: Vec<[f64; 3]>,
+    tangents: Vec<Option<[f64; 3]>>,
+    torsions: Vec<f64>,
+    mu: f64,
+    k: usize,
+    reference: [f64; 3],
+    rho: f64,
+}
+
+impl Inputs {
+    fn grasp(&self) -> Grasp {
+        let contacts = (0..self.positions.len())
+            .map(|i| {
+                let c = Contact::try_new(self.positions[i], self.normals[i], self.tangents[i])
+                    .expect("a contact");
+                c.with_torsion(self.torsions[i]).expect("a torsion")
+            })
+            .collect();
+        Grasp::builder(contacts, FrictionModel::try_new(self.mu, self.k).unwrap())
+            .torque_reference(self.reference)
+            .torque_scale(self.rho)
+            .build()
+            .expect("a grasp")
+    }
+}
+
+fn q1(evaluator: &mut Evaluator, inputs: &Inputs) -> f64 {
+    evaluator.evaluate(&inputs.grasp()).expect("Q1").value
+}
+
+/// A random grasp's inputs: contacts on an ellipsoid or a cylinder (whose normals are generic:
+/// the default tangent's axis is never tied), half with given tangents, a quarter soft.
+fn random_inputs(rng: &mut Rng) -> Inputs {
+    let shape = if rng.uniform() < 0.5 {
+        Shape::Ellipsoid
+    } else {
+        Shape::Cylinder
+    };
+    let m = 3 + rng.index(3);
+    let mu = rng.uniform_in(0.2, 1.0);
+    let k = [4, 6, 8][rng.index(3)];
+    let grasp = random_grasp(rng, shape, m, FrictionModel::try_new(mu, k).unwrap());
+    let given = rng.uniform() < 0.5;
+    let soft = rng.uniform() < 0.25;
+    let contacts = grasp.contacts();
+    Inputs {
+        positions: contacts.iter().map(|c| c.position()).collect(),
+        normals: contacts.iter().map(|c| c.normal()).collect(),
+        tangents: contacts
+            .iter()
+            .map(|_| {
+                given.then(|| {
+                    let u = rng.unit_vector(3);
+                    [u[0], u[1], u[2]]
+                })
+            })
+            .collect(),
+        torsions: contacts
+            .iter()
+            .map(|_| if soft { rng.uniform_in(0.0, 0.05) } else { 0.0 })
+            .collect(),
+        mu,
+        k,
+        reference: grasp.torque_reference(),
+        rho: grasp.torque_scale(),
+    }
+}
+
+#[test]
+fn q1_gradient_is_the_finite_difference_of_q1() {
+    let mut rng = Rng::new(2812);
+    let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial);
+    let (mut grasps, mut inside, mut flagged, mut checked, mut kinks) = (0, 0, 0, 0, 0);
+    let h = 1e-6;
+    while grasps < 300 {
+        let inputs = random_inputs(&mut rng);
+        let grasp = inputs.grasp();
+        let quality = evaluator.evaluate(&grasp).unwrap();
+        let gradient = q1_gradient(&grasp, &quality).unwrap();
+        if !gradient.differentiable {
+            flagged += 1;
+            continue;
+        }
+        grasps += 1;
+        inside += usize::from(quality.force_closure);
+        // Each input in turn: the analytic derivative and central differences of Q1 itself.
+        let mut components: Vec<(String, f64, Inputs, Inputs)> = Vec::new();
+        for i in 0..inputs.positions.len() {
+            for a in 0..3 {
+                let (mut plus, mut minus) = (inputs.clone(), inputs.clone());
+                plus.positions[i][a] += h;
+                minus.positions[i][a] -= h;
+                components.push((format!("p{i}[{a}]"), gradient.positions[i][a], plus, minus));
+                // Along the sphere: n ± h·(e_a − n_a n), normalised by the contact.
+                let n = inputs.normals[i];
+                let d: [f64; 3] = std::array::from_fn(|c| f64::from(c == a) - n[a] * n[c]);
+                let (mut plus, mut minus) = (inputs.clone(), inputs.clone());
+                plus.normals[i] = std::array::from_fn(|c| n[c] + h * d[c]);
+                minus.normals[i] = std::array::from_fn(|c| n[c] - h * d[c]);
+                components.push((format!("n{i}[{a}]"), gradient.normals[i][a], plus, minus));
+            }
+        }
+        let (mut plus, mut minus) = (inputs.clone(), inputs.clone());
+        plus.mu += h;
+        minus.mu -= h;
+        components.push(("mu".to_string(), gradient.friction, plus, minus));
+        let value = quality.value;
+        for (name, analytic, plus, minus) in components {
+            let (up, down) = (q1(&mut evaluator, &plus), q1(&mut evaluator, &minus));
+            let central = (up - down) / (2.0 * h);
+            let (forward, backward) = ((up - value) / h, (value - down) / h);
+            let scale = 1.0 + analytic.abs();
+            if (central - analytic).abs() <= 1e-5 * scale {
+                checked += 1;
+                continue;
+            }
+            // A kink within ±h (another face takes over on one side), or a face about to:
+            // the one-sided slopes differ, and the derivative lies between them.
+            let (low, high) = (forward.min(backward), forward.max(backward));
+            assert!(
+                high - low > 1e-4 * scale
+                    && analytic >= low - 1e-5 * scale
+                    && analytic <= high + 1e-5 * scale,
+                "grasp {grasps} (Q1 {value}), ∂/∂{name}: analytic {analytic}, central \
+                 difference {central} (one-sided {forward}, {backward})"
+            );
+            kinks += 1;
+        }
+    }
+    eprintln!(
+        "{grasps} grasps ({inside} force closure), {checked} derivatives checked, {kinks} \
+         skipped at a kink, {flagged} grasps flagged non-differentiable"
+    );
+    assert!(
+        inside >= 30 && grasps - inside >= 30,
+        "both kinds: {inside} of {grasps}"
+    );
+    assert!(
+        kinks * 50 <= checked,
+        "{kinks} kinks for {checked} derivatives"
+    );
+}
+
+/// Where Q1 is not differentiable the gradient says so: a box's axis-aligned normals (the
+/// default tangent's axis tied), the origin on the boundary (two opposite contacts without
+/// friction), and repeated contacts.
+#[test]
+fn non_differentiable_grasps_are_flagged() {
+    let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial);
+    let flagged = |evaluator: &mut Evaluator, grasp: &Grasp| {
+        let quality = evaluator.evaluate(grasp).unwrap();
+        !q1_gradient(grasp, &quality).unwrap().differentiable
+    };
+    let contact = |p: [f64; 3], n: [f64; 3]| Contact::try_new(p, n, None).unwrap();
+    let friction = FrictionModel::try_new(0.5, 8).unwrap();
+    // A box: normals ±e_x, ±e_y, ±e_z.
+    let boxed = Grasp::builder(
+        vec![
+            contact([1.0, 0.2, 0.1], [-1.0, 0.0, 0.0]),
+            contact([-1.0, -0.1, 0.3], [1.0, 0.0, 0.0]),
+            contact([0.3, 1.0, -0.2], [0.0, -1.0, 0.0]),
+            contact([0.1, 0.2, -1.0], [0.0, 0.0, 1.0]),
+        ],
+        friction,
+    )
+    .build()
+    .unwrap();
+    assert!(flagged(&mut evaluator, &boxed));
+    // Two opposite contacts: never force closure, the origin on the hull's boundary.
+    let pinch = Grasp::builder(
+        vec![
+            contact([1.0, 0.0, 0.0], [-1.0, 0.3, 0.2]),
+            contact([-1.0, 0.0, 0.0], [1.0, -0.3, -0.2]),
+        ],
+        friction,
+    )
+    .build()
+    .unwrap();
+    assert!(flagged(&mut evaluator, &pinch));
+    // A generic grasp is differentiable; listing one of its contacts twice is a tie.
+    let mut rng = Rng::new(5);
+    let generic = loop {
+        let inputs = random_inputs(&mut rng);
+        let grasp = inputs.grasp();
+        if !flagged(&mut evaluator, &grasp) {
+            break grasp;
+        }
+    };
+    let mut twice = generic.contacts().to_vec();
+    twice.extend_from_slice(generic.contacts());
+    let repeated = Grasp::builder(twice, generic.friction())
+        .torque_reference(generic.torque_reference())
+        .torque_scale(generic.torque_scale())
+        .build()
+        .unwrap();
+    assert!(flagged(&mut evaluator, &repeated));
+}
