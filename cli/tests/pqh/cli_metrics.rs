@@ -140,3 +140,45 @@ fn for_the_volume_and_grasp_matrix_metrics_the_method_decides_the_verdict_only()
         }
     }
 }
+
+/// `--gradient`: each line carries the library's gradient of its Q1, field by field; other
+/// metrics refuse the option.
+#[test]
+fn gradient_lines_are_the_librarys_gradient() {
+    use pqhull::grasp::json::parse_grasp;
+    use pqhull::grasp::quality::{Evaluator, Method, Metric};
+    let grasp = r#"{"contacts":[
+        {"position":[0.9,0.1,0.2],"normal":[-0.9,-0.1,-0.2]},
+        {"position":[-0.8,0.3,0.1],"normal":[0.8,-0.3,-0.1],"tangent":[0.1,1.0,0.3]},
+        {"position":[0.2,-0.9,0.3],"normal":[-0.2,0.9,-0.3]},
+        {"position":[0.1,0.2,-0.95],"normal":[-0.1,-0.2,0.95],"torsion":0.02}],
+        "friction":0.6,"cone_edges":6}"#
+        .replace('\n', " ");
+    let path = crate::support::run::file("gradient-grasp.json", &grasp);
+    let (ok, stdout, stderr) = pqh(&["grasp", path.to_str().unwrap(), "--gradient", "--quiet"]);
+    assert!(ok, "{stderr}");
+    let line = &lines(&stdout)[0];
+    let parsed = parse_grasp(&serde_json::from_str(&grasp).unwrap()).unwrap();
+    let quality = Evaluator::new(Metric::Q1, Method::Partial)
+        .evaluate(&parsed)
+        .unwrap();
+    let expected = pqhull::grasp::q1_gradient(&parsed, &quality).unwrap();
+    assert_eq!(line["quality"].as_f64(), Some(quality.value));
+    let gradient = &line["gradient"];
+    assert_eq!(gradient["positions"], serde_json::json!(expected.positions));
+    assert_eq!(gradient["normals"], serde_json::json!(expected.normals));
+    assert_eq!(gradient["friction"].as_f64(), Some(expected.friction));
+    assert_eq!(gradient["differentiable"], expected.differentiable);
+    assert!(expected.differentiable, "a generic grasp: {gradient}");
+    let (ok, _, stderr) = pqh(&[
+        "grasp",
+        path.to_str().unwrap(),
+        "--gradient",
+        "--metric",
+        "qinf",
+    ]);
+    assert!(
+        !ok && stderr.contains("--gradient is computed for --metric q1"),
+        "{stderr}"
+    );
+}

@@ -10,8 +10,8 @@ use pqhull::grasp::ThreadsError;
 use pqhull::grasp::json::{error_line, parse_grasp, quality_line, split_grasps};
 use pqhull::grasp::metrics::{ConeBracket, Score, Scorer, cone_bracket};
 use pqhull::grasp::ows::ObjectWrenchSpace;
-use pqhull::grasp::quality::{Method, Metric};
-use pqhull::grasp::{FrictionModel, Grasp};
+use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality};
+use pqhull::grasp::{FrictionModel, Gradient, Grasp, q1_gradient};
 use pqhull::mesh::Mesh;
 use serde_json::Value;
 use std::io::{Read, Write};
@@ -25,7 +25,9 @@ JSON array of grasps, or JSON Lines, each
 with inward unit normals. Output: one JSON line per grasp, in input order: index, force_closure,
 quality (null when the metric has no value), stats {points_processed, facets_created,
 elapsed_us}; a grasp that cannot be read or evaluated gets {\"index\":i,\"error\":\"...\"}
-and the others are still evaluated. --metric ows needs --mesh or --disturbances.
+and the others are still evaluated. --metric ows needs --mesh or --disturbances. --gradient
+(q1) adds \"gradient\": {positions, normals (one [x,y,z] per contact, input order), friction,
+differentiable}, the exact derivative of the value.
 
 Details: README.md, \"Grasp quality\", \"Object wrench space\" and \"Other metrics\" (soft
 fingers, the bracket); limits (cone_edges 3 to 1024, 1 to 256 contacts per grasp) and exit
@@ -42,6 +44,10 @@ pub struct GraspArgs {
     /// circumscribed about the friction cones (Q1 of the true cones lies between)
     #[arg(long)]
     pub cone_bracket: bool,
+    /// Q1: add the exact "gradient" of the value with respect to every contact's position and
+    /// normal and the friction coefficient (and whether the value is differentiable there)
+    #[arg(long, conflicts_with = "cone_bracket")]
+    pub gradient: bool,
     /// resist: the wrench to resist, fx,fy,fz,tx,ty,tz in the grasps' torque units (a row of
     /// --disturbances)
     #[arg(long, allow_hyphen_values = true)]
@@ -301,12 +307,29 @@ fn bracket_line(index: usize, b: &ConeBracket) -> Value {
     line
 }
 
+/// `--gradient`: Q1's line with `"gradient": {positions, normals, friction, differentiable}`.
+fn gradient_line(index: usize, (q, g): &(Quality, Gradient)) -> Value {
+    let mut line = quality_line(index, q.force_closure, Some(q.value), &q.stats);
+    line["gradient"] = serde_json::json!({
+        "positions": g.positions,
+        "normals": g.normals,
+        "friction": g.friction,
+        "differentiable": g.differentiable,
+    });
+    line
+}
+
 pub fn run(args: &GraspArgs) -> Result<(), CliError> {
     let metric = args
         .metric
         .metric(args.zero_wrench, args.wrench.as_deref())?;
     if args.cone_bracket && metric != Metric::Q1 {
         return Err(CliError::Usage("--cone-bracket is for --metric q1".into()));
+    }
+    if args.gradient && metric != Metric::Q1 {
+        return Err(CliError::Usage(
+            "--gradient is computed for --metric q1 (Q∞ and Q_OWS: not yet)".into(),
+        ));
     }
     // Options that would be silently ignored are errors instead.
     if metric != Metric::Ows && (args.mesh.is_some() || args.disturbances.is_some()) {
@@ -338,6 +361,17 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
     let readable = entries.iter().filter(|e| e.is_ok()).count();
     let lines = match metric {
         Metric::Ows => run_ows(args, method, entries, &values)?,
+        Metric::Q1 if args.gradient => evaluate_lines(
+            &entries,
+            args.threads,
+            || Evaluator::new(Metric::Q1, method),
+            |evaluator, g| {
+                let quality = evaluator.evaluate(g).map_err(|e| e.to_string())?;
+                let gradient = q1_gradient(g, &quality).map_err(|e| e.to_string())?;
+                Ok::<_, String>((quality, gradient))
+            },
+            gradient_line,
+        )?,
         Metric::Q1 if args.cone_bracket => evaluate_lines(
             &entries,
             args.threads,
