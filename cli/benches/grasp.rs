@@ -19,12 +19,15 @@
 //! * `batch`: `evaluate_batch` (Q1, partial) of 64 grasps at k = 16 inside a rayon pool of 1 and
 //!   of 2 threads (`threads=1`, `threads=2`; the pools are built outside the timing).
 //!
+//! * `gradient/k=8`, `gradient/k=32` (16 grasps each): Q1 by the partial hull alone, and with
+//!   its exact gradient (`grasp::q1_gradient`) after it.
+//!
 //! Run with `cargo bench --features qhull --bench grasp` (or without the feature for pqhull
 //! only); about 4 minutes on 2 quiet cores. One group: `... --bench grasp -- '^batch/'`.
 
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};
 use pqhull::grasp::quality::{Evaluator, Method, Metric, evaluate_batch};
-use pqhull::grasp::{FrictionModel, Grasp};
+use pqhull::grasp::{FrictionModel, Grasp, q1_gradient};
 use pqhull_cli::bench::workloads::{BAR_FRICTION, bar_grasps};
 use std::hint::black_box;
 use std::time::Duration;
@@ -131,6 +134,36 @@ fn qinf(c: &mut Criterion) {
     );
 }
 
+fn gradient(c: &mut Criterion) {
+    for k in [8, 32] {
+        let set = grasps(16, k);
+        let mut group = c.benchmark_group(format!("gradient/k={k}"));
+        group.throughput(Throughput::Elements(set.len() as u64));
+        let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial);
+        group.bench_function("value", |b| {
+            b.iter(|| {
+                for grasp in &set {
+                    black_box(
+                        evaluator
+                            .evaluate(black_box(grasp))
+                            .expect("evaluable")
+                            .value,
+                    );
+                }
+            })
+        });
+        group.bench_function("value+gradient", |b| {
+            b.iter(|| {
+                for grasp in &set {
+                    let quality = evaluator.evaluate(black_box(grasp)).expect("evaluable");
+                    black_box(q1_gradient(grasp, &quality).expect("its own Q1"));
+                }
+            })
+        });
+        group.finish();
+    }
+}
+
 fn batch(c: &mut Criterion) {
     let set = grasps(64, 16);
     let mut group = c.benchmark_group("batch");
@@ -154,6 +187,6 @@ fn batch(c: &mut Criterion) {
 criterion_group! {
     name = benches;
     config = configure();
-    targets = q1, qinf, batch
+    targets = q1, qinf, batch, gradient
 }
 criterion_main!(benches);
