@@ -1,16 +1,18 @@
-//! Grasps as arrays: `q1`, `qinf` on one grasp, and `evaluate` on a batch (GIL released).
+//! Grasps as arrays: `q1`, `qinf` on one grasp, and `evaluate` on a batch (GIL released);
+//! `gradient=True` (Q1) adds the exact gradient (crate::gradient).
 
 use crate::errors;
+use crate::gradient::{self, Columns};
 use crate::ows::ObjectWrenchSpace;
 use numpy::ndarray::{ArrayView1, ArrayView2};
 use numpy::{
-    PyArray1, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArrayMethods,
-    ToPyArray,
+    PyArray1, PyArray2, PyArray3, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3,
+    PyUntypedArrayMethods, ToPyArray,
 };
 use pqhull::grasp::metrics::{Score, Scorer};
 use pqhull::grasp::ows::{ObjectWrenchSpace as Space, evaluate_ows_batch};
 use pqhull::grasp::quality::{Method, Metric, NameError, QualityError, evaluate_batch};
-use pqhull::grasp::{Contact, FrictionModel, Grasp};
+use pqhull::grasp::{Contact, FrictionModel, Gradient, Grasp, q1_gradient};
 use pyo3::prelude::*;
 
 /// One grasp's quality.
@@ -27,15 +29,33 @@ pub struct Quality {
     facets_created: usize,
     /// Time spent in the library (µs), to tell Python's per-call overhead from the work.
     elapsed_us: f64,
+    /// `q1(..., gradient=True)`: ∂Q1/∂p_i, an (m, 3) array in input order; None otherwise.
+    gradient_positions: Option<Py<PyArray2<f64>>>,
+    /// `q1(..., gradient=True)`: ∂Q1/∂n_i with respect to the unit normal (each row orthogonal
+    /// to it; for a normal given with length L, divide by L), (m, 3); None otherwise.
+    gradient_normals: Option<Py<PyArray2<f64>>>,
+    /// `q1(..., gradient=True)`: ∂Q1/∂μ; None otherwise.
+    gradient_friction: Option<f64>,
+    /// `q1(..., gradient=True)`: whether Q1 is differentiable at the grasp (False: the numbers
+    /// are the derivative along the deciding face found); None otherwise.
+    differentiable: Option<bool>,
 }
 
 #[pymethods]
 impl Quality {
     fn __repr__(&self) -> String {
+        let bool_name = |b: bool| if b { "True" } else { "False" };
+        // With gradient=True, the derivative's summary too (the arrays are attributes).
+        let gradient = match (self.gradient_friction, self.differentiable) {
+            (Some(f), Some(d)) => {
+                format!(", gradient_friction={f:e}, differentiable={}", bool_name(d))
+            }
+            _ => String::new(),
+        };
         format!(
-            "Quality(value={}, force_closure={}, points_processed={}, facets_created={})",
+            "Quality(value={}, force_closure={}, points_processed={}, facets_created={}{gradient})",
             self.value.map_or("None".to_string(), |v| format!("{v:e}")),
-            if self.force_closure { "True" } else { "False" },
+            bool_name(self.force_closure),
             self.points_processed,
             self.facets_created
         )
@@ -51,6 +71,14 @@ pub struct Batch {
     errors: Vec<(usize, String)>,
     /// Wall time of the library's batch evaluation alone (s): the rest of the call is Python's.
     evaluation_s: f64,
+    /// `gradient=True` (Q1): ∂Q1/∂p, (N, m, 3), NaN for a bad row; None otherwise.
+    gradient_positions: Option<Py<PyArray3<f64>>>,
+    /// `gradient=True`: ∂Q1/∂n with respect to the unit normals, (N, m, 3), NaN for a bad row.
+    gradient_normals: Option<Py<PyArray3<f64>>>,
+    /// `gradient=True`: ∂Q1/∂μ, (N,), NaN for a bad row.
+    gradient_friction: Option<Py<PyArray1<f64>>>,
+    /// `gradient=True`: whether Q1 is differentiable at each grasp, (N,), False for a bad row.
+    differentiable: Option<Py<PyArray1<bool>>>,
 }
 
 /// The torque frame and friction shared by every grasp of a call.
@@ -228,6 +256,25 @@ impl Quality {
             points_processed: s.stats.points_processed,
             facets_created: s.stats.facets_created,
             elapsed_us: s.stats.elapsed.as_secs_f64() * 1e6,
+            gradient_positions: None,
+            gradient_normals: None,
+            gradient_friction: None,
+            differentiable: None,
+        }
+    }
+
+    /// Q1 with its gradient ([`gradient::One`]).
+    fn of_q1_gradient(q: &pqhull::grasp::quality::Quality, g: gradient::One) -> Self {
+        Quality {
+            value: Some(q.value),
+            force_closure: q.force_closure,
+            points_processed: q.stats.points_processed,
+            facets_created: q.stats.facets_created,
+            elapsed_us: q.stats.elapsed.as_secs_f64() * 1e6,
+            gradient_positions: Some(g.positions),
+            gradient_normals: Some(g.normals),
+            gradient_friction: Some(g.friction),
+            differentiable: Some(g.differentiable),
         }
     }
 }
@@ -270,10 +317,11 @@ pub(crate) fn single(
 }
 
 /// q1(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
-/// torque_scale=None, method="partial"): Ferrari–Canny Q1 of one grasp, exact on its wrenches.
+/// torque_scale=None, method="partial", gradient=False): Ferrari–Canny Q1 of one grasp, exact on
+/// its wrenches; with `gradient`, also its exact gradient (the `gradient_*` attributes).
 #[pyfunction]
 #[pyo3(signature = (positions, normals, tangents=None, *, torsion=None, friction, cone_edges,
-                    torque_reference=None, torque_scale=None, method="partial"))]
+                    torque_reference=None, torque_scale=None, method="partial", gradient=false))]
 #[allow(clippy::too_many_arguments)] // the Python signature
 pub fn q1(
     py: Python<'_>,
@@ -286,9 +334,26 @@ pub fn q1(
     torque_reference: Option<PyReadonlyArray1<'_, f64>>,
     torque_scale: Option<f64>,
     method: &str,
+    gradient: bool,
 ) -> PyResult<Quality> {
-    single(
-        py,
+    if !gradient {
+        return single(
+            py,
+            positions,
+            normals,
+            tangents,
+            torsion,
+            friction,
+            cone_edges,
+            torque_reference,
+            torque_scale,
+            Metric::Q1,
+            method,
+            None,
+        );
+    }
+    let method = method_of(method, Metric::Q1)?;
+    let (g, _) = one_grasp(
         positions,
         normals,
         tangents,
@@ -297,10 +362,14 @@ pub fn q1(
         cone_edges,
         torque_reference,
         torque_scale,
-        Metric::Q1,
-        method,
-        None,
-    )
+    )?;
+    let (quality, gradient) = py
+        .detach(|| gradient::q1_and_gradient(&g, method))
+        .map_err(gradient::Failure::into_py)?;
+    Ok(Quality::of_q1_gradient(
+        &quality,
+        gradient::One::new(py, &gradient),
+    ))
 }
 
 /// qinf(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
@@ -375,13 +444,15 @@ pub fn ows(
 }
 
 /// evaluate(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
-/// torque_scale=None, metric="q1", method="partial", with_zero_wrench=False, threads=None):
-/// the metric of N grasps of m contacts ((N, m, 3) arrays; `friction` one value or one per
-/// grasp) on all cores (or `threads`), the GIL released. A bad row gives NaN and an error entry.
+/// torque_scale=None, metric="q1", method="partial", with_zero_wrench=False, threads=None,
+/// gradient=False): the metric of N grasps of m contacts ((N, m, 3) arrays; `friction` one value
+/// or one per grasp) on all cores (or `threads`), the GIL released. A bad row gives NaN and an
+/// error entry. `gradient` (q1 only) adds Q1's gradient per row, NaN for a bad row.
 #[pyfunction]
 #[pyo3(signature = (positions, normals, tangents=None, *, torsion=None, friction, cone_edges,
                     torque_reference=None, torque_scale=None, metric="q1", method="partial",
-                    with_zero_wrench=false, space=None, threads=None, wrench=None))]
+                    with_zero_wrench=false, space=None, threads=None, wrench=None,
+                    gradient=false))]
 #[allow(clippy::too_many_arguments)] // the Python signature
 pub fn evaluate(
     py: Python<'_>,
@@ -399,6 +470,7 @@ pub fn evaluate(
     space: Option<PyRef<'_, ObjectWrenchSpace>>,
     threads: Option<usize>,
     wrench: Option<PyReadonlyArray1<'_, f64>>,
+    gradient: bool,
 ) -> PyResult<Batch> {
     let shape = positions.shape().to_vec();
     if shape.len() != 3 || shape[2] != 3 {
@@ -442,7 +514,11 @@ pub fn evaluate(
         Some(w) => Some(w.as_slice().map_err(|e| errors::input(e.to_string()))?),
         None => None,
     };
-    let metric = metric_of(metric, with_zero_wrench, wrench)?;
+    let name = metric;
+    let metric = metric_of(name, with_zero_wrench, wrench)?;
+    if gradient && metric != Metric::Q1 {
+        return Err(gradient::only_q1(name));
+    }
     let method = method_of(method, metric)?;
     let space = space.as_ref().map(|s| &s.inner);
     if (metric == Metric::Ows) != space.is_some() {
@@ -482,14 +558,28 @@ pub fn evaluate(
     let mut good = Vec::with_capacity(n);
     let built: Vec<Result<(), String>> =
         built.into_iter().map(|g| g.map(|g| good.push(g))).collect();
-    // Each row as (value, force closure): Q_OWS has no value for a grasp not in force closure.
-    let run = || -> Vec<Result<(Option<f64>, bool), String>> {
+    // Each row as (value, force closure, gradient): Q_OWS has no value for a grasp not in force
+    // closure; only Q1 with `gradient` has a gradient.
+    type Row = (Option<f64>, bool, Option<Gradient>);
+    let run = || -> Vec<Result<Row, String>> {
         use rayon::prelude::*;
         match (metric, space) {
+            // Q1 with its gradient: the batch's values, then each one's gradient beside it.
+            (Metric::Q1, _) if gradient => {
+                let values = evaluate_batch(&good, metric, method);
+                good.par_iter()
+                    .zip(values.into_par_iter())
+                    .map(|(g, r)| {
+                        let q = r.map_err(|e| e.to_string())?;
+                        let d = q1_gradient(g, &q).map_err(|e| gradient::message(&e))?;
+                        Ok((Some(q.value), q.force_closure, Some(d)))
+                    })
+                    .collect()
+            }
             (Metric::Q1 | Metric::QInf { .. }, _) => evaluate_batch(&good, metric, method)
                 .into_iter()
                 .map(|r| {
-                    r.map(|q| (Some(q.value), q.force_closure))
+                    r.map(|q| (Some(q.value), q.force_closure, None))
                         .map_err(|e| e.to_string())
                 })
                 .collect(),
@@ -497,7 +587,7 @@ pub fn evaluate(
             (_, Some(space)) => evaluate_ows_batch(&good, space, method)
                 .into_iter()
                 .map(|r| {
-                    r.map(|q| (q.value, q.force_closure))
+                    r.map(|q| (q.value, q.force_closure, None))
                         .map_err(|e| e.to_string())
                 })
                 .collect(),
@@ -509,7 +599,7 @@ pub fn evaluate(
                     |scorer, g| {
                         let score = scorer.as_mut().map_err(|e| e.to_string())?.score(g);
                         score
-                            .map(|s| (s.value, s.force_closure))
+                            .map(|s| (s.value, s.force_closure, None))
                             .map_err(|e| e.to_string())
                     },
                 )
@@ -525,25 +615,38 @@ pub fn evaluate(
     let mut quality = vec![f64::NAN; n];
     let mut force_closure = vec![false; n];
     let mut errors_out = Vec::new();
+    let mut gradients = gradient.then(|| Columns::new(n, shape[1]));
     let mut next = results.into_iter();
     for (i, g) in built.iter().enumerate() {
         match g {
             Err(message) => errors_out.push((i, format!("row {i}: {message}"))),
             Ok(_) => match next.next() {
-                Some(Ok((value, closure))) => {
+                Some(Ok((value, closure, d))) => {
                     // NaN without an error entry: Q_OWS of a grasp not in force closure.
                     quality[i] = value.unwrap_or(f64::NAN);
                     force_closure[i] = closure;
+                    if let (Some(columns), Some(d)) = (gradients.as_mut(), d) {
+                        columns.set(i, &d);
+                    }
                 }
                 Some(Err(e)) => errors_out.push((i, format!("row {i}: {e}"))),
                 None => errors_out.push((i, format!("row {i}: not evaluated"))),
             },
         }
     }
+    let (gradient_positions, gradient_normals, gradient_friction, differentiable) =
+        match gradients.map(|c| c.into_arrays(py)) {
+            Some((p, n, f, d)) => (Some(p), Some(n), Some(f), Some(d)),
+            None => (None, None, None, None),
+        };
     Ok(Batch {
         quality: quality.to_pyarray(py).unbind(),
         force_closure: force_closure.to_pyarray(py).unbind(),
         errors: errors_out,
         evaluation_s,
+        gradient_positions,
+        gradient_normals,
+        gradient_friction,
+        differentiable,
     })
 }

@@ -9,6 +9,7 @@
 
 mod convex_hull;
 mod errors;
+mod gradient;
 mod grasps;
 mod hull;
 mod metrics;

@@ -21,6 +21,12 @@
 //! tie, the origin on the boundary — the value is not differentiable there; the same formula
 //! then gives one subgradient-like element (the derivative along the face found) and the
 //! result says so.
+//!
+//! Not detected: a tie between two *different* faces at the same distance (a grasp with a
+//! symmetry, whose nearest facet and its mirror image are equally near). The reported value's
+//! deciding face is one of them, the other is not seen from it, and `differentiable` stays true;
+//! the numbers are then the one-sided derivative along the face found (what moving into that
+//! face's side gives), not a gradient.
 
 use super::quality::Quality;
 use super::{Contact, Grasp};
@@ -124,7 +130,11 @@ pub fn q1_gradient(grasp: &Grasp, quality: &Quality) -> Result<Gradient, Gradien
     let distance = norm(x);
     let sign = if value > 0.0 { 1.0 } else { -1.0 };
     let u: [f64; 6] = std::array::from_fn(|c| sign * x[c] / distance);
-    let mut differentiable = value != 0.0 && distance > 0.0 && value.abs() > TIE * quality.scale;
+    if !(distance > 0.0 && distance.is_finite()) {
+        // The deciding face passes through the origin: no direction, Q1 = 0 on the boundary.
+        return Ok(Gradient::zero(grasp.contact_count(), false));
+    }
+    let mut differentiable = value != 0.0 && value.abs() > TIE * quality.scale;
     // The whole face along u*: every wrench on the supporting plane u*·w = V. The deciding
     // wrenches are one simplex of it; a friction pyramid with three wrenches on the plane lies
     // in it whole (its k edges span one 2-flat, and stay in one as the inputs move), so the
@@ -147,36 +157,52 @@ pub fn q1_gradient(grasp: &Grasp, quality: &Quality) -> Result<Gradient, Gradien
         .all(|&j| wrenches.iter().filter(|w| **w == wrenches[j]).count() == 1);
     let indices = support;
 
-    let m = grasp.contact_count();
-    let friction = grasp.friction();
-    let (mu, k) = (friction.friction(), friction.cone_edges());
-    let rho = grasp.torque_scale();
-    let reference = grasp.torque_reference();
-    let (u_f, u_t) = ([u[0], u[1], u[2]], [u[3], u[4], u[5]]);
-    let mut gradient = Gradient {
-        positions: vec![[0.0; 3]; m],
-        normals: vec![[0.0; 3]; m],
-        friction: 0.0,
-        differentiable,
-    };
-    // u*·dw for a change (df, dτ) of a wrench's force and torque.
-    let along = |df: [f64; 3], dtau: [f64; 3]| dot(u_f, df) + dot(u_t, dtau) / rho;
+    let mut gradient = Gradient::zero(grasp.contact_count(), differentiable);
     for (&index, &lambda) in indices.iter().zip(&weights) {
-        let (i, edge, twist_sign) = locate(grasp, index);
+        let (i, within) = contact_of(grasp, index);
+        gradient.add_wrench(grasp, &u, i, within, lambda);
+    }
+    Ok(gradient)
+}
+
+impl Gradient {
+    fn zero(contacts: usize, differentiable: bool) -> Self {
+        Gradient {
+            positions: vec![[0.0; 3]; contacts],
+            normals: vec![[0.0; 3]; contacts],
+            friction: 0.0,
+            differentiable,
+        }
+    }
+
+    /// Adds `λ u*·dw` for wrench `within` of contact `i` (its position in
+    /// [`Grasp::contact_wrenches`]; the zero wrench of Q∞, past them, adds nothing).
+    fn add_wrench(&mut self, grasp: &Grasp, u: &[f64; 6], i: usize, within: usize, lambda: f64) {
+        let friction = grasp.friction();
+        let (mu, k) = (friction.friction(), friction.cone_edges());
         let contact = &grasp.contacts()[i];
+        let (edge, twist_sign) = match (contact.is_soft(), within < k) {
+            _ if within >= grasp.contact_wrench_count(i) => return, // the zero wrench
+            (false, _) => (within, 0.0),
+            (true, true) => (within, 1.0),
+            (true, false) => (within - k, -1.0),
+        };
+        let rho = grasp.torque_scale();
+        let (u_f, u_t) = ([u[0], u[1], u[2]], [u[3], u[4], u[5]]);
+        // u*·dw for a change (df, dτ) of the wrench's force and torque.
+        let along = |df: [f64; 3], dtau: [f64; 3]| dot(u_f, df) + dot(u_t, dtau) / rho;
         let (n, t, b) = (contact.normal(), contact.tangent(), contact.bitangent());
         let (sin, cos) = (2.0 * PI * edge as f64 / k as f64).sin_cos();
         let g = add(scale(t, cos), scale(b, sin));
         let f = add(n, scale(g, mu));
-        let r = sub(contact.position(), reference);
+        let r = sub(contact.position(), grasp.torque_reference());
         // Position: u_τ·(dp × f)/ρ = dp·(f × u_τ)/ρ.
-        let dp = scale(cross(f, u_t), lambda / rho);
-        gradient.positions[i] = add(gradient.positions[i], dp);
+        self.positions[i] = add(self.positions[i], scale(cross(f, u_t), lambda / rho));
         // Friction: df = g.
-        gradient.friction += lambda * along(g, cross(r, g));
+        self.friction += lambda * along(g, cross(r, g));
         // Normal: along each axis projected on the sphere, with the tangent re-derived.
         let (tangent_of, tie) = tangent_derivative(contact);
-        gradient.differentiable &= !tie;
+        self.differentiable &= !tie;
         for axis in 0..3 {
             let mut e = [0.0; 3];
             e[axis] = 1.0;
@@ -185,26 +211,164 @@ pub fn q1_gradient(grasp: &Grasp, quality: &Quality) -> Result<Gradient, Gradien
             let db = add(cross(dn, t), cross(n, dt));
             let df = add(dn, scale(add(scale(dt, cos), scale(db, sin)), mu));
             let dtau = add(cross(r, df), scale(dn, twist_sign * contact.torsion()));
-            gradient.normals[i][axis] += lambda * along(df, dtau);
+            self.normals[i][axis] += lambda * along(df, dtau);
         }
+    }
+}
+
+/// The most tuples of per-contact faces [`qinf_gradient`] sums (the face of the Minkowski sum
+/// along the deciding direction): a few per contact in general, k for a whole pyramid.
+const MAX_FACE_TUPLES: usize = 1 << 16;
+
+/// The gradient of `quality`, this grasp's Q∞ (`with_zero_wrench` as it was evaluated), with
+/// respect to every contact's position and normal and the friction coefficient.
+///
+/// Q∞ is the signed distance from the origin to the boundary of the Minkowski sum `⊕_i W_i` of
+/// the contacts' wrench sets, `min_{|u|=1} Σ_i max_{w ∈ W_i} u·w`: the same theorem as for
+/// [`q1_gradient`], on the sum's face along the deciding direction `u*`, which is the sum of
+/// each contact's face `F_i = argmax_{W_i} u*·w`. Its point nearest the origin, by Wolfe's
+/// algorithm over the (few) sums of one wrench of each `F_i`, has weights on those sums; each
+/// wrench's weight is the total of the sums it is in.
+///
+/// ```
+/// use pqhull::grasp::quality::{Evaluator, Method, Metric};
+/// use pqhull::grasp::{Contact, FrictionModel, Grasp, qinf_gradient};
+/// let contacts = [[0.9, 0.1, 0.2], [-0.8, 0.3, 0.1], [0.2, -0.9, 0.3], [0.1, 0.2, -0.95]]
+///     .map(|p| Contact::try_new(p, p.map(|x| -x), None).unwrap());
+/// let grasp = Grasp::builder(contacts.to_vec(), FrictionModel::try_new(0.6, 6)?).build()?;
+/// let metric = Metric::QInf { with_zero_wrench: false };
+/// let qinf = Evaluator::new(metric, Method::Partial).evaluate(&grasp)?;
+/// let gradient = qinf_gradient(&grasp, &qinf, false)?;
+/// assert_eq!(gradient.normals.len(), 4);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+///
+/// # Errors
+/// [`GradientError::NoDecidingFace`] when the quality names no deciding wrench.
+pub fn qinf_gradient(
+    grasp: &Grasp,
+    quality: &Quality,
+    with_zero_wrench: bool,
+) -> Result<Gradient, GradientError> {
+    let deciding = quality.deciding_wrenches();
+    if deciding.is_empty() {
+        return Err(GradientError::NoDecidingFace);
+    }
+    let (_, x) = nearest_in_affine_hull(deciding);
+    let value = quality.value;
+    let distance = norm(x);
+    let sign = if value > 0.0 { 1.0 } else { -1.0 };
+    let u: [f64; 6] = std::array::from_fn(|c| sign * x[c] / distance);
+    let m = grasp.contact_count();
+    if !(distance > 0.0 && distance.is_finite()) {
+        // The deciding face holds the origin (the zero wrench's sum): Q∞ = 0 on the boundary.
+        return Ok(Gradient::zero(m, false));
+    }
+    let mut differentiable = value != 0.0 && value.abs() > TIE * quality.scale;
+    // Each contact's face along u*, and the support value it adds.
+    let mut faces: Vec<Vec<(usize, [f64; 6])>> = Vec::with_capacity(m);
+    let mut support = 0.0;
+    for i in 0..m {
+        let mut set = vec![[0.0; 6]; grasp.contact_wrench_count(i)];
+        grasp.contact_wrenches(i, &mut set);
+        if with_zero_wrench {
+            set.push([0.0; 6]);
+        }
+        let size = set.iter().map(|w| dot6(w, w)).fold(0.0, f64::max).sqrt();
+        let best = set
+            .iter()
+            .map(|w| dot6(&u, w))
+            .fold(f64::NEG_INFINITY, f64::max);
+        support += best;
+        faces.push(
+            set.iter()
+                .enumerate()
+                .filter(|(_, w)| dot6(&u, w) >= best - ON_PLANE * size)
+                .map(|(j, w)| (j, *w))
+                .collect(),
+        );
+    }
+    // The deciding direction must be the one whose support is the value.
+    differentiable &= (support - value).abs() <= TIE * quality.scale;
+    let count = faces
+        .iter()
+        .try_fold(1usize, |n, f| n.checked_mul(f.len()))
+        .filter(|&n| n <= MAX_FACE_TUPLES);
+    let mut gradient = Gradient::zero(m, false);
+    let Some(count) = count else {
+        return Ok(gradient); // a face too large to sum: reported as not differentiable
+    };
+    // Every sum of one wrench of each face (odometer), and its tuple.
+    let mut sums = Vec::with_capacity(count);
+    let mut tuples = Vec::with_capacity(count * m);
+    let mut position = vec![0usize; m];
+    loop {
+        let mut total = [0.0; 6];
+        for (face, &p) in faces.iter().zip(&position) {
+            for (t, c) in total.iter_mut().zip(&face[p].1) {
+                *t += c;
+            }
+        }
+        sums.push(total);
+        tuples.extend_from_slice(&position);
+        let mut i = m;
+        let advanced = loop {
+            if i == 0 {
+                break false;
+            }
+            i -= 1;
+            position[i] += 1;
+            if position[i] < faces[i].len() {
+                break true;
+            }
+            position[i] = 0;
+        };
+        if !advanced {
+            break;
+        }
+    }
+    let nearest = min_norm_point(sums.len(), |s| sums[s], &[0.0; 6]);
+    let chosen: Vec<usize> = nearest.support().to_vec();
+    let face: Vec<[f64; 6]> = chosen.iter().map(|&s| sums[s]).collect();
+    let (weights, foot) = nearest_in_affine_hull(&face);
+    differentiable &=
+        norm(sub6(&foot, &x)) <= TIE * quality.scale && weights.iter().all(|&l| l > TIE);
+    // A generic face of the sum is the sum of faces whose dimensions add up to its own; more
+    // (three whole pyramids tied along u*, say) is a degenerate direction where a slight move
+    // of the inputs breaks the ties one way or the other.
+    // A contact's set spans a 2-flat (its pyramid), one more dimension for a soft finger's
+    // second pyramid and for the zero wrench.
+    let dimensions: usize = faces
+        .iter()
+        .zip(grasp.contacts())
+        .map(|(f, c)| {
+            (f.len() - 1).min(2 + usize::from(c.is_soft()) + usize::from(with_zero_wrench))
+        })
+        .sum();
+    differentiable &= dimensions + 1 == chosen.len();
+    gradient.differentiable = differentiable;
+    for (&s, &lambda) in chosen.iter().zip(&weights) {
+        for i in 0..m {
+            let within = faces[i][tuples[s * m + i]].0;
+            gradient.add_wrench(grasp, &u, i, within, lambda);
+        }
+    }
+    // Repeated contacts: their wrench sets are equal, a tie between their summands.
+    let contacts = grasp.contacts();
+    if (0..m).any(|i| (i + 1..m).any(|j| contacts[i] == contacts[j])) {
+        gradient.differentiable = false;
     }
     Ok(gradient)
 }
 
-/// The contact, cone edge and torsion sign (±1, 0 for a hard finger) of wrench `index` in
-/// [`Grasp::wrenches`]' order.
-fn locate(grasp: &Grasp, index: usize) -> (usize, usize, f64) {
-    let k = grasp.friction().cone_edges();
+/// The contact of wrench `index` in [`Grasp::wrenches`]' order, and its position among that
+/// contact's wrenches.
+fn contact_of(grasp: &Grasp, index: usize) -> (usize, usize) {
     let mut start = 0;
     for i in 0..grasp.contact_count() {
         let count = grasp.contact_wrench_count(i);
         if index < start + count {
-            let j = index - start;
-            return match (grasp.contacts()[i].is_soft(), j < k) {
-                (false, _) => (i, j, 0.0),
-                (true, true) => (i, j, 1.0),
-                (true, false) => (i, j - k, -1.0),
-            };
+            return (i, index - start);
         }
         start += count;
     }

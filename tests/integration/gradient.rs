@@ -1,11 +1,12 @@
-//! `grasp::q1_gradient` against central finite differences of the reported Q1 itself, on
+//! `grasp::q1_gradient` and `qinf_gradient` against central finite differences of the reported
+//! value itself, on
 //! seeded generic grasps (force closure and not; default and given tangents; hard and soft
 //! fingers), and the non-differentiable cases flagged.
 
 use crate::support::grasps::{Shape, random_grasp};
 use pqhull::geometry::Rng;
 use pqhull::grasp::quality::{Evaluator, Method, Metric};
-use pqhull::grasp::{Contact, FrictionModel, Grasp, q1_gradient};
+use pqhull::grasp::{Contact, FrictionModel, Gradient, Grasp, q1_gradient, qinf_gradient};
 
 /// The inputs of a grasp, to perturb one at a time.
 #[derive(Clone)]
@@ -37,7 +38,7 @@ impl Inputs {
     }
 }
 
-fn q1(evaluator: &mut Evaluator, inputs: &Inputs) -> f64 {
+fn value_of(evaluator: &mut Evaluator, inputs: &Inputs) -> f64 {
     evaluator.evaluate(&inputs.grasp()).expect("Q1").value
 }
 
@@ -79,24 +80,30 @@ fn random_inputs(rng: &mut Rng) -> Inputs {
     }
 }
 
-#[test]
-fn q1_gradient_is_the_finite_difference_of_q1() {
-    let mut rng = Rng::new(2812);
-    let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial);
+/// Central differences of `metric` against its analytic gradient on `count` differentiable
+/// random grasps; returns (grasps, force closure, derivatives checked, kinks, flagged).
+fn check_against_differences(
+    metric: Metric,
+    count: usize,
+    seed: u64,
+    gradient_of: impl Fn(&Grasp, &pqhull::grasp::quality::Quality) -> Gradient,
+) -> (usize, usize, usize, usize, usize) {
+    let mut rng = Rng::new(seed);
+    let mut evaluator = Evaluator::new(metric, Method::Partial);
     let (mut grasps, mut inside, mut flagged, mut checked, mut kinks) = (0, 0, 0, 0, 0);
     let h = 1e-6;
-    while grasps < 300 {
+    while grasps < count {
         let inputs = random_inputs(&mut rng);
         let grasp = inputs.grasp();
         let quality = evaluator.evaluate(&grasp).unwrap();
-        let gradient = q1_gradient(&grasp, &quality).unwrap();
+        let gradient = gradient_of(&grasp, &quality);
         if !gradient.differentiable {
             flagged += 1;
             continue;
         }
         grasps += 1;
         inside += usize::from(quality.force_closure);
-        // Each input in turn: the analytic derivative and central differences of Q1 itself.
+        // Each input in turn: the analytic derivative and central differences of the value.
         let mut components: Vec<(String, f64, Inputs, Inputs)> = Vec::new();
         for i in 0..inputs.positions.len() {
             for a in 0..3 {
@@ -119,7 +126,10 @@ fn q1_gradient_is_the_finite_difference_of_q1() {
         components.push(("mu".to_string(), gradient.friction, plus, minus));
         let value = quality.value;
         for (name, analytic, plus, minus) in components {
-            let (up, down) = (q1(&mut evaluator, &plus), q1(&mut evaluator, &minus));
+            let (up, down) = (
+                value_of(&mut evaluator, &plus),
+                value_of(&mut evaluator, &minus),
+            );
             let central = (up - down) / (2.0 * h);
             let (forward, backward) = ((up - value) / h, (value - down) / h);
             let scale = 1.0 + analytic.abs();
@@ -131,27 +141,56 @@ fn q1_gradient_is_the_finite_difference_of_q1() {
             // the one-sided slopes differ, and the derivative lies between them.
             let (low, high) = (forward.min(backward), forward.max(backward));
             assert!(
-                high - low > 1e-4 * scale
+                high - low > 2e-5 * scale
                     && analytic >= low - 1e-5 * scale
                     && analytic <= high + 1e-5 * scale,
-                "grasp {grasps} (Q1 {value}), ∂/∂{name}: analytic {analytic}, central \
-                 difference {central} (one-sided {forward}, {backward})"
+                "{metric:?}, grasp {grasps} (value {value}), ∂/∂{name}: analytic {analytic}, \
+                 central difference {central} (one-sided {forward}, {backward})"
             );
             kinks += 1;
         }
     }
     eprintln!(
-        "{grasps} grasps ({inside} force closure), {checked} derivatives checked, {kinks} \
-         skipped at a kink, {flagged} grasps flagged non-differentiable"
-    );
-    assert!(
-        inside >= 30 && grasps - inside >= 30,
-        "both kinds: {inside} of {grasps}"
+        "{metric:?}: {grasps} grasps ({inside} force closure), {checked} derivatives checked, \
+         {kinks} at a kink, {flagged} grasps flagged non-differentiable"
     );
     assert!(
         kinks * 50 <= checked,
         "{kinks} kinks for {checked} derivatives"
     );
+    (grasps, inside, checked, kinks, flagged)
+}
+
+#[test]
+fn q1_gradient_is_the_finite_difference_of_q1() {
+    let (grasps, inside, ..) =
+        check_against_differences(Metric::Q1, 300, 2812, |g, q| q1_gradient(g, q).unwrap());
+    assert!(
+        inside >= 30 && grasps - inside >= 30,
+        "both kinds: {inside} of {grasps}"
+    );
+}
+
+#[test]
+fn qinf_gradient_is_the_finite_difference_of_qinf() {
+    // Q∞ is rarely force closure on these grasps: more of them.
+    let plain = Metric::QInf {
+        with_zero_wrench: false,
+    };
+    let (grasps, inside, ..) =
+        check_against_differences(plain, 150, 2813, |g, q| qinf_gradient(g, q, false).unwrap());
+    assert!(
+        inside >= 8 && grasps - inside >= 30,
+        "both kinds: {inside} of {grasps}"
+    );
+    // With the zero wrench the sum holds the origin: a grasp that is not force closure has
+    // Q∞ = 0 on the boundary, flagged; the others are all force closure.
+    let zero = Metric::QInf {
+        with_zero_wrench: true,
+    };
+    let (grasps, inside, ..) =
+        check_against_differences(zero, 20, 2814, |g, q| qinf_gradient(g, q, true).unwrap());
+    assert_eq!(inside, grasps);
 }
 
 /// Where Q1 is not differentiable the gradient says so: a box's axis-aligned normals (the

@@ -170,15 +170,36 @@ fn gradient_lines_are_the_librarys_gradient() {
     assert_eq!(gradient["friction"].as_f64(), Some(expected.friction));
     assert_eq!(gradient["differentiable"], expected.differentiable);
     assert!(expected.differentiable, "a generic grasp: {gradient}");
-    let (ok, _, stderr) = pqh(&[
+    // Q∞ too, with the library's Q∞ gradient; the other metrics refuse the option.
+    let (ok, stdout, stderr) = pqh(&[
         "grasp",
         path.to_str().unwrap(),
         "--gradient",
         "--metric",
         "qinf",
+        "--quiet",
+    ]);
+    assert!(ok, "{stderr}");
+    let metric = Metric::QInf {
+        with_zero_wrench: false,
+    };
+    let qinf = Evaluator::new(metric, Method::Partial)
+        .evaluate(&parsed)
+        .unwrap();
+    let expected = pqhull::grasp::qinf_gradient(&parsed, &qinf, false).unwrap();
+    assert_eq!(
+        lines(&stdout)[0]["gradient"]["positions"],
+        serde_json::json!(expected.positions)
+    );
+    let (ok, _, stderr) = pqh(&[
+        "grasp",
+        path.to_str().unwrap(),
+        "--gradient",
+        "--metric",
+        "volume",
     ]);
     assert!(
-        !ok && stderr.contains("--gradient is computed for --metric q1"),
+        !ok && stderr.contains("--gradient is computed for --metric q1 and qinf"),
         "{stderr}"
     );
 }

@@ -223,16 +223,37 @@ def _frame(torque_reference):
 
 
 def q1(positions, normals, tangents=None, *, torsion=None, friction, cone_edges, torque_reference=None,
-       torque_scale=None, method="partial"):
+       torque_scale=None, method="partial", gradient=False):
     """Ferrari-Canny Q1 of one grasp of m contacts: (m, 3) positions and inward normals,
     optional (m, 3) tangents; exact on its wrenches. Returns a Quality (`value`,
-    `force_closure`, counters)."""
+    `force_closure`, counters).
+
+    With ``gradient=True`` the Quality also carries Q1's exact gradient (Danskin's theorem on
+    the deciding face, the library's ``grasp::q1_gradient``), with respect to the grasp's own
+    inputs:
+
+    * ``gradient_positions``: (m, 3) array, dQ1/dp_i, contacts in input order;
+    * ``gradient_normals``: (m, 3) array, dQ1/dn_i with respect to the *unit* normal: each row
+      is orthogonal to n_i (moving a normal along itself changes nothing); the tangent is
+      re-derived from the moved normal as the contact does (a given tangent orthogonalised
+      against it, or the default one). For a normal passed with length L, divide by L to get
+      the derivative with respect to the array you passed;
+    * ``gradient_friction``: float, dQ1/dmu;
+    * ``differentiable``: bool. False where Q1 is not differentiable -- the origin on the hull's
+      boundary, a tie between faces, a zero weight, repeated contacts, or a default tangent whose
+      axis is tied (axis-aligned normals): the numbers are then the derivative along the
+      deciding face found, one element of the generalised gradient.
+
+    The torque frame (torque_reference, torque_scale), the given tangents and the torsion are
+    held fixed. Without ``gradient`` those four attributes are None. A grasp whose Q1 is found
+    but cannot be differentiated (wrenches rescaled beyond 2**+-256) raises QualityError."""
     return _pqhull.q1(
         _array(positions, 2, "positions"), _array(normals, 2, "normals"),
         _optional(tangents, 2, "tangents"), torsion=_torsion(torsion, np.shape(positions)[:1]),
         friction=float(friction), cone_edges=int(cone_edges),
         torque_reference=_frame(torque_reference),
-        torque_scale=None if torque_scale is None else float(torque_scale), method=method)
+        torque_scale=None if torque_scale is None else float(torque_scale), method=method,
+        gradient=bool(gradient))
 
 
 def qinf(positions, normals, tangents=None, *, torsion=None, friction, cone_edges, torque_reference=None,
@@ -262,14 +283,20 @@ def ows(positions, normals, tangents=None, *, torsion=None, space, friction, con
 
 def evaluate(positions, normals, tangents=None, *, torsion=None, friction, cone_edges, torque_reference=None,
              torque_scale=None, metric="q1", method="partial", with_zero_wrench=False,
-             space=None, threads=None, wrench=None):
+             space=None, threads=None, wrench=None, gradient=False):
     """The metric of N grasps of m contacts: (N, m, 3) positions and normals, optional tangents;
     `friction` one value or one per grasp. Metrics: "q1", "qinf", "ows" (with `space`),
     "resist" (with `wrench`, 6 numbers), "volume", "sigma-min", "isotropy" (for the last three,
     force_closure is Q1's, and `method` computes only that verdict). Runs on all cores (or `threads`) with the GIL
     released. Returns a Batch: `quality` (N,) and `force_closure` (N,) arrays, and `errors`, a
     list of (row, message); a bad row is NaN and False there, the others are kept. For "ows" and
-    "resist", a grasp not in force closure is NaN and False without an error entry."""
+    "resist", a grasp not in force closure is NaN and False without an error entry.
+
+    ``gradient=True`` (metric "q1" only; another metric raises InputError) adds Q1's gradient of
+    every row, as ``q1(..., gradient=True)`` gives it, row for row the same numbers: the Batch's
+    ``gradient_positions`` (N, m, 3), ``gradient_normals`` (N, m, 3), ``gradient_friction``
+    (N,) and ``differentiable`` (N,) bool, NaN and False for a bad row (a row whose Q1 cannot
+    be differentiated is a bad row, with an error entry). Without ``gradient`` they are None."""
     mu = np.atleast_1d(np.asarray(friction, dtype=np.float64))
     if mu.ndim != 1:
         raise InputError(f"friction must be a number or a 1-D array, not shape {mu.shape}")
@@ -280,7 +307,7 @@ def evaluate(positions, normals, tangents=None, *, torsion=None, friction, cone_
         cone_edges=int(cone_edges), torque_reference=_frame(torque_reference),
         torque_scale=None if torque_scale is None else float(torque_scale), metric=metric,
         method=method, with_zero_wrench=bool(with_zero_wrench), space=space, threads=threads,
-        wrench=_optional(wrench, 1, "wrench"))
+        wrench=_optional(wrench, 1, "wrench"), gradient=bool(gradient))
 
 
 def _one(positions, normals, tangents):

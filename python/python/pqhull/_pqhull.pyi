@@ -72,6 +72,11 @@ class Quality:
     points_processed: int
     facets_created: int
     elapsed_us: float
+    # q1(..., gradient=True) only (None otherwise): (m, 3), (m, 3), dQ1/dmu, differentiable.
+    gradient_positions: Optional[npt.NDArray[np.float64]]
+    gradient_normals: Optional[npt.NDArray[np.float64]]
+    gradient_friction: Optional[float]
+    differentiable: Optional[bool]
 
 class ObjectWrenchSpace:
     @staticmethod
@@ -96,6 +101,12 @@ class Batch:
     force_closure: npt.NDArray[np.bool_]
     errors: list[tuple[int, str]]
     evaluation_s: float
+    # evaluate(..., metric="q1", gradient=True) only (None otherwise): (N, m, 3), (N, m, 3),
+    # (N,), (N,) bool; NaN / False for a bad row.
+    gradient_positions: Optional[npt.NDArray[np.float64]]
+    gradient_normals: Optional[npt.NDArray[np.float64]]
+    gradient_friction: Optional[npt.NDArray[np.float64]]
+    differentiable: Optional[npt.NDArray[np.bool_]]
 
 class Distances:
     signed_distance: npt.NDArray[np.float64]
@@ -135,6 +146,7 @@ def q1(
     torque_reference: Optional[npt.NDArray[np.float64]] = None,
     torque_scale: Optional[float] = None,
     method: str = "partial",
+    gradient: bool = False,
 ) -> Quality: ...
 def qinf(
     positions: npt.NDArray[np.float64],
@@ -178,6 +190,7 @@ def evaluate(
     space: Optional[ObjectWrenchSpace] = None,
     threads: Optional[int] = None,
     wrench: Optional[npt.NDArray[np.float64]] = None,
+    gradient: bool = False,
 ) -> Batch: ...
 
 def cone_bracket(

@@ -11,7 +11,7 @@ use pqhull::grasp::json::{error_line, parse_grasp, quality_line, split_grasps};
 use pqhull::grasp::metrics::{ConeBracket, Score, Scorer, cone_bracket};
 use pqhull::grasp::ows::ObjectWrenchSpace;
 use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality};
-use pqhull::grasp::{FrictionModel, Gradient, Grasp, q1_gradient};
+use pqhull::grasp::{FrictionModel, Gradient, Grasp, q1_gradient, qinf_gradient};
 use pqhull::mesh::Mesh;
 use serde_json::Value;
 use std::io::{Read, Write};
@@ -26,7 +26,7 @@ with inward unit normals. Output: one JSON line per grasp, in input order: index
 quality (null when the metric has no value), stats {points_processed, facets_created,
 elapsed_us}; a grasp that cannot be read or evaluated gets {\"index\":i,\"error\":\"...\"}
 and the others are still evaluated. --metric ows needs --mesh or --disturbances. --gradient
-(q1) adds \"gradient\": {positions, normals (one [x,y,z] per contact, input order), friction,
+(q1, qinf) adds \"gradient\": {positions, normals (one [x,y,z] per contact, input order), friction,
 differentiable}, the exact derivative of the value.
 
 Details: README.md, \"Grasp quality\", \"Object wrench space\" and \"Other metrics\" (soft
@@ -44,7 +44,7 @@ pub struct GraspArgs {
     /// circumscribed about the friction cones (Q1 of the true cones lies between)
     #[arg(long)]
     pub cone_bracket: bool,
-    /// Q1: add the exact "gradient" of the value with respect to every contact's position and
+    /// Q1 and Q∞: add the exact "gradient" of the value with respect to every contact's position and
     /// normal and the friction coefficient (and whether the value is differentiable there)
     #[arg(long, conflicts_with = "cone_bracket")]
     pub gradient: bool,
@@ -326,9 +326,9 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
     if args.cone_bracket && metric != Metric::Q1 {
         return Err(CliError::Usage("--cone-bracket is for --metric q1".into()));
     }
-    if args.gradient && metric != Metric::Q1 {
+    if args.gradient && !matches!(metric, Metric::Q1 | Metric::QInf { .. }) {
         return Err(CliError::Usage(
-            "--gradient is computed for --metric q1 (Q∞ and Q_OWS: not yet)".into(),
+            "--gradient is computed for --metric q1 and qinf (not yet for the others)".into(),
         ));
     }
     // Options that would be silently ignored are errors instead.
@@ -361,17 +361,27 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
     let readable = entries.iter().filter(|e| e.is_ok()).count();
     let lines = match metric {
         Metric::Ows => run_ows(args, method, entries, &values)?,
-        Metric::Q1 if args.gradient => evaluate_lines(
-            &entries,
-            args.threads,
-            || Evaluator::new(Metric::Q1, method),
-            |evaluator, g| {
-                let quality = evaluator.evaluate(g).map_err(|e| e.to_string())?;
-                let gradient = q1_gradient(g, &quality).map_err(|e| e.to_string())?;
-                Ok::<_, String>((quality, gradient))
-            },
-            gradient_line,
-        )?,
+        metric if args.gradient => {
+            if matches!(metric, Metric::QInf { .. }) && method != Method::Partial && !args.force {
+                refuse_large_minkowski_sums(&entries, args.zero_wrench)?;
+            }
+            evaluate_lines(
+                &entries,
+                args.threads,
+                || Evaluator::new(metric, method),
+                |evaluator, g| {
+                    let quality = evaluator.evaluate(g).map_err(|e| e.to_string())?;
+                    let gradient = match metric {
+                        Metric::QInf { with_zero_wrench } => {
+                            qinf_gradient(g, &quality, with_zero_wrench)
+                        }
+                        _ => q1_gradient(g, &quality),
+                    };
+                    Ok::<_, String>((quality, gradient.map_err(|e| e.to_string())?))
+                },
+                gradient_line,
+            )?
+        }
         Metric::Q1 if args.cone_bracket => evaluate_lines(
             &entries,
             args.threads,
