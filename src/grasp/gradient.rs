@@ -439,3 +439,93 @@ fn nearest_in_affine_hull(face: &[[f64; 6]]) -> (Vec<f64>, [f64; 6]) {
         std::array::from_fn(|r| base[r] + (0..edges).map(|c| e[(r, c)] * mu[(c, 0)]).sum::<f64>());
     (weights, x)
 }
+
+/// The gradient of `quality`, this grasp's Q_OWS against `space` (by an exact method of
+/// [`OwsEvaluator`](super::ows::OwsEvaluator)), with respect to every contact's position and
+/// normal and the friction coefficient; `None` when the grasp is not force closure (Q_OWS has
+/// no value) or the method named no deciding disturbance (the ellipsoid's approximation).
+///
+/// Q_OWS is `ρ* = min_d max {ρ : −ρ d ∈ H}` over the disturbances `d`, `H` the hull of the
+/// wrenches. The deciding disturbance's exit point `y = −ρ* d*` lies on a facet of `H` with
+/// outward unit normal `u` at offset `h`, so `ρ* = h / (−u·d*)`; moving the facet's wrenches,
+/// `dρ* = Σ_j μ_j u·dw_j / (−u·d*)` with `μ` the weights of `y` on the facet (the facet
+/// completed by every wrench on its plane, as for Q1). Flagged not differentiable: `y` on a
+/// ridge (a weight near zero), and another disturbance whose ray crosses the facet's plane as
+/// early (a tie among disturbances). Not seen: a tie through another facet.
+///
+/// ```
+/// use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
+/// use pqhull::grasp::quality::Method;
+/// use pqhull::grasp::{Contact, FrictionModel, Grasp, ows_gradient};
+/// let contacts = [[0.9, 0.1, 0.2], [-0.8, 0.3, 0.1], [0.2, -0.9, 0.3], [0.1, 0.2, -0.95]]
+///     .map(|p| Contact::try_new(p, p.map(|x| -x), None).unwrap());
+/// let grasp = Grasp::builder(contacts.to_vec(), FrictionModel::try_new(0.6, 6)?).build()?;
+/// let space = ObjectWrenchSpace::from_disturbances(vec![
+///     [0.0, 0.0, -1.0, 0.0, 0.0, 0.0],
+///     [0.3, 0.0, 0.0, 0.0, 0.1, 0.0],
+/// ])?;
+/// let ows = OwsEvaluator::new(Method::Partial).evaluate(&grasp, &space)?;
+/// let gradient = ows_gradient(&grasp, &space, &ows).expect("force closure");
+/// assert_eq!(gradient.positions.len(), 4);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn ows_gradient(
+    grasp: &Grasp,
+    space: &super::ows::ObjectWrenchSpace,
+    quality: &super::ows::OwsQuality,
+) -> Option<Gradient> {
+    let rho = quality.value?;
+    let deciding = quality.deciding_disturbance?;
+    let disturbances = space.disturbances();
+    let d = *disturbances.get(deciding)?;
+    let wrenches = grasp.wrenches();
+    let y: [f64; 6] = std::array::from_fn(|c| -rho * d[c]);
+    // The facet through y: the partial hull toward y (on the boundary, within rounding).
+    let hull_points = &wrenches;
+    let (_, result) =
+        crate::Hull::try_with_strategy(hull_points, crate::strategy::ClosestToOrigin::towards(y))
+            .ok()?;
+    let facet: Vec<[f64; 6]> = result
+        .closest_facet_vertices
+        .iter()
+        .map(|&v| wrenches[v])
+        .collect();
+    let (_, foot) = nearest_in_affine_hull(&facet);
+    let h = norm(foot);
+    let m = grasp.contact_count();
+    if !(h > 0.0 && h.is_finite()) {
+        return Some(Gradient::zero(m, false));
+    }
+    let u: [f64; 6] = std::array::from_fn(|c| foot[c] / h);
+    let scale = wrenches
+        .iter()
+        .map(|w| dot6(w, w))
+        .fold(0.0, f64::max)
+        .sqrt();
+    let plane: Vec<usize> = (0..wrenches.len())
+        .filter(|&j| dot6(&u, &wrenches[j]) >= h - ON_PLANE * scale)
+        .collect();
+    let nearest = min_norm_point(plane.len(), |i| wrenches[plane[i]], &y);
+    let support: Vec<usize> = nearest.support().iter().map(|&i| plane[i]).collect();
+    // y's weights on the support: the nearest point of its affine hull to y, from y.
+    let shifted: Vec<[f64; 6]> = support.iter().map(|&j| sub6(&wrenches[j], &y)).collect();
+    let (weights, offset) = nearest_in_affine_hull(&shifted);
+    let across = -dot6(&u, &d);
+    let mut differentiable = across > 0.0
+        && norm(offset) <= TIE * scale
+        && weights.iter().all(|&l| l > TIE)
+        && support
+            .iter()
+            .all(|&j| wrenches.iter().filter(|w| **w == wrenches[j]).count() == 1);
+    // Another disturbance crossing the facet's plane as early ties with d*.
+    differentiable &= disturbances.iter().enumerate().all(|(i, e)| {
+        let through = -dot6(&u, e);
+        i == deciding || through <= 0.0 || h / through > rho * (1.0 + TIE)
+    });
+    let mut gradient = Gradient::zero(m, differentiable);
+    for (&index, &mu_j) in support.iter().zip(&weights) {
+        let (i, within) = contact_of(grasp, index);
+        gradient.add_wrench(grasp, &u, i, within, mu_j / across);
+    }
+    Some(gradient)
+}

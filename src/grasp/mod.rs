@@ -75,7 +75,7 @@ mod wrench;
 pub use contact::{Contact, TANGENT_PARALLEL_TOLERANCE};
 pub use error::GraspError;
 pub use friction::{FrictionModel, MAX_CONE_EDGES, MIN_CONE_EDGES};
-pub use gradient::{Gradient, GradientError, q1_gradient, qinf_gradient};
+pub use gradient::{Gradient, GradientError, ows_gradient, q1_gradient, qinf_gradient};
 #[cfg(feature = "parallel")]
 pub use threads::thread_pool;
 pub use threads::{MAX_THREADS, ThreadsError, check_threads, with_threads};

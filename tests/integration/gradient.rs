@@ -247,3 +247,81 @@ fn non_differentiable_grasps_are_flagged() {
         .unwrap();
     assert!(flagged(&mut evaluator, &repeated));
 }
+
+/// Q_OWS against central differences of Q_OWS, on force-closure grasps and random task wrench
+/// spaces of 12 disturbances.
+#[test]
+fn ows_gradient_is_the_finite_difference_of_ows() {
+    use crate::support::grasps::random_disturbances;
+    use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
+    let mut rng = Rng::new(2815);
+    let mut evaluator = OwsEvaluator::new(Method::Partial);
+    let (mut grasps, mut flagged, mut checked, mut kinks) = (0, 0, 0, 0);
+    let h = 1e-6;
+    while grasps < 60 {
+        let inputs = random_inputs(&mut rng);
+        let space =
+            ObjectWrenchSpace::from_disturbances(random_disturbances(&mut rng, 12)).unwrap();
+        let grasp = inputs.grasp();
+        let quality = evaluator.evaluate(&grasp, &space).unwrap();
+        let Some(value) = quality.value else { continue };
+        let gradient = pqhull::grasp::ows_gradient(&grasp, &space, &quality).unwrap();
+        if !gradient.differentiable {
+            flagged += 1;
+            continue;
+        }
+        grasps += 1;
+        let mut value_of = |inputs: &Inputs| {
+            evaluator
+                .evaluate(&inputs.grasp(), &space)
+                .unwrap()
+                .value
+                .expect("still force closure")
+        };
+        let mut check = |name: &str, analytic: f64, plus: Inputs, minus: Inputs| {
+            let (up, down) = (value_of(&plus), value_of(&minus));
+            let central = (up - down) / (2.0 * h);
+            let (forward, backward) = ((up - value) / h, (value - down) / h);
+            let scale = 1.0 + analytic.abs();
+            if (central - analytic).abs() <= 1e-5 * scale {
+                checked += 1;
+                return;
+            }
+            let (low, high) = (forward.min(backward), forward.max(backward));
+            assert!(
+                high - low > 2e-5 * scale
+                    && analytic >= low - 1e-5 * scale
+                    && analytic <= high + 1e-5 * scale,
+                "Q_OWS, grasp {grasps} (value {value}), ∂/∂{name}: analytic {analytic}, central \
+                 difference {central} (one-sided {forward}, {backward})"
+            );
+            kinks += 1;
+        };
+        for i in 0..inputs.positions.len() {
+            for a in 0..3 {
+                let (mut plus, mut minus) = (inputs.clone(), inputs.clone());
+                plus.positions[i][a] += h;
+                minus.positions[i][a] -= h;
+                check(&format!("p{i}[{a}]"), gradient.positions[i][a], plus, minus);
+                let n = inputs.normals[i];
+                let d: [f64; 3] = std::array::from_fn(|c| f64::from(c == a) - n[a] * n[c]);
+                let (mut plus, mut minus) = (inputs.clone(), inputs.clone());
+                plus.normals[i] = std::array::from_fn(|c| n[c] + h * d[c]);
+                minus.normals[i] = std::array::from_fn(|c| n[c] - h * d[c]);
+                check(&format!("n{i}[{a}]"), gradient.normals[i][a], plus, minus);
+            }
+        }
+        let (mut plus, mut minus) = (inputs.clone(), inputs.clone());
+        plus.mu += h;
+        minus.mu -= h;
+        check("mu", gradient.friction, plus, minus);
+    }
+    eprintln!(
+        "Q_OWS: {grasps} grasps, {checked} derivatives checked, {kinks} at a kink, {flagged} \
+         flagged non-differentiable"
+    );
+    assert!(
+        kinks * 50 <= checked,
+        "{kinks} kinks for {checked} derivatives"
+    );
+}
