@@ -191,6 +191,42 @@ fn gradient_lines_are_the_librarys_gradient() {
         lines(&stdout)[0]["gradient"]["positions"],
         serde_json::json!(expected.positions)
     );
+    // Q_OWS against a task wrench space, by the library's gradient; the ellipsoid refuses.
+    let rows = "0 0 -1 0 0 0\n0.3 0 0 0 0.1 0\n0 0.2 0.1 0.05 0 0\n";
+    let space_path = crate::support::run::file("gradient-disturbances.txt", rows);
+    let space = pqhull::grasp::ows::ObjectWrenchSpace::from_disturbances(vec![
+        [0.0, 0.0, -1.0, 0.0, 0.0, 0.0],
+        [0.3, 0.0, 0.0, 0.0, 0.1, 0.0],
+        [0.0, 0.2, 0.1, 0.05, 0.0, 0.0],
+    ])
+    .unwrap();
+    let ows = pqhull::grasp::ows::OwsEvaluator::new(Method::Partial)
+        .evaluate(&parsed, &space)
+        .unwrap();
+    let expected = pqhull::grasp::ows_gradient(&parsed, &space, &ows).expect("force closure");
+    let ows_args = [
+        "grasp",
+        path.to_str().unwrap(),
+        "--gradient",
+        "--metric",
+        "ows",
+        "--disturbances",
+        space_path.to_str().unwrap(),
+        "--quiet",
+    ];
+    let (ok, stdout, stderr) = pqh(&ows_args);
+    assert!(ok, "{stderr}");
+    assert_eq!(
+        lines(&stdout)[0]["gradient"]["normals"],
+        serde_json::json!(expected.normals)
+    );
+    let mut ellipsoid = ows_args.to_vec();
+    ellipsoid.extend(["--method", "ellipsoid"]);
+    let (ok, _, stderr) = pqh(&ellipsoid);
+    assert!(
+        !ok && stderr.contains("--gradient needs an exact method"),
+        "{stderr}"
+    );
     let (ok, _, stderr) = pqh(&[
         "grasp",
         path.to_str().unwrap(),
@@ -199,7 +235,7 @@ fn gradient_lines_are_the_librarys_gradient() {
         "volume",
     ]);
     assert!(
-        !ok && stderr.contains("--gradient is computed for --metric q1 and qinf"),
+        !ok && stderr.contains("--gradient is computed for --metric q1, qinf and ows"),
         "{stderr}"
     );
 }

@@ -9,9 +9,9 @@ use pqhull::Stats;
 use pqhull::grasp::ThreadsError;
 use pqhull::grasp::json::{error_line, parse_grasp, quality_line, split_grasps};
 use pqhull::grasp::metrics::{ConeBracket, Score, Scorer, cone_bracket};
-use pqhull::grasp::ows::ObjectWrenchSpace;
-use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality};
-use pqhull::grasp::{FrictionModel, Gradient, Grasp, q1_gradient, qinf_gradient};
+use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsQuality};
+use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, QualityError};
+use pqhull::grasp::{FrictionModel, Gradient, Grasp, ows_gradient, q1_gradient, qinf_gradient};
 use pqhull::mesh::Mesh;
 use serde_json::Value;
 use std::io::{Read, Write};
@@ -26,7 +26,7 @@ with inward unit normals. Output: one JSON line per grasp, in input order: index
 quality (null when the metric has no value), stats {points_processed, facets_created,
 elapsed_us}; a grasp that cannot be read or evaluated gets {\"index\":i,\"error\":\"...\"}
 and the others are still evaluated. --metric ows needs --mesh or --disturbances. --gradient
-(q1, qinf) adds \"gradient\": {positions, normals (one [x,y,z] per contact, input order), friction,
+(q1, qinf, ows by an exact method; null where the quality is) adds \"gradient\": {positions, normals (one [x,y,z] per contact, input order), friction,
 differentiable}, the exact derivative of the value.
 
 Details: README.md, \"Grasp quality\", \"Object wrench space\" and \"Other metrics\" (soft
@@ -44,7 +44,7 @@ pub struct GraspArgs {
     /// circumscribed about the friction cones (Q1 of the true cones lies between)
     #[arg(long)]
     pub cone_bracket: bool,
-    /// Q1 and Q∞: add the exact "gradient" of the value with respect to every contact's position and
+    /// Q1, Q∞ and Q_OWS (exact methods): add the exact "gradient" of the value with respect to every contact's position and
     /// normal and the friction coefficient (and whether the value is differentiable there)
     #[arg(long, conflicts_with = "cone_bracket")]
     pub gradient: bool,
@@ -276,6 +276,24 @@ fn run_ows(
             space.frame(&g).map_err(|e| e.to_string())
         })
         .collect();
+    if args.gradient {
+        // One evaluator per worker, its gradient through the deciding disturbance's facet.
+        return evaluate_lines(
+            &framed,
+            args.threads,
+            || OwsEvaluator::new(method),
+            |evaluator, g| {
+                let quality = evaluator.evaluate(g, &space)?;
+                Ok::<_, QualityError>((quality, ows_gradient(g, &space, &quality)))
+            },
+            |index, (q, gradient): &(OwsQuality, Option<Gradient>)| {
+                let mut line = quality_line(index, q.force_closure, q.value, &q.stats);
+                // No value (not force closure): no gradient either, as `quality` is null.
+                line["gradient"] = gradient.as_ref().map_or(Value::Null, gradient_json);
+                line
+            },
+        );
+    }
     score_lines(&framed, args.threads, Metric::Ows, method, Some(&space))
 }
 
@@ -310,13 +328,18 @@ fn bracket_line(index: usize, b: &ConeBracket) -> Value {
 /// `--gradient`: Q1's line with `"gradient": {positions, normals, friction, differentiable}`.
 fn gradient_line(index: usize, (q, g): &(Quality, Gradient)) -> Value {
     let mut line = quality_line(index, q.force_closure, Some(q.value), &q.stats);
-    line["gradient"] = serde_json::json!({
+    line["gradient"] = gradient_json(g);
+    line
+}
+
+/// `{positions, normals, friction, differentiable}`.
+fn gradient_json(g: &Gradient) -> Value {
+    serde_json::json!({
         "positions": g.positions,
         "normals": g.normals,
         "friction": g.friction,
         "differentiable": g.differentiable,
-    });
-    line
+    })
 }
 
 pub fn run(args: &GraspArgs) -> Result<(), CliError> {
@@ -326,9 +349,9 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
     if args.cone_bracket && metric != Metric::Q1 {
         return Err(CliError::Usage("--cone-bracket is for --metric q1".into()));
     }
-    if args.gradient && !matches!(metric, Metric::Q1 | Metric::QInf { .. }) {
+    if args.gradient && !matches!(metric, Metric::Q1 | Metric::QInf { .. } | Metric::Ows) {
         return Err(CliError::Usage(
-            "--gradient is computed for --metric q1 and qinf (not yet for the others)".into(),
+            "--gradient is computed for --metric q1, qinf and ows (not for the others)".into(),
         ));
     }
     // Options that would be silently ignored are errors instead.
@@ -343,6 +366,11 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
         ));
     }
     let method = method_for(args.method, metric)?;
+    if args.gradient && method == Method::Ellipsoid {
+        return Err(CliError::Usage(
+            "--gradient needs an exact method (the ellipsoid's value is an approximation)".into(),
+        ));
+    }
     let text = read_input(&args.file)?;
     let values = split(&text);
     if values.is_empty() {
