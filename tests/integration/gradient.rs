@@ -80,8 +80,63 @@ fn random_inputs(rng: &mut Rng) -> Inputs {
     }
 }
 
-/// Central differences of `metric` against its analytic gradient on `count` differentiable
-/// random grasps; returns (grasps, force closure, derivatives checked, kinks, flagged).
+/// Central differences of the value (`value_of`, at `value` for `inputs`) against the analytic
+/// `gradient`, every input in turn; returns (derivatives checked, kinks). At a kink within ±h
+/// (another face takes over on one side, or is about to) the one-sided slopes differ, and the
+/// derivative must lie between them.
+fn compare_with_differences(
+    what: &str,
+    inputs: &Inputs,
+    value: f64,
+    gradient: &Gradient,
+    mut value_of: impl FnMut(&Inputs) -> f64,
+) -> (usize, usize) {
+    let h = 1e-6;
+    let mut components: Vec<(String, f64, Inputs, Inputs)> = Vec::new();
+    for i in 0..inputs.positions.len() {
+        for a in 0..3 {
+            let (mut plus, mut minus) = (inputs.clone(), inputs.clone());
+            plus.positions[i][a] += h;
+            minus.positions[i][a] -= h;
+            components.push((format!("p{i}[{a}]"), gradient.positions[i][a], plus, minus));
+            // Along the sphere: n ± h·(e_a − n_a n), normalised by the contact.
+            let n = inputs.normals[i];
+            let d: [f64; 3] = std::array::from_fn(|c| f64::from(c == a) - n[a] * n[c]);
+            let (mut plus, mut minus) = (inputs.clone(), inputs.clone());
+            plus.normals[i] = std::array::from_fn(|c| n[c] + h * d[c]);
+            minus.normals[i] = std::array::from_fn(|c| n[c] - h * d[c]);
+            components.push((format!("n{i}[{a}]"), gradient.normals[i][a], plus, minus));
+        }
+    }
+    let (mut plus, mut minus) = (inputs.clone(), inputs.clone());
+    plus.mu += h;
+    minus.mu -= h;
+    components.push(("mu".to_string(), gradient.friction, plus, minus));
+    let (mut checked, mut kinks) = (0, 0);
+    for (name, analytic, plus, minus) in components {
+        let (up, down) = (value_of(&plus), value_of(&minus));
+        let central = (up - down) / (2.0 * h);
+        let (forward, backward) = ((up - value) / h, (value - down) / h);
+        let scale = 1.0 + analytic.abs();
+        if (central - analytic).abs() <= 1e-5 * scale {
+            checked += 1;
+            continue;
+        }
+        let (low, high) = (forward.min(backward), forward.max(backward));
+        assert!(
+            high - low > 2e-5 * scale
+                && analytic >= low - 1e-5 * scale
+                && analytic <= high + 1e-5 * scale,
+            "{what} (value {value}), ∂/∂{name}: analytic {analytic}, central difference \
+             {central} (one-sided {forward}, {backward})"
+        );
+        kinks += 1;
+    }
+    (checked, kinks)
+}
+
+/// [`compare_with_differences`] for `metric` on `count` differentiable random grasps; returns
+/// (grasps, force closure, derivatives checked, kinks, flagged).
 fn check_against_differences(
     metric: Metric,
     count: usize,
@@ -91,7 +146,6 @@ fn check_against_differences(
     let mut rng = Rng::new(seed);
     let mut evaluator = Evaluator::new(metric, Method::Partial);
     let (mut grasps, mut inside, mut flagged, mut checked, mut kinks) = (0, 0, 0, 0, 0);
-    let h = 1e-6;
     while grasps < count {
         let inputs = random_inputs(&mut rng);
         let grasp = inputs.grasp();
@@ -103,52 +157,12 @@ fn check_against_differences(
         }
         grasps += 1;
         inside += usize::from(quality.force_closure);
-        // Each input in turn: the analytic derivative and central differences of the value.
-        let mut components: Vec<(String, f64, Inputs, Inputs)> = Vec::new();
-        for i in 0..inputs.positions.len() {
-            for a in 0..3 {
-                let (mut plus, mut minus) = (inputs.clone(), inputs.clone());
-                plus.positions[i][a] += h;
-                minus.positions[i][a] -= h;
-                components.push((format!("p{i}[{a}]"), gradient.positions[i][a], plus, minus));
-                // Along the sphere: n ± h·(e_a − n_a n), normalised by the contact.
-                let n = inputs.normals[i];
-                let d: [f64; 3] = std::array::from_fn(|c| f64::from(c == a) - n[a] * n[c]);
-                let (mut plus, mut minus) = (inputs.clone(), inputs.clone());
-                plus.normals[i] = std::array::from_fn(|c| n[c] + h * d[c]);
-                minus.normals[i] = std::array::from_fn(|c| n[c] - h * d[c]);
-                components.push((format!("n{i}[{a}]"), gradient.normals[i][a], plus, minus));
-            }
-        }
-        let (mut plus, mut minus) = (inputs.clone(), inputs.clone());
-        plus.mu += h;
-        minus.mu -= h;
-        components.push(("mu".to_string(), gradient.friction, plus, minus));
-        let value = quality.value;
-        for (name, analytic, plus, minus) in components {
-            let (up, down) = (
-                value_of(&mut evaluator, &plus),
-                value_of(&mut evaluator, &minus),
-            );
-            let central = (up - down) / (2.0 * h);
-            let (forward, backward) = ((up - value) / h, (value - down) / h);
-            let scale = 1.0 + analytic.abs();
-            if (central - analytic).abs() <= 1e-5 * scale {
-                checked += 1;
-                continue;
-            }
-            // A kink within ±h (another face takes over on one side), or a face about to:
-            // the one-sided slopes differ, and the derivative lies between them.
-            let (low, high) = (forward.min(backward), forward.max(backward));
-            assert!(
-                high - low > 2e-5 * scale
-                    && analytic >= low - 1e-5 * scale
-                    && analytic <= high + 1e-5 * scale,
-                "{metric:?}, grasp {grasps} (value {value}), ∂/∂{name}: analytic {analytic}, \
-                 central difference {central} (one-sided {forward}, {backward})"
-            );
-            kinks += 1;
-        }
+        let what = format!("{metric:?}, grasp {grasps}");
+        let (c, k) = compare_with_differences(&what, &inputs, quality.value, &gradient, |i| {
+            value_of(&mut evaluator, i)
+        });
+        checked += c;
+        kinks += k;
     }
     eprintln!(
         "{metric:?}: {grasps} grasps ({inside} force closure), {checked} derivatives checked, \
@@ -257,7 +271,6 @@ fn ows_gradient_is_the_finite_difference_of_ows() {
     let mut rng = Rng::new(2815);
     let mut evaluator = OwsEvaluator::new(Method::Partial);
     let (mut grasps, mut flagged, mut checked, mut kinks) = (0, 0, 0, 0);
-    let h = 1e-6;
     while grasps < 60 {
         let inputs = random_inputs(&mut rng);
         let space =
@@ -271,50 +284,13 @@ fn ows_gradient_is_the_finite_difference_of_ows() {
             continue;
         }
         grasps += 1;
-        let mut value_of = |inputs: &Inputs| {
-            evaluator
-                .evaluate(&inputs.grasp(), &space)
-                .unwrap()
-                .value
-                .expect("still force closure")
-        };
-        let mut check = |name: &str, analytic: f64, plus: Inputs, minus: Inputs| {
-            let (up, down) = (value_of(&plus), value_of(&minus));
-            let central = (up - down) / (2.0 * h);
-            let (forward, backward) = ((up - value) / h, (value - down) / h);
-            let scale = 1.0 + analytic.abs();
-            if (central - analytic).abs() <= 1e-5 * scale {
-                checked += 1;
-                return;
-            }
-            let (low, high) = (forward.min(backward), forward.max(backward));
-            assert!(
-                high - low > 2e-5 * scale
-                    && analytic >= low - 1e-5 * scale
-                    && analytic <= high + 1e-5 * scale,
-                "Q_OWS, grasp {grasps} (value {value}), ∂/∂{name}: analytic {analytic}, central \
-                 difference {central} (one-sided {forward}, {backward})"
-            );
-            kinks += 1;
-        };
-        for i in 0..inputs.positions.len() {
-            for a in 0..3 {
-                let (mut plus, mut minus) = (inputs.clone(), inputs.clone());
-                plus.positions[i][a] += h;
-                minus.positions[i][a] -= h;
-                check(&format!("p{i}[{a}]"), gradient.positions[i][a], plus, minus);
-                let n = inputs.normals[i];
-                let d: [f64; 3] = std::array::from_fn(|c| f64::from(c == a) - n[a] * n[c]);
-                let (mut plus, mut minus) = (inputs.clone(), inputs.clone());
-                plus.normals[i] = std::array::from_fn(|c| n[c] + h * d[c]);
-                minus.normals[i] = std::array::from_fn(|c| n[c] - h * d[c]);
-                check(&format!("n{i}[{a}]"), gradient.normals[i][a], plus, minus);
-            }
-        }
-        let (mut plus, mut minus) = (inputs.clone(), inputs.clone());
-        plus.mu += h;
-        minus.mu -= h;
-        check("mu", gradient.friction, plus, minus);
+        let what = format!("Q_OWS, grasp {grasps}");
+        let (c, k) = compare_with_differences(&what, &inputs, value, &gradient, |i| {
+            let q = evaluator.evaluate(&i.grasp(), &space).unwrap();
+            q.value.expect("still force closure")
+        });
+        checked += c;
+        kinks += k;
     }
     eprintln!(
         "Q_OWS: {grasps} grasps, {checked} derivatives checked, {kinks} at a kink, {flagged} \
