@@ -1,32 +1,61 @@
-//! `gradient=True` of `q1` and `evaluate(metric="q1")`: the exact gradient of Q1
-//! ([`pqhull::grasp::q1_gradient`]) with respect to every contact's position and unit normal and
-//! the friction coefficient, as numpy arrays.
+//! `gradient=True` of `q1`, `qinf`, `ows` and `evaluate(metric="q1" / "qinf" / "ows")`: the
+//! exact gradient of Q1, Q∞ and Q_OWS ([`pqhull::grasp::q1_gradient`], [`qinf_gradient`],
+//! [`ows_gradient`]) with respect to every contact's position and unit normal and the friction
+//! coefficient, as numpy arrays.
 
 use crate::errors;
 use numpy::ndarray::{Array2, Array3};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3, ToPyArray};
-use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality as Q1};
-use pqhull::grasp::{Gradient, GradientError, Grasp, q1_gradient};
+use pqhull::grasp::metrics::Score;
+use pqhull::grasp::ows::{ObjectWrenchSpace as Space, OwsEvaluator, evaluate_ows_batch};
+use pqhull::grasp::quality::{Evaluator, Method, Metric, QualityError, evaluate_batch};
+use pqhull::grasp::{Gradient, GradientError, Grasp, ows_gradient, q1_gradient, qinf_gradient};
 use pyo3::prelude::*;
+use std::time::Instant;
 
-/// The refusal of `gradient=True` for another metric than Q1.
-pub(crate) fn only_q1(metric: &str) -> PyErr {
+/// Whether `metric` by `method` has a gradient: Q1 and Q∞ by any of their methods, Q_OWS by an
+/// exact one. The refusal (an input error naming the metric as the caller did, `name`)
+/// otherwise.
+pub(crate) fn check(metric: Metric, method: Method, name: &str) -> PyResult<()> {
+    if !matches!(metric, Metric::Q1 | Metric::QInf { .. } | Metric::Ows) {
+        return Err(unsupported(name));
+    }
+    if method == Method::Ellipsoid {
+        return Err(errors::input(
+            "gradient needs an exact method (the ellipsoid's value is an approximation): \
+             method=\"partial\", \"full\" or \"partial-rays\"",
+        ));
+    }
+    Ok(())
+}
+
+/// The refusal of `gradient=True` for a metric without one (named as the caller did).
+fn unsupported(name: &str) -> PyErr {
     errors::input(format!(
-        "gradient is computed for q1 only so far (metric {metric:?} has none): \
-         ask for metric=\"q1\" or gradient=False"
+        "gradient is computed for q1, qinf and ows only (metric {name:?} has none): \
+         ask for one of them or gradient=False"
     ))
 }
 
-/// The message of a grasp whose Q1 was found but could not be differentiated.
+/// The message of a grasp whose value was found but could not be differentiated.
 pub(crate) fn message(e: &GradientError) -> String {
     format!("gradient: {e}")
 }
 
+/// The message of a force-closure grasp whose Q_OWS was found but not its gradient (the facet
+/// the deciding disturbance's ray leaves by could not be recovered).
+const NO_OWS_GRADIENT: &str = "gradient: Q_OWS has a value but the facet its deciding \
+                               disturbance leaves by was not found, so no gradient";
+
 /// Why a single grasp has no value or no gradient (kept apart so the library's errors become
 /// Python ones after the GIL is taken back).
 pub(crate) enum Failure {
-    Quality(pqhull::grasp::quality::QualityError),
+    Quality(QualityError),
     Gradient(GradientError),
+    /// Q_OWS with a value and no gradient.
+    NoOwsGradient,
+    /// A metric without a gradient (refused by [`check`] before any work).
+    Unsupported(Metric),
 }
 
 impl Failure {
@@ -34,21 +63,131 @@ impl Failure {
         match self {
             Failure::Quality(e) => errors::quality(e),
             Failure::Gradient(e) => errors::QualityError::new_err(message(&e)),
+            Failure::NoOwsGradient => errors::QualityError::new_err(NO_OWS_GRADIENT),
+            Failure::Unsupported(metric) => unsupported(metric.name()),
         }
     }
 }
 
-/// Q1 of `grasp` by `method` and its gradient (run with the GIL released by the caller).
-pub(crate) fn q1_and_gradient(grasp: &Grasp, method: Method) -> Result<(Q1, Gradient), Failure> {
-    let quality = Evaluator::new(Metric::Q1, method)
-        .evaluate(grasp)
-        .map_err(Failure::Quality)?;
-    let gradient = q1_gradient(grasp, &quality).map_err(Failure::Gradient)?;
-    Ok((quality, gradient))
+/// `metric` of one grasp by `method` (`space`: Q_OWS's), and its gradient; run with the GIL
+/// released by the caller. The score's time is the whole call's (the value and its gradient).
+/// The gradient is None exactly when the value is (Q_OWS of a grasp not in force closure).
+pub(crate) fn one(
+    grasp: &Grasp,
+    metric: Metric,
+    method: Method,
+    space: Option<&Space>,
+) -> Result<(Score, Option<Gradient>), Failure> {
+    let started = Instant::now();
+    let (mut score, gradient) = match (metric, space) {
+        (Metric::Q1 | Metric::QInf { .. }, _) => {
+            let q = Evaluator::new(metric, method)
+                .evaluate(grasp)
+                .map_err(Failure::Quality)?;
+            let g = hull_gradient(grasp, metric, &q).map_err(Failure::Gradient)?;
+            let score = Score {
+                force_closure: q.force_closure,
+                value: Some(q.value),
+                stats: q.stats,
+            };
+            (score, Some(g))
+        }
+        (Metric::Ows, Some(space)) => {
+            let q = OwsEvaluator::new(method)
+                .evaluate(grasp, space)
+                .map_err(Failure::Quality)?;
+            let g = ows_row_gradient(grasp, space, &q).ok_or(Failure::NoOwsGradient)?;
+            let score = Score {
+                force_closure: q.force_closure,
+                value: q.value,
+                stats: q.stats,
+            };
+            (score, g)
+        }
+        (Metric::Ows, None) => return Err(Failure::Quality(QualityError::OwsNeedsWrenchSpace)),
+        (metric, _) => return Err(Failure::Unsupported(metric)),
+    };
+    score.stats.elapsed = started.elapsed();
+    Ok((score, gradient))
+}
+
+/// Q1's or Q∞'s gradient (`metric` says which) of `quality`, the grasp's value.
+fn hull_gradient(
+    grasp: &Grasp,
+    metric: Metric,
+    quality: &pqhull::grasp::quality::Quality,
+) -> Result<Gradient, GradientError> {
+    match metric {
+        Metric::QInf { with_zero_wrench } => qinf_gradient(grasp, quality, with_zero_wrench),
+        _ => q1_gradient(grasp, quality),
+    }
+}
+
+/// Q_OWS's gradient: `Some(None)` without a value (not force closure: no gradient either),
+/// `None` for a value without a gradient.
+fn ows_row_gradient(
+    grasp: &Grasp,
+    space: &Space,
+    quality: &pqhull::grasp::ows::OwsQuality,
+) -> Option<Option<Gradient>> {
+    match quality.value {
+        None => Some(None),
+        Some(_) => ows_gradient(grasp, space, quality).map(Some),
+    }
+}
+
+/// One batch row: the value (None: Q_OWS not in force closure), force closure, the gradient
+/// (None exactly when the value is).
+pub(crate) type Row = (Option<f64>, bool, Option<Gradient>);
+
+/// `metric` of every grasp by `method` and its gradient, in input order (the library's batch
+/// evaluation, then each row's gradient on rayon's pool): run inside the caller's thread pool,
+/// with the GIL released. A row whose value is found but not its gradient is a bad row (its
+/// message).
+pub(crate) fn batch(
+    grasps: &[Grasp],
+    metric: Metric,
+    method: Method,
+    space: Option<&Space>,
+) -> Vec<Result<Row, String>> {
+    use rayon::prelude::*;
+    match (metric, space) {
+        (Metric::Q1 | Metric::QInf { .. }, _) => {
+            let values = evaluate_batch(grasps, metric, method);
+            grasps
+                .par_iter()
+                .zip(values.into_par_iter())
+                .map(|(g, r)| {
+                    let q = r.map_err(|e| e.to_string())?;
+                    let d = hull_gradient(g, metric, &q).map_err(|e| message(&e))?;
+                    Ok((Some(q.value), q.force_closure, Some(d)))
+                })
+                .collect()
+        }
+        (Metric::Ows, Some(space)) => {
+            let values = evaluate_ows_batch(grasps, space, method);
+            grasps
+                .par_iter()
+                .zip(values.into_par_iter())
+                .map(|(g, r)| {
+                    let q = r.map_err(|e| e.to_string())?;
+                    let d = ows_row_gradient(g, space, &q).ok_or(NO_OWS_GRADIENT)?;
+                    Ok((q.value, q.force_closure, d))
+                })
+                .collect()
+        }
+        (metric, space) => {
+            let why = match space {
+                None if metric == Metric::Ows => QualityError::OwsNeedsWrenchSpace.to_string(),
+                _ => format!("gradient: metric {metric} has none"),
+            };
+            grasps.iter().map(|_| Err(why.clone())).collect()
+        }
+    }
 }
 
 /// One grasp's gradient as Python values: (m, 3) positions, (m, 3) normals, friction and
-/// whether Q1 is differentiable there.
+/// whether the value is differentiable there.
 pub(crate) struct One {
     pub(crate) positions: Py<PyArray2<f64>>,
     pub(crate) normals: Py<PyArray2<f64>>,
@@ -73,7 +212,8 @@ impl One {
     }
 }
 
-/// A batch's gradients, row by row: NaN (and `differentiable` False) for a row without one.
+/// A batch's gradients, row by row: NaN (and `differentiable` False) for a row without one (a
+/// bad row, or Q_OWS of a grasp not in force closure, whose value is NaN too).
 pub(crate) struct Columns {
     contacts: usize,
     positions: Vec<f64>,

@@ -1,5 +1,5 @@
-//! Grasps as arrays: `q1`, `qinf` on one grasp, and `evaluate` on a batch (GIL released);
-//! `gradient=True` (Q1) adds the exact gradient (crate::gradient).
+//! Grasps as arrays: `q1`, `qinf`, `ows` on one grasp, and `evaluate` on a batch (GIL
+//! released); `gradient=True` (Q1, Q∞, Q_OWS) adds the exact gradient (crate::gradient).
 
 use crate::errors;
 use crate::gradient::{self, Columns};
@@ -12,7 +12,7 @@ use numpy::{
 use pqhull::grasp::metrics::{Score, Scorer};
 use pqhull::grasp::ows::{ObjectWrenchSpace as Space, evaluate_ows_batch};
 use pqhull::grasp::quality::{Method, Metric, NameError, QualityError, evaluate_batch};
-use pqhull::grasp::{Contact, FrictionModel, Gradient, Grasp, q1_gradient};
+use pqhull::grasp::{Contact, FrictionModel, Gradient, Grasp};
 use pyo3::prelude::*;
 
 /// One grasp's quality.
@@ -29,15 +29,16 @@ pub struct Quality {
     facets_created: usize,
     /// Time spent in the library (µs), to tell Python's per-call overhead from the work.
     elapsed_us: f64,
-    /// `q1(..., gradient=True)`: ∂Q1/∂p_i, an (m, 3) array in input order; None otherwise.
+    /// `gradient=True` (q1, qinf, ows): ∂value/∂p_i, an (m, 3) array in input order; None
+    /// otherwise, and for Q_OWS without a value.
     gradient_positions: Option<Py<PyArray2<f64>>>,
-    /// `q1(..., gradient=True)`: ∂Q1/∂n_i with respect to the unit normal (each row orthogonal
-    /// to it; for a normal given with length L, divide by L), (m, 3); None otherwise.
+    /// `gradient=True`: ∂value/∂n_i with respect to the unit normal (each row orthogonal to it;
+    /// for a normal given with length L, divide by L), (m, 3); None as `gradient_positions`.
     gradient_normals: Option<Py<PyArray2<f64>>>,
-    /// `q1(..., gradient=True)`: ∂Q1/∂μ; None otherwise.
+    /// `gradient=True`: ∂value/∂μ; None as `gradient_positions`.
     gradient_friction: Option<f64>,
-    /// `q1(..., gradient=True)`: whether Q1 is differentiable at the grasp (False: the numbers
-    /// are the derivative along the deciding face found); None otherwise.
+    /// `gradient=True`: whether the value is differentiable at the grasp (False: the numbers
+    /// are the derivative along the deciding face found); None as `gradient_positions`.
     differentiable: Option<bool>,
 }
 
@@ -71,13 +72,15 @@ pub struct Batch {
     errors: Vec<(usize, String)>,
     /// Wall time of the library's batch evaluation alone (s): the rest of the call is Python's.
     evaluation_s: f64,
-    /// `gradient=True` (Q1): ∂Q1/∂p, (N, m, 3), NaN for a bad row; None otherwise.
+    /// `gradient=True` (q1, qinf, ows): ∂value/∂p, (N, m, 3), NaN for a row without a value (a
+    /// bad row; Q_OWS not in force closure); None otherwise.
     gradient_positions: Option<Py<PyArray3<f64>>>,
-    /// `gradient=True`: ∂Q1/∂n with respect to the unit normals, (N, m, 3), NaN for a bad row.
+    /// `gradient=True`: ∂value/∂n with respect to the unit normals, (N, m, 3), NaN as above.
     gradient_normals: Option<Py<PyArray3<f64>>>,
-    /// `gradient=True`: ∂Q1/∂μ, (N,), NaN for a bad row.
+    /// `gradient=True`: ∂value/∂μ, (N,), NaN as above.
     gradient_friction: Option<Py<PyArray1<f64>>>,
-    /// `gradient=True`: whether Q1 is differentiable at each grasp, (N,), False for a bad row.
+    /// `gradient=True`: whether the value is differentiable at each grasp, (N,), False for a
+    /// row without a value.
     differentiable: Option<Py<PyArray1<bool>>>,
 }
 
@@ -263,23 +266,24 @@ impl Quality {
         }
     }
 
-    /// Q1 with its gradient ([`gradient::One`]).
-    fn of_q1_gradient(q: &pqhull::grasp::quality::Quality, g: gradient::One) -> Self {
-        Quality {
-            value: Some(q.value),
-            force_closure: q.force_closure,
-            points_processed: q.stats.points_processed,
-            facets_created: q.stats.facets_created,
-            elapsed_us: q.stats.elapsed.as_secs_f64() * 1e6,
-            gradient_positions: Some(g.positions),
-            gradient_normals: Some(g.normals),
-            gradient_friction: Some(g.friction),
-            differentiable: Some(g.differentiable),
+    /// A score with its gradient ([`gradient::One`]; None for Q_OWS without a value).
+    fn of_gradient(s: &Score, g: Option<gradient::One>) -> Self {
+        let quality = Quality::of_score(s);
+        match g {
+            None => quality,
+            Some(g) => Quality {
+                gradient_positions: Some(g.positions),
+                gradient_normals: Some(g.normals),
+                gradient_friction: Some(g.friction),
+                differentiable: Some(g.differentiable),
+                ..quality
+            },
         }
     }
 }
 
-/// One grasp by any metric ([`Scorer`]), for the single-grasp functions.
+/// One grasp by any metric ([`Scorer`]), for the single-grasp functions; with `gradient` (Q1,
+/// Q∞, Q_OWS by an exact method), the value's gradient too.
 #[allow(clippy::too_many_arguments)] // the Python signature
 pub(crate) fn single(
     py: Python<'_>,
@@ -294,8 +298,12 @@ pub(crate) fn single(
     metric: Metric,
     method: &str,
     space: Option<&Space>,
+    gradient: bool,
 ) -> PyResult<Quality> {
     let method = method_of(method, metric)?;
+    if gradient {
+        gradient::check(metric, method, metric.name())?;
+    }
     let (g, frame) = one_grasp(
         positions,
         normals,
@@ -310,6 +318,13 @@ pub(crate) fn single(
         Some(space) => in_frame(space, g, &frame).map_err(errors::grasp)?,
         None => g,
     };
+    if gradient {
+        let (score, d) = py
+            .detach(|| gradient::one(&g, metric, method, space))
+            .map_err(gradient::Failure::into_py)?;
+        let d = d.map(|d| gradient::One::new(py, &d));
+        return Ok(Quality::of_gradient(&score, d));
+    }
     let score = py
         .detach(|| Scorer::new(metric, method, space)?.score(&g))
         .map_err(crate::metrics::error)?;
@@ -336,24 +351,8 @@ pub fn q1(
     method: &str,
     gradient: bool,
 ) -> PyResult<Quality> {
-    if !gradient {
-        return single(
-            py,
-            positions,
-            normals,
-            tangents,
-            torsion,
-            friction,
-            cone_edges,
-            torque_reference,
-            torque_scale,
-            Metric::Q1,
-            method,
-            None,
-        );
-    }
-    let method = method_of(method, Metric::Q1)?;
-    let (g, _) = one_grasp(
+    single(
+        py,
         positions,
         normals,
         tangents,
@@ -362,22 +361,20 @@ pub fn q1(
         cone_edges,
         torque_reference,
         torque_scale,
-    )?;
-    let (quality, gradient) = py
-        .detach(|| gradient::q1_and_gradient(&g, method))
-        .map_err(gradient::Failure::into_py)?;
-    Ok(Quality::of_q1_gradient(
-        &quality,
-        gradient::One::new(py, &gradient),
-    ))
+        Metric::Q1,
+        method,
+        None,
+        gradient,
+    )
 }
 
 /// qinf(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
-/// torque_scale=None, with_zero_wrench=False, method="partial"): Q∞ of one grasp.
+/// torque_scale=None, with_zero_wrench=False, method="partial", gradient=False): Q∞ of one grasp;
+/// with `gradient`, also its exact gradient (the `gradient_*` attributes).
 #[pyfunction]
 #[pyo3(signature = (positions, normals, tangents=None, *, torsion=None, friction, cone_edges,
                     torque_reference=None, torque_scale=None, with_zero_wrench=false,
-                    method="partial"))]
+                    method="partial", gradient=false))]
 #[allow(clippy::too_many_arguments)] // the Python signature
 pub fn qinf(
     py: Python<'_>,
@@ -391,6 +388,7 @@ pub fn qinf(
     torque_scale: Option<f64>,
     with_zero_wrench: bool,
     method: &str,
+    gradient: bool,
 ) -> PyResult<Quality> {
     single(
         py,
@@ -405,14 +403,16 @@ pub fn qinf(
         Metric::QInf { with_zero_wrench },
         method,
         None,
+        gradient,
     )
 }
 
-/// ows(positions, normals, tangents=None, *, space, friction, cone_edges, method="partial"):
-/// Q_OWS of one grasp against an ObjectWrenchSpace (None when not force closure).
+/// ows(positions, normals, tangents=None, *, space, friction, cone_edges, method="partial",
+/// gradient=False): Q_OWS of one grasp against an ObjectWrenchSpace (None when not force
+/// closure); with `gradient` (an exact method), also its exact gradient (None without a value).
 #[pyfunction]
 #[pyo3(signature = (positions, normals, tangents=None, *, torsion=None, space, friction, cone_edges,
-                    torque_reference=None, torque_scale=None, method="partial"))]
+                    torque_reference=None, torque_scale=None, method="partial", gradient=false))]
 #[allow(clippy::too_many_arguments)] // the Python signature
 pub fn ows(
     py: Python<'_>,
@@ -426,6 +426,7 @@ pub fn ows(
     torque_reference: Option<PyReadonlyArray1<'_, f64>>,
     torque_scale: Option<f64>,
     method: &str,
+    gradient: bool,
 ) -> PyResult<Quality> {
     single(
         py,
@@ -440,6 +441,7 @@ pub fn ows(
         Metric::Ows,
         method,
         Some(&space.inner),
+        gradient,
     )
 }
 
@@ -447,7 +449,8 @@ pub fn ows(
 /// torque_scale=None, metric="q1", method="partial", with_zero_wrench=False, threads=None,
 /// gradient=False): the metric of N grasps of m contacts ((N, m, 3) arrays; `friction` one value
 /// or one per grasp) on all cores (or `threads`), the GIL released. A bad row gives NaN and an
-/// error entry. `gradient` (q1 only) adds Q1's gradient per row, NaN for a bad row.
+/// error entry. `gradient` (q1, qinf, ows) adds the value's gradient per row, NaN for a row
+/// without a value.
 #[pyfunction]
 #[pyo3(signature = (positions, normals, tangents=None, *, torsion=None, friction, cone_edges,
                     torque_reference=None, torque_scale=None, metric="q1", method="partial",
@@ -516,10 +519,10 @@ pub fn evaluate(
     };
     let name = metric;
     let metric = metric_of(name, with_zero_wrench, wrench)?;
-    if gradient && metric != Metric::Q1 {
-        return Err(gradient::only_q1(name));
-    }
     let method = method_of(method, metric)?;
+    if gradient {
+        gradient::check(metric, method, name)?;
+    }
     let space = space.as_ref().map(|s| &s.inner);
     if (metric == Metric::Ows) != space.is_some() {
         return Err(errors::input(
@@ -559,23 +562,13 @@ pub fn evaluate(
     let built: Vec<Result<(), String>> =
         built.into_iter().map(|g| g.map(|g| good.push(g))).collect();
     // Each row as (value, force closure, gradient): Q_OWS has no value for a grasp not in force
-    // closure; only Q1 with `gradient` has a gradient.
+    // closure; only `gradient` gives a gradient.
     type Row = (Option<f64>, bool, Option<Gradient>);
     let run = || -> Vec<Result<Row, String>> {
         use rayon::prelude::*;
         match (metric, space) {
-            // Q1 with its gradient: the batch's values, then each one's gradient beside it.
-            (Metric::Q1, _) if gradient => {
-                let values = evaluate_batch(&good, metric, method);
-                good.par_iter()
-                    .zip(values.into_par_iter())
-                    .map(|(g, r)| {
-                        let q = r.map_err(|e| e.to_string())?;
-                        let d = q1_gradient(g, &q).map_err(|e| gradient::message(&e))?;
-                        Ok((Some(q.value), q.force_closure, Some(d)))
-                    })
-                    .collect()
-            }
+            // The batch's values, then each one's gradient beside it.
+            _ if gradient => gradient::batch(&good, metric, method, space),
             (Metric::Q1 | Metric::QInf { .. }, _) => evaluate_batch(&good, metric, method)
                 .into_iter()
                 .map(|r| {

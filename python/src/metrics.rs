@@ -93,6 +93,7 @@ pub fn resist(
         Metric::Resist { wrench },
         method,
         None,
+        false,
     )
 }
 

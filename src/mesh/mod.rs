@@ -54,13 +54,16 @@ mod error;
 #[cfg(feature = "mesh")]
 mod io;
 mod mass;
+mod nearest;
 mod sample;
 mod shapes;
+mod solids;
 mod topology;
 
 pub use error::MeshError;
 pub use mass::{CentreKind, MassProperties};
 pub use sample::{SurfacePoint, SurfaceSampler};
+pub use solids::MAX_PROFILE_POINTS;
 pub use topology::Topology;
 
 use crate::geometry::vector::{cross, norm, normalize, scale, sub};

@@ -14,5 +14,6 @@ mod cli_stream;
 mod fuzz_bounded;
 mod hull_queries;
 mod penetration_cmd;
+mod plan_descent;
 mod reproduce;
 mod trace_cmd;

@@ -257,28 +257,50 @@ def q1(positions, normals, tangents=None, *, torsion=None, friction, cone_edges,
 
 
 def qinf(positions, normals, tangents=None, *, torsion=None, friction, cone_edges, torque_reference=None,
-         torque_scale=None, with_zero_wrench=False, method="partial"):
-    """Q-infinity (the Minkowski sum of the contacts' wrench sets) of one grasp; as q1."""
+         torque_scale=None, with_zero_wrench=False, method="partial", gradient=False):
+    """Q-infinity (the Minkowski sum of the contacts' wrench sets, each with the zero wrench
+    added when `with_zero_wrench`) of one grasp; as q1.
+
+    ``gradient=True`` adds Q-infinity's exact gradient (the library's ``grasp::qinf_gradient``,
+    on the face of the Minkowski sum along the deciding direction: the sum of each contact's
+    face), in the attributes and conventions of ``q1(..., gradient=True)``:
+    ``gradient_positions`` (m, 3), ``gradient_normals`` (m, 3, with respect to the unit
+    normals), ``gradient_friction`` and ``differentiable`` (False also where the deciding face
+    of the sum is degenerate: more contacts' faces tied along the direction than its dimension
+    needs; or more than 65,536 tuples of them to sum, where the numbers are all zero). A grasp
+    whose Q-infinity is found but cannot be differentiated raises QualityError."""
     return _pqhull.qinf(
         _array(positions, 2, "positions"), _array(normals, 2, "normals"),
         _optional(tangents, 2, "tangents"), torsion=_torsion(torsion, np.shape(positions)[:1]),
         friction=float(friction), cone_edges=int(cone_edges),
         torque_reference=_frame(torque_reference),
         torque_scale=None if torque_scale is None else float(torque_scale),
-        with_zero_wrench=bool(with_zero_wrench), method=method)
+        with_zero_wrench=bool(with_zero_wrench), method=method, gradient=bool(gradient))
 
 
 def ows(positions, normals, tangents=None, *, torsion=None, space, friction, cone_edges, torque_reference=None,
-        torque_scale=None, method="partial"):
+        torque_scale=None, method="partial", gradient=False):
     """Q_OWS of one grasp against `space` (an ObjectWrenchSpace): how large a disturbance of the
     space the grasp resists. `value` is None when the grasp is not force closure. With a space
-    built from a mesh the grasp is evaluated in the mesh's torque frame."""
+    built from a mesh the grasp is evaluated in the mesh's torque frame.
+
+    ``gradient=True`` (an exact method: "partial", "full" or "partial-rays"; "ellipsoid" raises
+    InputError) adds Q_OWS's exact gradient (the library's ``grasp::ows_gradient``, through the
+    facet the deciding disturbance's ray leaves the grasp wrench space by), in the attributes and
+    conventions of ``q1(..., gradient=True)``: ``gradient_positions`` (m, 3),
+    ``gradient_normals`` (m, 3, with respect to the unit normals), ``gradient_friction`` (the
+    grasp's friction; a mesh space's own friction is part of the space, held fixed) and
+    ``differentiable`` (False also where another disturbance ties with the deciding one). The
+    disturbances and the torque frame are held fixed. A grasp that is not force closure has no
+    value and so no gradient: the four attributes are None (as ``value``). A force-closure grasp
+    whose value is found but whose deciding facet is not raises QualityError."""
     return _pqhull.ows(
         _array(positions, 2, "positions"), _array(normals, 2, "normals"),
         _optional(tangents, 2, "tangents"), torsion=_torsion(torsion, np.shape(positions)[:1]),
         space=space, friction=float(friction),
         cone_edges=int(cone_edges), torque_reference=_frame(torque_reference),
-        torque_scale=None if torque_scale is None else float(torque_scale), method=method)
+        torque_scale=None if torque_scale is None else float(torque_scale), method=method,
+        gradient=bool(gradient))
 
 
 def evaluate(positions, normals, tangents=None, *, torsion=None, friction, cone_edges, torque_reference=None,
@@ -292,11 +314,14 @@ def evaluate(positions, normals, tangents=None, *, torsion=None, friction, cone_
     list of (row, message); a bad row is NaN and False there, the others are kept. For "ows" and
     "resist", a grasp not in force closure is NaN and False without an error entry.
 
-    ``gradient=True`` (metric "q1" only; another metric raises InputError) adds Q1's gradient of
-    every row, as ``q1(..., gradient=True)`` gives it, row for row the same numbers: the Batch's
-    ``gradient_positions`` (N, m, 3), ``gradient_normals`` (N, m, 3), ``gradient_friction``
-    (N,) and ``differentiable`` (N,) bool, NaN and False for a bad row (a row whose Q1 cannot
-    be differentiated is a bad row, with an error entry). Without ``gradient`` they are None."""
+    ``gradient=True`` (metrics "q1", "qinf" and "ows", by an exact method; another metric, or
+    "ellipsoid", raises InputError) adds the value's gradient of every row, as
+    ``q1`` / ``qinf`` / ``ows(..., gradient=True)`` gives it, row for row the same numbers: the
+    Batch's ``gradient_positions`` (N, m, 3), ``gradient_normals`` (N, m, 3),
+    ``gradient_friction`` (N,) and ``differentiable`` (N,) bool, NaN and False for a row
+    without a value: a bad row (a row whose value cannot be differentiated is a bad row, with
+    an error entry) and, for "ows", a grasp not in force closure (its quality NaN too, without
+    an error entry; ``ows`` gives None there). Without ``gradient`` they are None."""
     mu = np.atleast_1d(np.asarray(friction, dtype=np.float64))
     if mu.ndim != 1:
         raise InputError(f"friction must be a number or a 1-D array, not shape {mu.shape}")

@@ -72,7 +72,9 @@ class Quality:
     points_processed: int
     facets_created: int
     elapsed_us: float
-    # q1(..., gradient=True) only (None otherwise): (m, 3), (m, 3), dQ1/dmu, differentiable.
+    # q1 / qinf / ows(..., gradient=True) only (None otherwise): d value / d positions (m, 3),
+    # d value / d unit normals (m, 3), d value / d mu, differentiable. For ows also None when
+    # the grasp is not force closure (value None: no value, no gradient).
     gradient_positions: Optional[npt.NDArray[np.float64]]
     gradient_normals: Optional[npt.NDArray[np.float64]]
     gradient_friction: Optional[float]
@@ -101,8 +103,10 @@ class Batch:
     force_closure: npt.NDArray[np.bool_]
     errors: list[tuple[int, str]]
     evaluation_s: float
-    # evaluate(..., metric="q1", gradient=True) only (None otherwise): (N, m, 3), (N, m, 3),
-    # (N,), (N,) bool; NaN / False for a bad row.
+    # evaluate(..., metric="q1" / "qinf" / "ows", gradient=True) only (None otherwise):
+    # (N, m, 3), (N, m, 3), (N,), (N,) bool; NaN / False for a row without a value: a bad row
+    # (with an error entry) or, for "ows", a grasp not in force closure (quality NaN too, no
+    # error entry).
     gradient_positions: Optional[npt.NDArray[np.float64]]
     gradient_normals: Optional[npt.NDArray[np.float64]]
     gradient_friction: Optional[npt.NDArray[np.float64]]
@@ -160,6 +164,7 @@ def qinf(
     torque_scale: Optional[float] = None,
     with_zero_wrench: bool = False,
     method: str = "partial",
+    gradient: bool = False,
 ) -> Quality: ...
 def ows(
     positions: npt.NDArray[np.float64],
@@ -173,6 +178,7 @@ def ows(
     torque_reference: Optional[npt.NDArray[np.float64]] = None,
     torque_scale: Optional[float] = None,
     method: str = "partial",
+    gradient: bool = False,
 ) -> Quality: ...
 def evaluate(
     positions: npt.NDArray[np.float64],

@@ -1,4 +1,9 @@
-//! A GraspIt!-like random grasp planner: sample contacts on the surface, keep the best grasp.
+//! Grasp planners: a GraspIt!-like random sampler ([`plan`]: sample contacts on the surface,
+//! keep the best grasp) and a planner that climbs the metric's exact gradient over the surface
+//! ([`plan_descent`]; its rules in [`descent`]).
+//!
+//! # The sampler
+//!
 //!
 //! Each sample places `m` contacts uniformly by area on the object's surface (inward face normals,
 //! [`Mesh::sample_surface`]), builds the grasp in the object's torque frame (centre of mass and
@@ -42,6 +47,13 @@ use crate::mesh::{Mesh, SurfaceSampler};
 use serde_json::{Value, json};
 use std::fmt;
 use std::time::{Duration, Instant};
+
+pub mod descent;
+
+pub use descent::{
+    DescentConfig, DescentReport, MAX_EVALUATIONS, MAX_STARTS, PlannedGrasp, StepRule, Stop,
+    plan_descent,
+};
 
 /// The most samples a plan accepts: 1,000,000.
 ///
@@ -228,6 +240,10 @@ pub enum PlanError {
     /// One of [`metrics`](crate::grasp::metrics)' metrics failed (for instance a zero wrench to
     /// resist).
     Metric(MetricError),
+    /// [`plan_descent`] climbs Q1, Q∞ and Q_OWS, whose gradients it has; not this metric.
+    NotClimbable(Metric),
+    /// A [`StepRule`] that is not `0 < min ≤ initial ≤ max < ∞` with a finite `grow ≥ 1`.
+    StepRule(StepRule),
 }
 
 impl fmt::Display for PlanError {
@@ -246,6 +262,17 @@ impl fmt::Display for PlanError {
             PlanError::Grasp(e) => write!(f, "sampled grasp: {e}"),
             PlanError::Quality(e) => write!(f, "quality: {e}"),
             PlanError::Metric(e) => write!(f, "metric: {e}"),
+            PlanError::NotClimbable(metric) => write!(
+                f,
+                "the descent planner climbs q1, qinf, qinf0 and ows, not {metric}: \
+                 use the sampler for it"
+            ),
+            PlanError::StepRule(s) => write!(
+                f,
+                "step rule: initial {}, max {}, min {}, grow {}: expected \
+                 0 < min ≤ initial ≤ max < ∞ and a finite grow ≥ 1",
+                s.initial, s.max, s.min, s.grow
+            ),
         }
     }
 }
