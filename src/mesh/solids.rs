@@ -78,7 +78,7 @@ impl Mesh {
     /// ```
     /// use pqhull::mesh::Mesh;
     /// // A cylinder of radius 1 and height 2: 4 profile points.
-    /// let cylinder = Mesh::lathe(&[[0.0, 0.0], [1.0, 0.0], [1.0, 2.0], [0.0, 2.0]], 64)?;
+    /// let cylinder = Mesh::lathe(&[[0.0, 0.0], [1.0, 0.0], [1.0, 2.0], [0.0, 2.0]], 256)?;
     /// assert!(cylinder.is_closed());
     /// let volume = cylinder.mass_properties().volume.unwrap();
     /// assert!((volume - 2.0 * std::f64::consts::PI).abs() < 0.01);
