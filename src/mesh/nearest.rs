@@ -75,12 +75,11 @@ impl Mesh {
                 best = Some((distance, q, t));
             }
         }
-        let best = best.map(|(_, position, triangle)| SurfacePoint {
+        best.map(|(_, position, triangle)| SurfacePoint {
             position,
             inward_normal: self.face_normal_inward(triangle).unwrap_or([0.0; 3]),
             triangle,
-        });
-        best
+        })
     }
 }
 

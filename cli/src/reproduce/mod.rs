@@ -23,6 +23,7 @@ pub mod ows;
 pub mod planning;
 pub mod plot;
 mod table;
+pub mod table1;
 
 pub use table::{Column, Table};
 
@@ -72,17 +73,20 @@ pub enum FigureId {
     Fig10,
     /// Planning with each metric (and Table 1's speed-up).
     Fig12,
+    /// Table 1: the descent planner on five objects, full against partial hull.
+    Table1,
 }
 
 impl FigureId {
     /// Every figure, in the paper's order.
-    pub const ALL: [FigureId; 6] = [
+    pub const ALL: [FigureId; 7] = [
         FigureId::Fig6,
         FigureId::Fig7,
         FigureId::Fig8,
         FigureId::Fig9,
         FigureId::Fig10,
         FigureId::Fig12,
+        FigureId::Table1,
     ];
 
     /// `fig6`, …: the name of the figure's files and of `pqh reproduce`'s argument.
@@ -94,6 +98,7 @@ impl FigureId {
             FigureId::Fig9 => "fig9",
             FigureId::Fig10 => "fig10",
             FigureId::Fig12 => "fig12",
+            FigureId::Table1 => "table1",
         }
     }
 
@@ -107,7 +112,8 @@ impl FigureId {
             "8" => FigureId::Fig8,
             "9" => FigureId::Fig9,
             "10" => FigureId::Fig10,
-            "12" | "table1" => FigureId::Fig12,
+            "12" => FigureId::Fig12,
+            "table1" | "table" => FigureId::Table1,
             _ => return None,
         })
     }
@@ -257,5 +263,6 @@ pub fn run(
         FigureId::Fig9 => ows::fig9(size, seed, progress),
         FigureId::Fig10 => planning::fig10(size, seed, progress),
         FigureId::Fig12 => planning::fig12(size, seed, progress),
+        FigureId::Table1 => table1::table1(size, seed, progress),
     }
 }

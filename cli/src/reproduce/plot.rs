@@ -391,6 +391,34 @@ pub fn panels(figure: &Figure) -> Vec<Panel> {
                 ),
             ]
         }
+        FigureId::Table1 => {
+            let table = t("table1");
+            vec![
+                panel(
+                    "quality evaluation per planned grasp, full / partial",
+                    "object (cube, sphere, C shape, joystick, teapot)",
+                    "ratio",
+                    (false, true),
+                    vec![
+                        columns(table, "pqhull", "object", "evaluation_speedup", false),
+                        columns(table, "paper", "object", "paper_evaluation_speedup", false),
+                    ],
+                ),
+                panel(
+                    "planning per planned grasp, full / partial",
+                    "object (cube, sphere, C shape, joystick, teapot)",
+                    "ratio",
+                    (false, true),
+                    vec![columns(
+                        table,
+                        "pqhull",
+                        "object",
+                        "planning_speedup",
+                        false,
+                    )],
+                ),
+            ]
+        }
     }
 }
 

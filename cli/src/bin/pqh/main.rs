@@ -19,6 +19,7 @@ mod limits;
 mod methods;
 mod penetration_cmd;
 mod plan_cmd;
+mod plan_descent_cmd;
 mod plan_view;
 mod progress;
 mod reproduce_cmd;

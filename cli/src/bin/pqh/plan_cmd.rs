@@ -21,11 +21,34 @@ hulls (brute force for ows and resist). It reports the time each run spent in qu
 (the quantity of the seed paper's Table 1) and whether both chose the same best grasp; --output
 writes an HTML view of the Q1-best grasp beside the OWS-best one.
 
+--planner descent climbs the metric instead (q1, qinf, qinf0 or ows): from --starts random
+starts, contacts move over the surface along the exact gradient, at most --evaluations metric
+evaluations per planned grasp; the same starts are climbed again with full hulls.
+
 Details (the comparison, its JSON, Q-infinity's full run): README.md, \"Planning grasps\";
 limits: docs/limits.md.";
 
+/// Which planner `pqh plan` runs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum PlannerArg {
+    /// Random samples, the best kept (GraspIt!'s random planner; --samples)
+    Sampler,
+    /// Climbs the metric's exact gradient over the surface from --starts random starts, at most
+    /// --evaluations metric evaluations each (q1, qinf, qinf0, ows)
+    Descent,
+}
+
 #[derive(Debug, Args)]
 pub struct PlanArgs {
+    /// The planner
+    #[arg(long, value_enum, default_value_t = PlannerArg::Sampler)]
+    pub planner: PlannerArg,
+    /// descent: planned grasps, each climbed from one random start, 1 to 100000
+    #[arg(long, default_value_t = 10, value_parser = crate::limits::count(1, pqhull::plan::MAX_STARTS))]
+    pub starts: usize,
+    /// descent: metric evaluations per planned grasp, its start's included, 2 to 10000
+    #[arg(long, default_value_t = 50, value_parser = crate::limits::count(2, pqhull::plan::MAX_EVALUATIONS))]
+    pub evaluations: usize,
     /// Object mesh, OBJ or STL (default: the built-in spot.obj, whatever the working directory)
     #[arg(long)]
     pub mesh: Option<PathBuf>,
@@ -73,6 +96,9 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
     }
     let metric = args.metric.metric(false, args.wrench.as_deref())?;
     let (mesh, name) = crate::input::object(args.mesh.as_deref())?;
+    if args.planner == PlannerArg::Descent {
+        return crate::plan_descent_cmd::run(args, &mesh, &name, friction, metric);
+    }
     let needs_space = matches!(args.metric, MetricArg::Ows) || args.output.is_some();
     let space = if needs_space {
         Some(

@@ -30,7 +30,7 @@ pub enum SizeArg {
 
 #[derive(Debug, Args)]
 pub struct ReproduceArgs {
-    /// Figures to run (fig6 fig7 fig8 fig9 fig10 fig12, or 6 … 12; table1 is fig12); all when none
+    /// Figures to run (fig6 fig7 fig8 fig9 fig10 fig12 table1, or 6 … 12); all when none
     #[arg(value_name = "FIGURE")]
     figures: Vec<String>,
     /// Where the CSV files, plots and summary.md go (created if missing)
@@ -52,7 +52,7 @@ pub fn run(args: &ReproduceArgs) -> Result<(), CliError> {
     for name in &args.figures {
         let id = FigureId::parse(name).ok_or_else(|| {
             CliError::Usage(format!(
-                "unknown figure '{name}'; the figures are fig6, fig7, fig8, fig9, fig10, fig12 (table1)"
+                "unknown figure '{name}'; the figures are fig6, fig7, fig8, fig9, fig10, fig12, table1"
             ))
         })?;
         if !figures.contains(&id) {
