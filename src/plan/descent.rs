@@ -65,7 +65,7 @@
 use super::{PlanError, samples, torque_frame};
 use crate::geometry::Rng;
 use crate::geometry::vector::{dot, norm, scale, sub};
-use crate::grasp::json::write_contact;
+use crate::grasp::json::write_grasp;
 use crate::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
 use crate::grasp::quality::{Evaluator, Method, Metric, Quality};
 use crate::grasp::{
@@ -236,7 +236,8 @@ impl DescentReport {
 
     /// The report as `pqh plan --planner descent --json` gives it: `starts`, `evaluations`,
     /// `force_closure`, `quality_s`, `gradient_s`, `other_s`, `facets_created`, and `best` (null,
-    /// or its `start`, `value`, `start_value`, `steps`, `evaluations`, `stop` and `contacts`).
+    /// or its `start`, `value`, `start_value`, `steps`, `evaluations`, `stop` and `grasp`, in the
+    /// grasp format `pqh grasp` reads, torque frame included).
     pub fn to_json(&self) -> Value {
         json!({
             "starts": self.planned.len(),
@@ -253,7 +254,7 @@ impl DescentReport {
                 "steps": b.steps,
                 "evaluations": b.evaluations,
                 "stop": b.stop.name(),
-                "contacts": b.grasp.contacts().iter().map(write_contact).collect::<Vec<_>>(),
+                "grasp": write_grasp(&b.grasp),
             })),
         })
     }

@@ -241,3 +241,101 @@ fn demo_from_an_empty_directory_uses_the_built_in_object() {
     assert!(page.contains("best by OWS"));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Whether `p` lies on the bar's surface (one coordinate at its half-extent, the others within).
+fn on_the_bar(p: &[f64]) -> bool {
+    let half = [0.5, 0.2, 0.1];
+    let inside = p.iter().zip(half).all(|(x, h)| x.abs() <= h + 1e-12);
+    let on_a_face = p
+        .iter()
+        .zip(half)
+        .any(|(x, h)| (x.abs() - h).abs() <= 1e-12);
+    inside && on_a_face
+}
+
+#[test]
+fn plan_descent_climbs_and_writes_a_grasp_pqh_grasp_reads() {
+    let bar = bar_obj();
+    let out = pqh(&[
+        "plan",
+        "--mesh",
+        bar.to_str().unwrap(),
+        "--planner",
+        "descent",
+        "--starts",
+        "3",
+        "--evaluations",
+        "20",
+        "--json",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let report: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    assert_eq!(report["planner"], "descent");
+    assert_eq!(report["metric"], "q1");
+    for method in ["partial", "full"] {
+        let run = &report[method];
+        assert_eq!(run["starts"], 3, "{method}");
+        let evaluations = run["evaluations"].as_u64().unwrap();
+        assert!((3..=60).contains(&evaluations), "{method}: {evaluations}");
+        let best = &run["best"];
+        let value = best["value"].as_f64().expect("a force-closure best");
+        assert!(value > 0.0, "{method}: {value}");
+        if let Some(start) = best["start_value"].as_f64() {
+            assert!(value >= start, "{method}: {value} below its start {start}");
+        }
+        assert!(best["evaluations"].as_u64().unwrap() <= 20, "{method}");
+        // The planned grasp is on the surface, with the inward normals of its faces, and
+        // `pqh grasp` reads it back to the value the planner reported.
+        let grasp = &best["grasp"];
+        let contacts = grasp["contacts"].as_array().unwrap();
+        assert_eq!(contacts.len(), 4);
+        for c in contacts {
+            let p: Vec<f64> = serde_json::from_value(c["position"].clone()).unwrap();
+            let n: Vec<f64> = serde_json::from_value(c["normal"].clone()).unwrap();
+            assert!(on_the_bar(&p), "{method}: {p:?} is off the bar");
+            let axis = n.iter().position(|x| x.abs() > 0.5).unwrap();
+            assert!(
+                n[axis] * p[axis] < 0.0,
+                "{method}: {n:?} is not inward at {p:?}"
+            );
+        }
+        let line = serde_json::to_string(grasp).unwrap();
+        let again = crate::support::run::pqh(&["grasp", "-", "--method", method], Some(&line));
+        assert!(again.status.success());
+        let evaluated: Value = serde_json::from_slice(&again.stdout).unwrap();
+        let q = evaluated["quality"].as_f64().unwrap();
+        assert!(
+            (q - value).abs() <= 1e-12 * value,
+            "{method}: {q} vs {value}"
+        );
+    }
+    assert!(report["quality_speedup"].as_f64().unwrap() > 0.0);
+    assert!(report["same_best"].is_boolean());
+}
+
+#[test]
+fn plan_descent_refuses_what_it_cannot_do() {
+    let bar = bar_obj();
+    let mesh = bar.to_str().unwrap();
+    for (args, says) in [
+        (&["--metric", "volume"][..], "--planner descent climbs"),
+        (
+            &["--output", "x.html"],
+            "--output draws the sampler's plans",
+        ),
+        (&["--evaluations", "1"], "--evaluations"),
+        (&["--starts", "0"], "--starts"),
+        (&["--starts", "100001"], "--starts"),
+    ] {
+        let mut all = vec!["plan", "--mesh", mesh, "--planner", "descent"];
+        all.extend_from_slice(args);
+        let out = pqh(&all);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(stderr.contains(says), "{args:?}: {stderr}");
+    }
+}
