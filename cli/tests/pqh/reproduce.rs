@@ -275,15 +275,31 @@ fn every_figure_has_data_a_plot_drawn_from_it_and_the_paper_beside_it() {
         }
     }
 
+    // Table 1: five objects, both methods timed, the paper's ratios beside ours.
+    let table1 = csv("table1");
+    assert_eq!(table1["object"].len(), 5, "table1 rows");
+    for column in [
+        "evaluation_speedup",
+        "planning_speedup",
+        "paper_evaluation_speedup",
+    ] {
+        assert!(
+            table1[column].iter().all(|&r| r.is_finite() && r > 0.0),
+            "table1 {column}: {:?}",
+            table1[column]
+        );
+    }
+    assert!(table1["best_q1_partial"].iter().any(|v| v.is_finite()));
+
     let summary = std::fs::read_to_string(dir.join("summary.md")).unwrap();
-    for paper in ["≈ 6×", "≈ 70×", "≈ 40×", "19–39×"] {
+    for paper in ["≈ 6×", "≈ 70×", "≈ 40×", "19–39×", "25.26×"] {
         assert!(
             summary.contains(paper),
             "summary.md lacks the paper's {paper}"
         );
     }
     assert!(!summary.contains("DIFFER"), "{summary}");
-    for figure in ["fig6", "fig7", "fig8", "fig9", "fig10", "fig12"] {
+    for figure in ["fig6", "fig7", "fig8", "fig9", "fig10", "fig12", "table1"] {
         assert!(
             summary.contains(&format!("## {figure} ")),
             "summary.md lacks {figure}"
@@ -332,7 +348,7 @@ fn docs_paper_shows_every_figure_and_the_tables_its_command_wrote() {
             "docs/paper.md lacks the row the command wrote: {line}"
         );
     }
-    for figure in ["fig6", "fig7", "fig8", "fig9", "fig10", "fig12"] {
+    for figure in ["fig6", "fig7", "fig8", "fig9", "fig10", "fig12", "table1"] {
         assert!(
             doc.contains(&format!("(paper/{figure}.svg)")),
             "docs/paper.md shows no {figure}"
