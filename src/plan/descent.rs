@@ -344,8 +344,10 @@ impl Climber<'_> {
 /// frame, as for [`plan`](super::plan)).
 ///
 /// # Errors
-/// [`PlanError`] for an empty configuration, more than [`MAX_STARTS`] starts or
-/// [`MAX_EVALUATIONS`] evaluations ([`PlanError::TooManySamples`]), more than [`MAX_CONTACTS`]
+/// [`PlanError`] for an empty configuration, more than [`MAX_STARTS`] starts
+/// ([`PlanError::TooManyStarts`]) or [`MAX_EVALUATIONS`] evaluations
+/// ([`PlanError::TooManyEvaluations`]), fewer than 2 for Q_OWS
+/// ([`PlanError::TooFewEvaluations`]), more than [`MAX_CONTACTS`]
 /// contacts, a metric the planner does not climb ([`PlanError::NotClimbable`]), a step rule that
 /// is not `0 < min ≤ initial ≤ max`, `grow ≥ 1` ([`PlanError::StepRule`]), a missing wrench space,
 /// or a failed evaluation — all but the last checked before any work.
@@ -411,16 +413,17 @@ fn check(config: &DescentConfig) -> Result<(), PlanError> {
     if config.contacts == 0 || config.starts == 0 || config.evaluations == 0 {
         return Err(PlanError::Empty);
     }
-    for (count, max) in [
-        (config.starts, MAX_STARTS),
-        (config.evaluations, MAX_EVALUATIONS),
-    ] {
-        if count > max {
-            return Err(PlanError::TooManySamples {
-                samples: count,
-                max,
-            });
-        }
+    if config.starts > MAX_STARTS {
+        return Err(PlanError::TooManyStarts {
+            starts: config.starts,
+            max: MAX_STARTS,
+        });
+    }
+    if config.evaluations > MAX_EVALUATIONS {
+        return Err(PlanError::TooManyEvaluations {
+            evaluations: config.evaluations,
+            max: MAX_EVALUATIONS,
+        });
     }
     if config.contacts > MAX_CONTACTS {
         return Err(PlanError::Grasp(GraspError::TooManyContacts {
@@ -430,7 +433,10 @@ fn check(config: &DescentConfig) -> Result<(), PlanError> {
     }
     if config.metric == Metric::Ows && config.evaluations < 2 {
         // The start alone may take two: Q_OWS, and Q1 when it is not force closure.
-        return Err(PlanError::Empty);
+        return Err(PlanError::TooFewEvaluations {
+            evaluations: config.evaluations,
+            needed: 2,
+        });
     }
     if !matches!(
         config.metric,

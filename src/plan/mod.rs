@@ -221,7 +221,7 @@ impl PlanReport {
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum PlanError {
-    /// `contacts` or `samples` is zero.
+    /// `contacts`, `samples`, `starts` or `evaluations` is zero.
     Empty,
     /// More samples than [`MAX_SAMPLES`].
     TooManySamples {
@@ -229,6 +229,28 @@ pub enum PlanError {
         samples: usize,
         /// The limit, [`MAX_SAMPLES`].
         max: usize,
+    },
+    /// More starts than [`MAX_STARTS`] for [`plan_descent`].
+    TooManyStarts {
+        /// The number of starts asked for.
+        starts: usize,
+        /// The limit, [`MAX_STARTS`].
+        max: usize,
+    },
+    /// More evaluations per start than [`MAX_EVALUATIONS`] for [`plan_descent`].
+    TooManyEvaluations {
+        /// The number asked for.
+        evaluations: usize,
+        /// The limit, [`MAX_EVALUATIONS`].
+        max: usize,
+    },
+    /// Fewer evaluations per start than the metric's start can take ([`plan_descent`] with
+    /// `Metric::Ows` needs 2: a start that is not force closure takes Q_OWS and Q1).
+    TooFewEvaluations {
+        /// The number asked for.
+        evaluations: usize,
+        /// The least the metric needs.
+        needed: usize,
     },
     /// `Metric::Ows` without an object wrench space.
     NoWrenchSpace,
@@ -249,13 +271,34 @@ pub enum PlanError {
 impl fmt::Display for PlanError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            PlanError::Empty => write!(f, "a plan needs at least one contact and one sample"),
+            PlanError::Empty => write!(
+                f,
+                "a plan needs at least one contact and one sample (or start and evaluation)"
+            ),
             PlanError::TooManySamples { samples, max } => {
                 write!(
                     f,
                     "{samples} samples are too many for one plan (at most {max})"
                 )
             }
+            PlanError::TooManyStarts { starts, max } => {
+                write!(
+                    f,
+                    "{starts} starts are too many for one plan (at most {max})"
+                )
+            }
+            PlanError::TooManyEvaluations { evaluations, max } => write!(
+                f,
+                "{evaluations} evaluations per start are too many (at most {max})"
+            ),
+            PlanError::TooFewEvaluations {
+                evaluations,
+                needed,
+            } => write!(
+                f,
+                "{evaluations} evaluations per start are too few for this metric (at least \
+                 {needed})"
+            ),
             PlanError::NoWrenchSpace => {
                 write!(f, "the OWS metric needs the object's wrench space")
             }

@@ -7,7 +7,10 @@ use pqhull::grasp::metrics::{grasp_matrix_metrics, gws_volume, resist};
 use pqhull::grasp::quality::{Method, Metric, QualityError, q1};
 use pqhull::grasp::{FrictionModel, Grasp};
 use pqhull::mesh::Mesh;
-use pqhull::plan::{PlanConfig, PlanError, plan, samples};
+use pqhull::plan::{
+    DescentConfig, MAX_EVALUATIONS, MAX_STARTS, PlanConfig, PlanError, StepRule, plan,
+    plan_descent, samples,
+};
 
 /// Gravity at the centre of mass, in the object's torque frame.
 const GRAVITY: [f64; 6] = [0.0, 0.0, -1.0, 0.0, 0.0, 0.0];
@@ -118,4 +121,79 @@ fn a_plan_refuses_what_its_metric_cannot_take() {
         plan(&object(), None, &config(Metric::Ows), Method::Partial),
         Err(PlanError::NoWrenchSpace)
     ));
+}
+
+#[test]
+fn the_descent_planner_names_what_it_refuses_before_any_work() {
+    let friction = FrictionModel::try_new(0.5, 6).expect("valid friction");
+    let q1 = DescentConfig::new(3, friction, Metric::Q1);
+    let refuse = |c: DescentConfig| plan_descent(&object(), None, &c, Method::Partial).unwrap_err();
+    let e = refuse(DescentConfig {
+        starts: MAX_STARTS + 1,
+        ..q1
+    });
+    assert_eq!(
+        e,
+        PlanError::TooManyStarts {
+            starts: MAX_STARTS + 1,
+            max: MAX_STARTS
+        }
+    );
+    assert!(e.to_string().contains("starts are too many"), "{e}");
+    let e = refuse(DescentConfig {
+        evaluations: MAX_EVALUATIONS + 1,
+        ..q1
+    });
+    assert!(matches!(e, PlanError::TooManyEvaluations { .. }), "{e}");
+    assert!(e.to_string().contains("evaluations per start"), "{e}");
+    for empty in [
+        DescentConfig { starts: 0, ..q1 },
+        DescentConfig {
+            evaluations: 0,
+            ..q1
+        },
+        DescentConfig { contacts: 0, ..q1 },
+    ] {
+        assert_eq!(refuse(empty), PlanError::Empty);
+    }
+    let ows = DescentConfig {
+        evaluations: 1,
+        ..DescentConfig::new(3, friction, Metric::Ows)
+    };
+    assert_eq!(
+        refuse(ows),
+        PlanError::TooFewEvaluations {
+            evaluations: 1,
+            needed: 2
+        }
+    );
+    let ows = DescentConfig::new(3, friction, Metric::Ows);
+    assert_eq!(refuse(ows), PlanError::NoWrenchSpace);
+    let volume = DescentConfig::new(3, friction, Metric::Volume);
+    assert_eq!(refuse(volume), PlanError::NotClimbable(Metric::Volume));
+    for step in [
+        StepRule {
+            min: 0.0,
+            ..StepRule::default()
+        },
+        StepRule {
+            initial: 0.9,
+            ..StepRule::default()
+        },
+        StepRule {
+            grow: 0.5,
+            ..StepRule::default()
+        },
+        StepRule {
+            max: f64::INFINITY,
+            ..StepRule::default()
+        },
+        StepRule {
+            initial: f64::NAN,
+            ..StepRule::default()
+        },
+    ] {
+        let e = refuse(DescentConfig { step, ..q1 });
+        assert!(matches!(e, PlanError::StepRule(_)), "{step:?}: {e}");
+    }
 }

@@ -43,6 +43,9 @@ impl From<PlanError> for CliError {
         match e {
             PlanError::Empty
             | PlanError::TooManySamples { .. }
+            | PlanError::TooManyStarts { .. }
+            | PlanError::TooManyEvaluations { .. }
+            | PlanError::TooFewEvaluations { .. }
             | PlanError::Grasp(GraspError::TooManyContacts { .. }) => {
                 CliError::Usage(e.to_string())
             }
