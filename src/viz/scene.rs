@@ -274,6 +274,17 @@ impl Panel {
 /// A self-contained HTML page titled `title` showing `panels` side by side (drag to rotate, one
 /// viewpoint for all). A panel without frames shows an empty scene.
 pub fn scene_page(title: &str, panels: &[Panel]) -> String {
+    scene_page_with_note(title, panels, "")
+}
+
+/// [`scene_page`] with `note`, plain text, shown under the panels (escaped here).
+///
+/// ```
+/// use pqhull::viz::scene::{Panel, scene_page_with_note};
+/// let page = scene_page_with_note("two views", &[Panel::new("a", vec![])], "a < b");
+/// assert!(page.contains("a &lt; b"));
+/// ```
+pub fn scene_page_with_note(title: &str, panels: &[Panel], note: &str) -> String {
     let panels: Vec<Value> = panels
         .iter()
         .map(|p| {
@@ -285,7 +296,7 @@ pub fn scene_page(title: &str, panels: &[Panel]) -> String {
             json!({"title": p.title, "frames": frames})
         })
         .collect();
-    page(title, &json!({ "panels": panels }), "")
+    page(title, &json!({ "panels": panels }), &escape(note))
 }
 
 /// Script run first: it records every script error (including a syntax error in the viewer) in

@@ -418,18 +418,11 @@ fn generic_scene_page_rotates_and_reports_errors() {
 fn planned_grasps_page_loads_draws_both_panels_and_rotates() {
     let Some(exe) = browser() else { return };
     let page = scratch("plan.html");
-    // The planner's default object: the built-in spot.obj.
+    // `pqh demo`'s page on its defaults (the built-in spot.obj, 300 samples): the one README.md
+    // shows; the full-hull check on one sample only.
     let o = Command::new(env!("CARGO_BIN_EXE_pqh"))
         .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
-        .args([
-            "plan",
-            "--samples",
-            "150",
-            "--full-samples",
-            "0",
-            "--quiet",
-            "--output",
-        ])
+        .args(["demo", "--full-samples", "1", "--output"])
         .arg(&page)
         .output()
         .expect("run pqh");
@@ -438,6 +431,7 @@ fn planned_grasps_page_loads_draws_both_panels_and_rotates() {
     let state = load(&exe, &url(&page, fragment));
     assert_loaded(&state, "planned grasps");
     assert!(state.dom.contains("best by Q1") && state.dom.contains("best by OWS"));
+    assert!(state.dom.contains("The two grasps differ"), "{}", state.dom);
     let shot_file = scratch("plan.png");
     let shot = screenshot(&exe, &url(&page, fragment), &shot_file);
     let [left, top, w, h] = state.canvas;

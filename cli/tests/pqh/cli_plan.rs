@@ -213,6 +213,46 @@ fn demo_agrees_and_writes_its_view() {
 }
 
 #[test]
+fn demo_on_its_defaults_shows_two_different_grasps_and_how_they_differ() {
+    // The default samples and seed (the full-hull check on two samples only, to keep it short).
+    let page = temp("demo-defaults.html");
+    let out = pqh(&[
+        "demo",
+        "--full-samples",
+        "2",
+        "--output",
+        page.to_str().unwrap(),
+        "--json",
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let report: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    assert_eq!(report["bests_differ"], true, "{report}");
+    let [by_q1, by_ows] = [0, 1].map(|i| &report["metrics"][i]["partial"]["best"]);
+    assert_ne!(by_q1["sample"], by_ows["sample"]);
+    let note = report["note"].as_str().unwrap();
+    assert!(note.starts_with("The two grasps differ."), "{note}");
+    // Each grasp's value under the other metric is in the note, and is no better than that
+    // metric's own best (each best is the largest over the same samples).
+    let number_after = |key: &str, from: &str| -> f64 {
+        let rest = &from[from.find(key).unwrap_or_else(|| panic!("{key} in {from}")) + key.len()..];
+        rest.split([' ', ';', '(']).next().unwrap().parse().unwrap()
+    };
+    let (q1_part, ows_part) = note.split_once("; the OWS-best").unwrap();
+    let ows_of_q1_best = number_after("Q_OWS = ", q1_part);
+    let q1_of_ows_best = number_after("Q1 = ", ows_part);
+    let q1_best = by_q1["value"].as_f64().unwrap();
+    let ows_best = by_ows["value"].as_f64().unwrap();
+    assert!(ows_of_q1_best <= ows_best + 5e-5, "{note}");
+    assert!(q1_of_ows_best <= q1_best + 5e-5, "{note}");
+    let html = std::fs::read_to_string(&page).unwrap();
+    assert!(html.contains("The two grasps differ."));
+}
+
+#[test]
 fn demo_from_an_empty_directory_uses_the_built_in_object() {
     // No data/ or ../shared beside it: the default object must come from the binary itself.
     let dir = std::env::temp_dir().join(format!("pqh-demo-empty-{}", std::process::id()));

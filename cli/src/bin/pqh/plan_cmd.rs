@@ -9,6 +9,7 @@ use pqhull::grasp::FrictionModel;
 use pqhull::grasp::ows::ObjectWrenchSpace;
 use pqhull::grasp::quality::Method;
 use pqhull::plan::{BestComparison, PlanConfig};
+use pqhull::viz::plan_scene::metric_bests;
 use serde_json::json;
 use std::io::Write;
 use std::path::PathBuf;
@@ -152,9 +153,13 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
         None
     };
     let views = match (&args.output, &space) {
-        (Some(path), Some(space)) => Some(crate::plan_view::write(
-            path, &mesh, &name, space, &config, &partial,
-        )?),
+        (Some(path), Some(space)) => {
+            let bests = metric_bests(&mesh, space, &config, &partial)
+                .map_err(|e| CliError::Geometry(e.to_string()))?;
+            Some(crate::plan_view::write(
+                path, &mesh, &name, &config, &bests,
+            )?)
+        }
         _ => None,
     };
 

@@ -2,26 +2,23 @@
 //! `pqh demo`.
 
 use crate::error::CliError;
-use pqhull::grasp::ows::ObjectWrenchSpace;
 use pqhull::mesh::Mesh;
-use pqhull::plan::{PlanConfig, PlanReport};
-use pqhull::viz::plan_scene::plan_page;
+use pqhull::plan::PlanConfig;
+use pqhull::viz::plan_scene::{MetricBest, plan_page};
 use std::path::{Path, PathBuf};
 
-/// Writes the view to `path`; returns the path written.
+/// Writes the view of `bests` to `path`; returns the path written.
 ///
 /// # Errors
-/// A failed plan or an unwritable path.
+/// An unwritable path.
 pub fn write(
     path: &Path,
     mesh: &Mesh,
     name: &str,
-    space: &ObjectWrenchSpace,
     config: &PlanConfig,
-    report: &PlanReport,
+    bests: &[MetricBest; 2],
 ) -> Result<PathBuf, CliError> {
-    let page = plan_page(mesh, name, space, config, report)
-        .map_err(|e| CliError::Geometry(e.to_string()))?;
+    let page = plan_page(mesh, name, config, bests);
     std::fs::write(path, page)
         .map_err(|e| CliError::Input(format!("cannot write {}: {e}", path.display())))?;
     Ok(path.to_path_buf())
