@@ -336,15 +336,10 @@ pub fn qinf_gradient(
     // A generic face of the sum is the sum of faces whose dimensions add up to its own; more
     // (three whole pyramids tied along u*, say) is a degenerate direction where a slight move
     // of the inputs breaks the ties one way or the other.
-    // A contact's set spans a 2-flat (its pyramid), one more dimension for a soft finger's
-    // second pyramid and for the zero wrench.
-    let dimensions: usize = faces
-        .iter()
-        .zip(grasp.contacts())
-        .map(|(f, c)| {
-            (f.len() - 1).min(2 + usize::from(c.is_soft()) + usize::from(with_zero_wrench))
-        })
-        .sum();
+    // Each contact's face dimension is measured, not inferred from its point count: a pyramid's
+    // whole rim (k points) is 2-dimensional with or without the zero wrench beside it, and a
+    // soft finger's quadrilateral side is 2-dimensional with 4 points.
+    let dimensions: usize = faces.iter().map(|f| affine_dimension(f)).sum();
     differentiable &= dimensions + 1 == chosen.len();
     gradient.differentiable = differentiable;
     for (&s, &lambda) in chosen.iter().zip(&weights) {
@@ -410,6 +405,41 @@ fn tangent_derivative(contact: &Contact) -> (impl Fn([f64; 3]) -> [f64; 3], bool
 enum Source {
     Given([f64; 3]),
     Axis([f64; 3]),
+}
+
+/// The dimension of the affine hull of a face's wrenches: the rank of their differences from
+/// the first, by Gram–Schmidt with pivoting, a residual below [`TIE`] of the face's extent
+/// counting as zero (the face's points are a friction pyramid's vertices, far apart or equal).
+fn affine_dimension(face: &[(usize, [f64; 6])]) -> usize {
+    let Some((_, first)) = face.first() else {
+        return 0;
+    };
+    let mut rest: Vec<[f64; 6]> = face[1..].iter().map(|(_, w)| sub6(w, first)).collect();
+    let extent = rest.iter().map(norm6).fold(0.0, f64::max);
+    let mut rank = 0;
+    while let Some((at, largest)) = rest
+        .iter()
+        .map(norm6)
+        .enumerate()
+        .max_by(|a, b| a.1.total_cmp(&b.1))
+    {
+        if largest.is_nan() || largest <= TIE * extent {
+            break;
+        }
+        let axis = rest.swap_remove(at).map(|c| c / largest);
+        for d in &mut rest {
+            let along = dot6(d, &axis);
+            for (c, a) in d.iter_mut().zip(axis) {
+                *c -= along * a;
+            }
+        }
+        rank += 1;
+    }
+    rank
+}
+
+fn norm6(a: &[f64; 6]) -> f64 {
+    dot6(a, a).sqrt()
 }
 
 fn sub6(a: &[f64; 6], b: &[f64; 6]) -> [f64; 6] {
