@@ -65,3 +65,21 @@ pub fn grasp(message: impl Into<String>) -> PyErr {
 pub fn quality(e: pqhull::grasp::quality::QualityError) -> PyErr {
     QualityError::new_err(e.to_string())
 }
+
+/// The `pqhull.Error` of a planner's error, with the library's message: a [`GraspError`] or a
+/// [`QualityError`] when a grasp or its evaluation failed, an [`InputError`] for a configuration
+/// the planner refuses (its bounds, a metric it does not climb, ...).
+pub fn plan(e: pqhull::plan::PlanError) -> PyErr {
+    use pqhull::grasp::metrics::MetricError;
+    use pqhull::plan::PlanError;
+    let message = e.to_string();
+    match e {
+        PlanError::Grasp(_) | PlanError::Metric(MetricError::Grasp(_)) => {
+            GraspError::new_err(message)
+        }
+        PlanError::Quality(_) | PlanError::Metric(MetricError::Quality(_)) => {
+            QualityError::new_err(message)
+        }
+        _ => InputError::new_err(message),
+    }
+}

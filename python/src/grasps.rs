@@ -139,7 +139,11 @@ fn check_contacts(what: &str, shape: &[usize], m: Option<usize>) -> PyResult<()>
 
 /// The batch's metric from its name (the library's vocabulary, [`Metric`]'s `FromStr`),
 /// `with_zero_wrench` (Q∞) and the wrench `resist` takes.
-fn metric_of(name: &str, with_zero_wrench: bool, wrench: Option<&[f64]>) -> PyResult<Metric> {
+pub(crate) fn metric_of(
+    name: &str,
+    with_zero_wrench: bool,
+    wrench: Option<&[f64]>,
+) -> PyResult<Metric> {
     if wrench.is_some() && name != "resist" {
         return Err(errors::input("wrench= is for metric \"resist\""));
     }
@@ -157,11 +161,15 @@ fn metric_of(name: &str, with_zero_wrench: bool, wrench: Option<&[f64]>) -> PyRe
     }
 }
 
+/// A method by its name ([`Method`]'s `FromStr`).
+pub(crate) fn method_named(name: &str) -> PyResult<Method> {
+    name.parse()
+        .map_err(|e: NameError| errors::input(e.to_string()))
+}
+
 /// A method by its name ([`Method`]'s `FromStr`), checked against `metric`.
 pub(crate) fn method_of(name: &str, metric: Metric) -> PyResult<Method> {
-    let method: Method = name
-        .parse()
-        .map_err(|e: NameError| errors::input(e.to_string()))?;
+    let method = method_named(name)?;
     if !method.supports(metric) {
         return Err(errors::quality(QualityError::UnsupportedMethod {
             method,

@@ -15,6 +15,7 @@ mod hull;
 mod metrics;
 mod ows;
 mod penetration;
+mod plan;
 mod qhull_options;
 
 use pyo3::prelude::*;
@@ -30,6 +31,7 @@ fn _pqhull(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<grasps::Batch>()?;
     m.add_class::<ows::ObjectWrenchSpace>()?;
     m.add_class::<penetration::Penetration>()?;
+    m.add_class::<plan::DescentReport>()?;
     m.add_function(wrap_pyfunction!(hull::distance_to_boundary, m)?)?;
     m.add_function(wrap_pyfunction!(hull::distances_to_boundary, m)?)?;
     m.add_function(wrap_pyfunction!(penetration::penetration_depth, m)?)?;
@@ -38,6 +40,7 @@ fn _pqhull(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(grasps::ows, m)?)?;
     m.add_function(wrap_pyfunction!(grasps::evaluate, m)?)?;
     m.add_function(wrap_pyfunction!(ows::load_mesh, m)?)?;
+    m.add_function(wrap_pyfunction!(plan::plan_descent, m)?)?;
     m.add_function(wrap_pyfunction!(metrics::cone_bracket, m)?)?;
     m.add_function(wrap_pyfunction!(metrics::resist, m)?)?;
     m.add_function(wrap_pyfunction!(metrics::gws_volume, m)?)?;

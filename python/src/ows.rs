@@ -8,6 +8,7 @@ use pqhull::grasp::FrictionModel;
 use pqhull::grasp::ows::ObjectWrenchSpace as Space;
 use pqhull::mesh::Mesh;
 use pyo3::prelude::*;
+use pyo3::types::PyList;
 
 /// An object wrench space (the seed paper's Eq. 6 on a mesh) or a task wrench space (given
 /// disturbances): the wrenches a grasp must resist, each `d` by `-r·d`.
@@ -19,7 +20,8 @@ pub struct ObjectWrenchSpace {
     pub(crate) inner: Space,
 }
 
-fn friction(friction: f64, cone_edges: usize) -> PyResult<FrictionModel> {
+/// The friction model, or a [`GraspError`](errors::GraspError) with the library's message.
+pub(crate) fn friction(friction: f64, cone_edges: usize) -> PyResult<FrictionModel> {
     FrictionModel::try_new(friction, cone_edges).map_err(|e| errors::grasp(e.to_string()))
 }
 
@@ -49,11 +51,91 @@ fn disturbance_rows(wrenches: &Bound<'_, PyAny>) -> PyResult<Vec<[f64; 6]>> {
         .collect())
 }
 
-fn from_mesh(py: Python<'_>, mesh: &Mesh, model: FrictionModel) -> PyResult<ObjectWrenchSpace> {
+/// The object wrench space of `mesh` (built without the GIL).
+pub(crate) fn from_mesh(
+    py: Python<'_>,
+    mesh: &Mesh,
+    model: FrictionModel,
+) -> PyResult<ObjectWrenchSpace> {
     let inner = py
         .detach(|| Space::from_mesh(mesh, model))
         .map_err(|e| errors::grasp(e.to_string()))?;
     Ok(ObjectWrenchSpace { inner })
+}
+
+/// An OBJ or STL mesh from its file (read without the GIL).
+fn load(py: Python<'_>, path: &std::path::Path) -> PyResult<Mesh> {
+    py.detach(|| Mesh::load(path))
+        .map_err(|e| errors::input(e.to_string()))
+}
+
+/// A mesh from an (n, 3) vertex array and an (f, 3) array of vertex indices (counter-clockwise
+/// seen from outside).
+fn mesh_of_arrays(
+    py: Python<'_>,
+    vertices: &Bound<'_, PyAny>,
+    faces: &Bound<'_, PyAny>,
+) -> PyResult<Mesh> {
+    let vertices = float_array(vertices, "vertices")?;
+    let vertices: PyReadonlyArray2<'_, f64> = vertices
+        .extract()
+        .map_err(|_| errors::input("vertices must have shape (n, 3)"))?;
+    let numpy = py.import("numpy")?;
+    let faces = numpy
+        .call_method1("ascontiguousarray", (faces, "int64"))
+        .map_err(|e| errors::input(format!("faces: not an array of integers ({e})")))?;
+    let faces: PyReadonlyArray2<'_, i64> = faces
+        .extract()
+        .map_err(|_| errors::input("faces must have shape (f, 3)"))?;
+    if vertices.shape()[1] != 3 || faces.shape()[1] != 3 {
+        return Err(errors::input(format!(
+            "vertices must have shape (n, 3) and faces (f, 3), not {:?} and {:?}",
+            vertices.shape(),
+            faces.shape()
+        )));
+    }
+    let v: Vec<[f64; 3]> = vertices
+        .as_array()
+        .rows()
+        .into_iter()
+        .map(|r| [r[0], r[1], r[2]])
+        .collect();
+    let f = faces
+        .as_array()
+        .rows()
+        .into_iter()
+        .enumerate()
+        .map(|(i, r)| {
+            let index = |x: i64| {
+                u32::try_from(x)
+                    .map_err(|_| errors::input(format!("face {i}: index {x} out of range")))
+            };
+            Ok([index(r[0])?, index(r[1])?, index(r[2])?])
+        })
+        .collect::<PyResult<Vec<[u32; 3]>>>()?;
+    Mesh::try_new(v, f).map_err(|e| errors::input(e.to_string()))
+}
+
+/// A mesh as the package takes one: the path of an OBJ or STL file (`str` or `os.PathLike`), or
+/// a `(vertices, faces)` pair of arrays (a tuple or a list; what `load_mesh` returns).
+pub(crate) fn mesh_of(py: Python<'_>, mesh: &Bound<'_, PyAny>) -> PyResult<Mesh> {
+    if let Ok(path) = mesh.extract::<std::path::PathBuf>() {
+        return load(py, &path);
+    }
+    let pair = match mesh.cast::<PyList>() {
+        Ok(list) => list
+            .to_tuple()
+            .extract::<(Bound<'_, PyAny>, Bound<'_, PyAny>)>(),
+        Err(_) => mesh.extract::<(Bound<'_, PyAny>, Bound<'_, PyAny>)>(),
+    };
+    match pair {
+        Ok((vertices, faces)) => mesh_of_arrays(py, &vertices, &faces),
+        Err(_) => Err(errors::input(format!(
+            "mesh must be the path of an OBJ or STL file or a (vertices, faces) pair of arrays, \
+             not {}",
+            mesh.get_type().name()?
+        ))),
+    }
 }
 
 #[pymethods]
@@ -69,7 +151,7 @@ impl ObjectWrenchSpace {
         cone_edges: usize,
     ) -> PyResult<Self> {
         let model = self::friction(friction, cone_edges)?;
-        let mesh = Mesh::load(&path).map_err(|e| errors::input(e.to_string()))?;
+        let mesh = load(py, &path)?;
         self::from_mesh(py, &mesh, model)
     }
 
@@ -86,44 +168,7 @@ impl ObjectWrenchSpace {
         cone_edges: usize,
     ) -> PyResult<Self> {
         let model = self::friction(friction, cone_edges)?;
-        let vertices = float_array(vertices, "vertices")?;
-        let vertices: PyReadonlyArray2<'_, f64> = vertices
-            .extract()
-            .map_err(|_| errors::input("vertices must have shape (n, 3)"))?;
-        let numpy = py.import("numpy")?;
-        let faces = numpy
-            .call_method1("ascontiguousarray", (faces, "int64"))
-            .map_err(|e| errors::input(format!("faces: not an array of integers ({e})")))?;
-        let faces: PyReadonlyArray2<'_, i64> = faces
-            .extract()
-            .map_err(|_| errors::input("faces must have shape (f, 3)"))?;
-        if vertices.shape()[1] != 3 || faces.shape()[1] != 3 {
-            return Err(errors::input(format!(
-                "vertices must have shape (n, 3) and faces (f, 3), not {:?} and {:?}",
-                vertices.shape(),
-                faces.shape()
-            )));
-        }
-        let v: Vec<[f64; 3]> = vertices
-            .as_array()
-            .rows()
-            .into_iter()
-            .map(|r| [r[0], r[1], r[2]])
-            .collect();
-        let f = faces
-            .as_array()
-            .rows()
-            .into_iter()
-            .enumerate()
-            .map(|(i, r)| {
-                let index = |x: i64| {
-                    u32::try_from(x)
-                        .map_err(|_| errors::input(format!("face {i}: index {x} out of range")))
-                };
-                Ok([index(r[0])?, index(r[1])?, index(r[2])?])
-            })
-            .collect::<PyResult<Vec<[u32; 3]>>>()?;
-        let mesh = Mesh::try_new(v, f).map_err(|e| errors::input(e.to_string()))?;
+        let mesh = mesh_of_arrays(py, vertices, faces)?;
         self::from_mesh(py, &mesh, model)
     }
 
@@ -194,9 +239,7 @@ pub fn load_mesh<'py>(
     py: Python<'py>,
     path: std::path::PathBuf,
 ) -> PyResult<(Table<'py, f64>, Table<'py, i64>)> {
-    let mesh = py
-        .detach(|| Mesh::load(&path))
-        .map_err(|e| errors::input(e.to_string()))?;
+    let mesh = load(py, &path)?;
     let vertices = PyArray1::from_vec(py, mesh.vertices().as_flattened().to_vec())
         .reshape([mesh.vertices().len(), 3])?;
     let faces: Vec<i64> = mesh

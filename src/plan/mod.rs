@@ -302,6 +302,8 @@ impl fmt::Display for PlanError {
             PlanError::NoWrenchSpace => {
                 write!(f, "the OWS metric needs the object's wrench space")
             }
+            // Too many contacts is the configuration's fault, found before any sampling.
+            PlanError::Grasp(e @ GraspError::TooManyContacts { .. }) => write!(f, "{e}"),
             PlanError::Grasp(e) => write!(f, "sampled grasp: {e}"),
             PlanError::Quality(e) => write!(f, "quality: {e}"),
             PlanError::Metric(e) => write!(f, "metric: {e}"),

@@ -104,6 +104,7 @@ Differences from scipy
 
 from __future__ import annotations
 
+import operator
 import sys
 
 import numpy as np
@@ -112,6 +113,7 @@ from . import _pqhull
 from ._pqhull import (
     Batch,
     ConvexHull,
+    DescentReport,
     Distance,
     Distances,
     Error,
@@ -139,7 +141,9 @@ __all__ = [
     "resist",
     "gws_volume",
     "grasp_matrix_metrics",
+    "plan_descent",
     "Batch",
+    "DescentReport",
     "Distance",
     "Distances",
     "Penetration",
@@ -386,3 +390,81 @@ def grasp_matrix_metrics(positions, normals, tangents=None, *, torsion=None, fri
         torsion=_torsion(torsion, np.shape(positions)[:1]),
                                         friction=float(friction), cone_edges=int(cone_edges),
                                         **_frame_args(torque_reference, torque_scale))
+
+
+def _count(value, name):
+    """`value` as a Python int from 0 to 2**64 - 1 (the library's counts and seeds), or an
+    InputError."""
+    try:
+        n = operator.index(value)
+    except TypeError:
+        raise InputError(f"{name} must be an integer, not {value!r}") from None
+    if not 0 <= n < 2**64:
+        raise InputError(f"{name} must be an integer from 0 to 2**64 - 1, not {n}")
+    return n
+
+
+def plan_descent(mesh, *, contacts=4, friction, cone_edges, metric="q1", starts=10,
+                 evaluations=50, seed=1, method="partial", space=None):
+    """Grasps planned on a mesh by climbing the metric (the library's descent planner,
+    ``pqhull::plan::plan_descent``; ``pqh plan --planner descent`` on the command line): from each
+    of `starts` random grasps of `contacts` contacts (drawn uniformly by area on the surface,
+    inward face normals, as the sampling planner draws them; the same `seed` gives the same
+    starts), contacts move over the surface along the exact gradient of the value, a move kept
+    only when it is strictly better, until the step is too small, the run has used its
+    `evaluations` (the start's included) or the gradient vanishes. A run that cannot reach
+    force closure starts again from a fresh random grasp while evaluations remain. Grasps are
+    ranked by (force closure, value): the metric's value for a force-closure grasp, else the value
+    climbed toward force closure (negative or zero: Q1's, or for "qinf" / "qinf0" Q-infinity's
+    own), which a start short of force closure climbs first. So every planned grasp is at least
+    as good as its start. Runs one after the other (one core) with the GIL released.
+
+    * `mesh`: the path of an OBJ or STL file, or a ``(vertices, faces)`` pair of arrays ((n, 3)
+      positions, (f, 3) vertex indices counter-clockwise seen from outside), as
+      ``load_mesh`` returns and ``ObjectWrenchSpace.from_arrays`` takes.
+    * `friction`, `cone_edges`: every contact's friction coefficient and pyramid edges.
+    * `metric`: "q1", "qinf", "qinf0" (Q-infinity with the zero wrench) or "ows". For "ows",
+      `space` is the object's ObjectWrenchSpace (of this same mesh: its torque frame is the
+      grasps'); without it, the mesh's own is built with the grasps' `friction` and
+      `cone_edges` (as ``pqh plan`` does, and as ``ObjectWrenchSpace.from_arrays`` /
+      ``from_mesh`` would). `space` is refused for the other metrics. Any other metric
+      ("volume", ...) raises InputError: the planner follows gradients, which only these have.
+    * `method`: "partial" (the partial hull) or "full" (the full hull), both exact.
+    * `starts` (1 to 100,000), `evaluations` per planned grasp (1 to 10,000; at least 2 for
+      "ows"): the library's bounds, refused (InputError) before any work.
+
+    Returns a DescentReport, one row per start (S of them, in start order): ``positions`` and
+    ``normals`` (S, m, 3) (unit inward normals), ``values`` and ``start_values`` (S,),
+    ``force_closure`` and ``start_force_closure`` (S,) bool, ``evaluations`` and ``steps``
+    (S,) int64, ``stop`` (a list of "step", "evaluations" or "stationary"), ``best`` (the index
+    of the best force-closure grasp, or None); and the run's ``total_evaluations`` (the sum of
+    ``evaluations``), ``quality_s``, ``gradient_s``, ``other_s`` (seconds), ``facets_created``,
+    ``metric`` and ``method``. The grasps are in the torque frame ``torque_reference`` (3,),
+    ``torque_scale`` (the mesh's centre of mass and largest vertex distance, or the space's):
+    pass them to ``q1`` / ``qinf`` to evaluate a planned grasp again (``ows`` takes the
+    space's frame itself).
+
+    >>> import numpy as np, pqhull
+    >>> vertices = np.array([[-0.5, -0.2, -0.1], [0.5, -0.2, -0.1], [0.5, 0.2, -0.1],
+    ...                      [-0.5, 0.2, -0.1], [-0.5, -0.2, 0.1], [0.5, -0.2, 0.1],
+    ...                      [0.5, 0.2, 0.1], [-0.5, 0.2, 0.1]])
+    >>> faces = [[0, 3, 2], [0, 2, 1], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4],
+    ...          [1, 2, 6], [1, 6, 5], [2, 3, 7], [2, 7, 6], [3, 0, 4], [3, 4, 7]]
+    >>> plan = pqhull.plan_descent((vertices, faces), contacts=4, friction=0.5, cone_edges=8,
+    ...                            starts=4, evaluations=20)
+    >>> bool(np.all(plan.values >= plan.start_values))
+    True
+    >>> i = plan.best
+    >>> q = pqhull.q1(plan.positions[i], plan.normals[i], friction=0.5, cone_edges=8,
+    ...               torque_reference=plan.torque_reference, torque_scale=plan.torque_scale)
+    >>> bool(np.isclose(q.value, plan.values[i], rtol=1e-12, atol=0))
+    True
+
+    Errors: InputError for a bad argument (the library's message: a bound, a metric the
+    planner does not climb, an unknown name, a bad mesh), GraspError for a bad friction model,
+    QualityError if an evaluation fails; all are ValueErrors."""
+    return _pqhull.plan_descent(
+        mesh, contacts=_count(contacts, "contacts"), friction=float(friction),
+        cone_edges=_count(cone_edges, "cone_edges"), metric=metric,
+        starts=_count(starts, "starts"), evaluations=_count(evaluations, "evaluations"),
+        seed=_count(seed, "seed"), method=method, space=space)

@@ -1,5 +1,6 @@
 """Type stubs of the extension module behind `pqhull` (see `pqhull/__init__.py`)."""
 
+import os
 from typing import Optional, Sequence, Union
 
 import numpy as np
@@ -228,3 +229,40 @@ def grasp_matrix_metrics(
     torque_reference: Optional[npt.NDArray[np.float64]] = None,
     torque_scale: Optional[float] = None,
 ) -> tuple[npt.NDArray[np.float64], float, float]: ...
+
+class DescentReport:
+    # One row per start (S), in start order; m contacts per grasp.
+    positions: npt.NDArray[np.float64]  # (S, m, 3)
+    normals: npt.NDArray[np.float64]  # (S, m, 3), unit inward normals
+    values: npt.NDArray[np.float64]  # (S,): the metric's when force closure, else <= 0
+    force_closure: npt.NDArray[np.bool_]  # (S,)
+    start_values: npt.NDArray[np.float64]  # (S,)
+    start_force_closure: npt.NDArray[np.bool_]  # (S,)
+    evaluations: npt.NDArray[np.int64]  # (S,), the start's included
+    steps: npt.NDArray[np.int64]  # (S,)
+    stop: list[str]  # "step", "evaluations" or "stationary"
+    best: Optional[int]  # index of the best force-closure grasp
+    total_evaluations: int
+    quality_s: float
+    gradient_s: float
+    other_s: float
+    facets_created: int
+    torque_reference: npt.NDArray[np.float64]  # (3,)
+    torque_scale: float
+    metric: str
+    method: str
+    def __len__(self) -> int: ...
+
+def plan_descent(
+    mesh: Union[str, os.PathLike[str], tuple[npt.ArrayLike, npt.ArrayLike]],
+    *,
+    contacts: int = 4,
+    friction: float,
+    cone_edges: int,
+    metric: str = "q1",
+    starts: int = 10,
+    evaluations: int = 50,
+    seed: int = 1,
+    method: str = "partial",
+    space: Optional[ObjectWrenchSpace] = None,
+) -> DescentReport: ...
