@@ -58,12 +58,14 @@ mod nearest;
 mod sample;
 mod shapes;
 mod solids;
+mod surface_index;
 mod topology;
 
 pub use error::MeshError;
 pub use mass::{CentreKind, MassProperties};
 pub use sample::{SurfacePoint, SurfaceSampler};
 pub use solids::MAX_PROFILE_POINTS;
+pub use surface_index::SurfaceIndex;
 pub use topology::Topology;
 
 use crate::geometry::vector::{cross, norm, normalize, scale, sub};

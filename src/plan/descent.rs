@@ -14,7 +14,7 @@
 //! 2. **Step.** Every contact moves by `α·ρ·d_i / max_j |d_j|` (the contact with the largest
 //!    share of the direction `d` moves `α·ρ`, ρ the object's characteristic length) and is put
 //!    back on the surface at the nearest point, with that triangle's inward normal
-//!    ([`Mesh::nearest_surface_point`]).
+//!    ([`Mesh::nearest_surface_point`]'s answer, from a [`SurfaceIndex`] built once per call).
 //! 3. **Acceptance** (a backtracking rule). The moved grasp is evaluated; it is kept only if it
 //!    is strictly better, and then `α` grows by [`StepRule::grow`] (at most [`StepRule::max`]);
 //!    otherwise `α` is halved and the step retried from the same grasp. So the value never
@@ -72,7 +72,7 @@ use crate::grasp::{
     Contact, FrictionModel, Gradient, Grasp, GraspError, MAX_CONTACTS, ows_gradient, q1_gradient,
     qinf_gradient,
 };
-use crate::mesh::Mesh;
+use crate::mesh::{Mesh, SurfaceIndex};
 use serde_json::{Value, json};
 use std::time::{Duration, Instant};
 
@@ -182,13 +182,14 @@ pub struct PlannedGrasp {
     pub start: usize,
     /// Whether the start was force closure.
     pub start_force_closure: bool,
-    /// The start's value: the metric's when force closure, else its Q1 (≤ 0).
+    /// The start's value: the metric's when force closure, else the value climbed toward it (≤ 0:
+    /// Q1's, or Q∞'s own in a Q∞ run).
     pub start_value: f64,
     /// The planned grasp, in the object's torque frame.
     pub grasp: Grasp,
     /// Whether it is force closure.
     pub force_closure: bool,
-    /// Its value: the metric's when force closure, else its Q1.
+    /// Its value: the metric's when force closure, else as for `start_value`.
     pub value: f64,
     /// Evaluations the run used.
     pub evaluations: usize,
@@ -364,6 +365,8 @@ pub fn plan_descent(
         _ => space,
     };
     let rho = torque_frame(mesh, space).1;
+    // Built once, inside the timed span: its cost is part of `other_time`.
+    let surface = SurfaceIndex::new(mesh);
     let mut climber = Climber {
         metric: config.metric,
         space,
@@ -391,7 +394,7 @@ pub fn plan_descent(
     );
     for (start, grasp) in starts.take(config.starts).enumerate() {
         let planned = climb(
-            mesh,
+            &surface,
             &mut climber,
             config,
             rho,
@@ -465,7 +468,7 @@ const BUNDLE: usize = 6;
 /// of force closure and evaluations remain.
 #[allow(clippy::too_many_arguments)]
 fn climb(
-    mesh: &Mesh,
+    surface: &SurfaceIndex<'_>,
     climber: &mut Climber<'_>,
     config: &DescentConfig,
     rho: f64,
@@ -494,7 +497,7 @@ fn climb(
             climber.metric = Metric::Q1;
             let (q1_rank, q1_evaluated) = climber.evaluate(&grasp, &mut planned.evaluations)?;
             let (end, _, _) = ascend(
-                mesh,
+                surface,
                 climber,
                 config,
                 rho,
@@ -510,7 +513,7 @@ fn climb(
             (rank, evaluated) = climber.evaluate(&grasp, &mut planned.evaluations)?;
         }
         let (end, end_rank, stop) = ascend(
-            mesh,
+            surface,
             climber,
             config,
             rho,
@@ -542,7 +545,7 @@ fn climb(
 /// ended, its rank and why it stopped.
 #[allow(clippy::too_many_arguments)]
 fn ascend(
-    mesh: &Mesh,
+    surface: &SurfaceIndex<'_>,
     climber: &mut Climber<'_>,
     config: &DescentConfig,
     rho: f64,
@@ -580,7 +583,7 @@ fn ascend(
                 // see across an edge of the mesh (a contact's normal jumps there), a probe can.
                 // (Short of force closure, a fresh start does better.)
                 let probed = match rank.0 {
-                    true => probe(mesh, climber, rho, &grasp, rank, planned, limit)?,
+                    true => probe(surface, climber, rho, &grasp, rank, planned, limit)?,
                     false => None,
                 };
                 match probed {
@@ -599,7 +602,7 @@ fn ascend(
             if planned.evaluations + climber.cost() > limit {
                 break 'run Stop::Evaluations;
             }
-            let Some(moved) = step_on_surface(mesh, &grasp, &direction, alpha * rho / largest)?
+            let Some(moved) = step_on_surface(surface, &grasp, &direction, alpha * rho / largest)?
             else {
                 // Every contact landed where it was: a smaller step cannot do better.
                 alpha *= 0.5;
@@ -637,7 +640,7 @@ fn ascend(
 /// grasp, or `None`.
 #[allow(clippy::type_complexity)]
 fn probe(
-    mesh: &Mesh,
+    surface: &SurfaceIndex<'_>,
     climber: &mut Climber<'_>,
     rho: f64,
     grasp: &Grasp,
@@ -657,7 +660,8 @@ fn probe(
         if largest <= 0.0 || !largest.is_finite() {
             continue;
         }
-        let Some(moved) = step_on_surface(mesh, grasp, &direction, length * rho / largest)? else {
+        let Some(moved) = step_on_surface(surface, grasp, &direction, length * rho / largest)?
+        else {
             continue;
         };
         let (trial, evaluated) = climber.evaluate(&moved, &mut planned.evaluations)?;
@@ -748,9 +752,9 @@ fn least_norm(vectors: &[Vec<f64>]) -> Vec<f64> {
 }
 
 /// `grasp` with contact `i` moved by `factor · direction[i]` and put back on the surface, or
-/// `None` when no contact moved.
+/// `None` when no contact moved. `surface` answers as [`Mesh::nearest_surface_point`] does.
 fn step_on_surface(
-    mesh: &Mesh,
+    surface: &SurfaceIndex<'_>,
     grasp: &Grasp,
     direction: &[f64],
     factor: f64,
@@ -764,9 +768,12 @@ fn step_on_surface(
         .enumerate()
     {
         let target: [f64; 3] = std::array::from_fn(|k| c.position()[k] + factor * g[k]);
-        let landed = mesh.nearest_surface_point(target).ok_or(PlanError::Grasp(
-            GraspError::NonFinitePosition { contact: Some(i) },
-        ))?;
+        let landed =
+            surface
+                .nearest(target)
+                .ok_or(PlanError::Grasp(GraspError::NonFinitePosition {
+                    contact: Some(i),
+                }))?;
         any |= landed.position != c.position();
         contacts.push(Contact::try_new(
             landed.position,

@@ -7,7 +7,7 @@ use std::io::Cursor;
 use std::path::{Path, PathBuf};
 
 use pqhull::geometry::Rng;
-use pqhull::mesh::{CentreKind, Mesh, MeshError};
+use pqhull::mesh::{CentreKind, Mesh, MeshError, SurfaceIndex, SurfacePoint};
 
 fn dot(a: [f64; 3], b: [f64; 3]) -> f64 {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
@@ -554,5 +554,60 @@ fn samples_are_spread_in_proportion_to_area() {
             (mean - 1.0 / 3.0).abs() <= bound,
             "coordinate {k}: mean {mean}"
         );
+    }
+}
+
+/// The answer's bits: triangle, position, normal.
+fn bits(s: Option<SurfacePoint>) -> Option<(usize, [u64; 3], [u64; 3])> {
+    s.map(|s| {
+        let b = |v: [f64; 3]| v.map(f64::to_bits);
+        (s.triangle, b(s.position), b(s.inward_normal))
+    })
+}
+
+/// The index's nearest points are the brute force's, bit for bit, on the real meshes: at
+/// vertices, on edges, at centroids, near the surface (as a planner's moves), inside, around and
+/// far from the mesh, and at repeated points.
+#[test]
+fn the_surface_index_agrees_with_the_brute_force_on_real_meshes() {
+    for (name, seed) in [
+        ("teapot.obj", 1),
+        ("spot.obj", 2),
+        ("woody.obj", 3),
+        ("fandisk.obj", 4),
+    ] {
+        let Some(m) = real_mesh(name) else { return };
+        let index = SurfaceIndex::new(&m);
+        assert!(std::ptr::eq(index.mesh(), &m));
+        let mut rng = Rng::new(seed);
+        let (v, t) = (m.vertices(), m.triangles());
+        let rho = m.mass_properties().characteristic_length;
+        let centre = m.mass_properties().centre_of_mass;
+        let mut points = Vec::new();
+        for _ in 0..300 {
+            let [a, b, c] = t[rng.index(t.len())].map(|i| v[i as usize]);
+            let s = rng.uniform();
+            points.push(a);
+            points.push(std::array::from_fn(|k| (a[k] + b[k]) / 2.0));
+            points.push(std::array::from_fn(|k| b[k] + s * (c[k] - b[k])));
+            points.push(std::array::from_fn(|k| (a[k] + b[k] + c[k]) / 3.0));
+        }
+        for p in m.sample_surface(&mut rng, 1500) {
+            let step = rho * 10f64.powf(rng.uniform_in(-6.0, -0.5));
+            points.push(std::array::from_fn(|k| p.position[k] + step * rng.normal()));
+        }
+        for _ in 0..500 {
+            let spread = rho * 10f64.powf(rng.uniform_in(-1.0, 3.0));
+            points.push(std::array::from_fn(|k| centre[k] + spread * rng.normal()));
+        }
+        let repeated: Vec<[f64; 3]> = points.iter().step_by(10).copied().collect();
+        points.extend(repeated);
+        for p in points {
+            let (got, want) = (index.nearest(p), m.nearest_surface_point(p));
+            assert!(want.is_some());
+            assert_eq!(bits(got), bits(want), "{name} at {p:?}");
+        }
+        assert_eq!(index.nearest([f64::NAN, 0.0, 0.0]), None);
+        assert_eq!(index.nearest([0.0, f64::INFINITY, 0.0]), None);
     }
 }
