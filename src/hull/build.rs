@@ -226,7 +226,7 @@ impl<const D: usize> Hull<D> {
     /// The engine's side of [`StrategyHooks::exact_normal`](crate::hull::StrategyHooks::exact_normal).
     pub(crate) fn exact_normal(&self, id: FacetId) -> [f64; D] {
         let (plane, vertices) = self.exact_plane_of(id);
-        let exact = plane.exact_normal_direction(&self.coords(vertices));
+        let exact = plane.refined_normal_direction(&self.coords(vertices));
         let length = norm(exact);
         exact.map(|c| c / length)
     }

@@ -188,6 +188,15 @@ impl<const D: usize> DdPlane<D> {
         Some(DdPlane { cofactors, error })
     }
 
+    /// The high parts of the cofactors and a bound on the error of each as an approximation of
+    /// the exact cofactor: the generous coefficients of [`new`](Self::new) (which also cover the
+    /// dot product of a side test) plus the dropped low part (at most half an ulp of the high).
+    pub(in crate::predicates) fn cofactors_with_error(&self) -> ([f64; D], [f64; D]) {
+        let hi = self.cofactors.map(|c| c.hi);
+        let error = std::array::from_fn(|j| self.error[j] + hi[j].abs() * U);
+        (hi, error)
+    }
+
     /// The double-double value of `det[v1 − v0; …; p − v0]` (as `(hi, lo)`) and a certified
     /// bound on its error: `|hi + lo − det| ≤ bound`. `base` is `v0`; `slack` the filter's
     /// absolute underflow slack (finite: the vertices are in `[−1, 1]`). `None` unless every

@@ -29,6 +29,16 @@ fn grid_exponent<'a>(values: impl Iterator<Item = &'a f64>) -> i32 {
         .unwrap_or(i32::MAX)
 }
 
+/// The largest cofactor error [`FacetPlane::refined_normal_direction`] accepts from the
+/// double-double plane, relative to the largest cofactor: `2^-51`, four ulps. The exact route
+/// rounds each cofactor correctly (half an ulp); metrics that read the normal (Q_OWS's support
+/// of the disturbances) keep their accuracy within a few ulps either way.
+const DD_NORMAL_TOLERANCE: f64 = 4.440892098500626e-16; // 2^-51
+
+/// Below this the double-double cofactors' magnitudes are near the subnormal range, where their
+/// error bounds need not hold: the exact path decides (the engine's own threshold for `f64`).
+const MIN_DD_NORMAL: f64 = 1e-270;
+
 /// Relative inflation covering the roundings of the bound computation itself (at most ~30
 /// operations on non-negative numbers, each with relative error `u = 2^-53`: `30u < 2^-40`).
 const BOUND_INFLATION: f64 = 1.0 + 1.0 / (1u64 << 40) as f64;
@@ -307,6 +317,33 @@ impl<const D: usize> FacetPlane<D> {
             Some(plane) => plane.normal_direction(),
             None => exact::exact_cofactor_direction(vertices),
         }
+    }
+
+    /// The direction of the cofactor vector up to a positive scale, every component within
+    /// `2^-51` of the largest (four ulps) of the exact cofactors at that scale: from the
+    /// double-double plane when its certified cofactor errors allow it (D ≥ 4; built on first
+    /// use and kept for later side tests), else from the exact cofactors
+    /// ([`exact_normal_direction`](Self::exact_normal_direction)).
+    ///
+    /// Why: a full hull refines the normal of every thin facet (whose `f64` cofactors cancel),
+    /// and on rounding-degenerate input (raw wrench sets) that is half the facets; the exact
+    /// cofactors cost about twice the double-double plane, which certifies all but the thinnest.
+    pub fn refined_normal_direction(&self, vertices: &[[f64; D]; D]) -> [f64; D] {
+        if D >= 4 {
+            let refined = self.refined();
+            let dd = refined
+                .dd
+                .get_or_init(|| DdPlane::new(vertices, &self.permanents));
+            if let Some(plane) = dd {
+                let (cofactors, error) = plane.cofactors_with_error();
+                let largest = cofactors.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+                let worst = error.iter().fold(0.0f64, |m, e| m.max(*e));
+                if largest >= MIN_DD_NORMAL && worst <= DD_NORMAL_TOLERANCE * largest {
+                    return cofactors;
+                }
+            }
+        }
+        self.exact_normal_direction(vertices)
     }
 
     /// The signed distance of `p` beyond the plane through `vertices` (the points this plane was

@@ -883,3 +883,70 @@ fn double_double_stage_is_certified_and_decides_near_coplanar_points() {
     dims::<7>();
     dims::<8>();
 }
+
+/// `refined_normal_direction` on slivers (the last vertex within 2^-8 … 2^-60 of the others'
+/// affine hull, so the `f64` cofactors cancel): every component within the documented `2^-51`
+/// of the largest (plus the normalisation's roundings) of the exact rational cofactors. The
+/// double-double route must be the one that answers on the moderate slivers (its certified
+/// errors allow it), and the exact route on the thinnest, so both are exercised.
+fn refined_normal_case<const D: usize>() -> (usize, usize) {
+    let mut rng = crate::geometry::Rng::new(0x5e1f + D as u64);
+    let (mut by_dd, mut cases) = (0, 0);
+    for case in 0..120 {
+        let mut v = [[0.0; D]; D];
+        for row in v.iter_mut().take(D - 1) {
+            for x in row.iter_mut() {
+                *x = 0.5 * rng.uniform() - 0.25;
+            }
+        }
+        // Inside [−1, 1] (the double-double plane's domain): |v0| ≤ 1/4, the combination ≤ 1/2.
+        let offset = 2f64.powi(-8 - (case % 53));
+        for i in 0..D {
+            let along: f64 = (1..D - 1)
+                .map(|k| (v[k][i] - v[0][i]) * (0.5 + k as f64) / (D * D) as f64)
+                .sum();
+            v[D - 1][i] = v[0][i] + along + offset * (rng.uniform() - 0.5);
+        }
+        let exact = reference_cofactors(&v);
+        let to_f64 = |x: &BigRational| num_traits::ToPrimitive::to_f64(x).unwrap();
+        let exact: Vec<f64> = exact.iter().map(to_f64).collect();
+        let largest = exact.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        if largest == 0.0 {
+            continue;
+        }
+        cases += 1;
+        let plane = FacetPlane::new(&v);
+        let got = plane.refined_normal_direction(&v);
+        let got_largest = got.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        for j in 0..D {
+            let (a, b) = (got[j] / got_largest, exact[j] / largest);
+            assert!(
+                (a - b).abs() <= 2f64.powi(-51) * 1.01 + 4.0 * f64::EPSILON,
+                "D = {D}, offset {offset:e}, component {j}: {a:e} against {b:e} ({v:?})"
+            );
+        }
+        let (dd, _, _) = plane.double_double(&v);
+        let (dd_cofactors, _) = dd.expect("vertices in [-1, 1]").cofactors_with_error();
+        if got == dd_cofactors {
+            by_dd += 1;
+        }
+    }
+    (by_dd, cases)
+}
+
+#[test]
+fn refined_normals_are_within_four_ulps_of_the_exact_cofactors() {
+    fn dims<const D: usize>() {
+        let (by_dd, cases) = refined_normal_case::<D>();
+        assert!(cases >= 100, "D = {D}: {cases} cases");
+        assert!(
+            by_dd >= cases / 4 && by_dd < cases,
+            "D = {D}: the double-double route answered {by_dd} of {cases}"
+        );
+    }
+    dims::<4>();
+    dims::<5>();
+    dims::<6>();
+    dims::<7>();
+    dims::<8>();
+}
