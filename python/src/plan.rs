@@ -129,11 +129,11 @@ fn column<T: numpy::Element>(py: Python<'_>, values: impl Iterator<Item = T>) ->
 }
 
 /// plan_descent(mesh, *, contacts=4, friction, cone_edges, metric="q1", starts=10,
-/// evaluations=50, seed=1, method="partial", space=None) -> DescentReport: grasps planned on a
+/// evaluations=50, screen=1, seed=1, method="partial", space=None) -> DescentReport: grasps planned on a
 /// mesh by climbing the metric from `starts` random starts (see `pqhull.plan_descent`).
 #[pyfunction]
 #[pyo3(signature = (mesh, *, contacts=4, friction, cone_edges, metric="q1", starts=10,
-                    evaluations=50, seed=1, method="partial", space=None))]
+                    evaluations=50, screen=1, seed=1, method="partial", space=None))]
 #[allow(clippy::too_many_arguments)] // the Python signature
 pub fn plan_descent(
     py: Python<'_>,
@@ -144,6 +144,7 @@ pub fn plan_descent(
     metric: &str,
     starts: usize,
     evaluations: usize,
+    screen: usize,
     seed: u64,
     method: &str,
     space: Option<PyRef<'_, ObjectWrenchSpace>>,
@@ -172,6 +173,7 @@ pub fn plan_descent(
     let config = DescentConfig {
         starts,
         evaluations,
+        screen,
         seed,
         ..DescentConfig::new(contacts, model, metric)
     };

@@ -138,6 +138,18 @@ def test_ows_plans_from_the_mesh_own_space_equal_scipy():
         assert q.value == pytest.approx(p.values[i], rel=1e-12, abs=0)
 
 
+def test_screened_ows_plans_use_their_evaluations_and_equal_scipy():
+    space = pqhull.ObjectWrenchSpace.from_arrays(VERTICES, FACES, friction=MU, cone_edges=K)
+    p = plan(metric="ows", starts=2, evaluations=40, screen=8, space=space)
+    assert_never_worse(p)
+    # Screening and climbing again after a stop spend the budget (a few evaluations, too few
+    # for a screen and a step, may be left), where an unscreened climb may stop early.
+    assert np.all(p.evaluations <= 40) and np.all(p.evaluations >= 36)
+    for i in np.flatnonzero(p.force_closure):
+        expected = scipy_ows(grasp_wrenches(p, i), space.disturbances)
+        assert p.values[i] == pytest.approx(expected, rel=1e-9), i
+
+
 @pytest.mark.parametrize("metric,with_zero_wrench", [("qinf", False), ("qinf0", True)])
 def test_qinf_plans_equal_pqhull_qinf(metric, with_zero_wrench):
     p = plan(metric=metric, starts=3)
@@ -172,6 +184,8 @@ def test_the_mesh_may_be_a_path_or_arrays(tmp_path):
     (dict(contacts=0), "at least one"),
     (dict(evaluations=10_001), "10001 evaluations per start are too many"),
     (dict(starts=100_001), "100001 starts are too many"),
+    (dict(screen=0), "at least one"),
+    (dict(screen=10_001), "10001 candidates screened per start are too many"),
     (dict(metric="ows", evaluations=1), "too few"),
     (dict(contacts=257), "contacts"),
     (dict(method="ellipsoid"), "partial\" or \"full"),

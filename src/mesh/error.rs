@@ -79,6 +79,16 @@ pub enum MeshError {
         /// Triangles given.
         triangles: usize,
     },
+    /// More triangles than the `u32` handles of the surface index and the topology can name
+    /// ([`MAX_TRIANGLES`](super::MAX_TRIANGLES)).
+    TooManyTriangles {
+        /// The file, if the mesh came from one.
+        source_name: Option<String>,
+        /// Triangles given.
+        triangles: usize,
+        /// The most accepted.
+        max: usize,
+    },
     /// A parameter of a generated shape ([`Mesh::cuboid`](super::Mesh::cuboid),
     /// [`Mesh::uv_sphere`](super::Mesh::uv_sphere)) is out of range.
     InvalidParameter {
@@ -127,6 +137,15 @@ impl fmt::Display for MeshError {
                 "mesh '{source_name}': face {face} (0-based, counting `f` and `l` elements in file \
                  order) has {vertices} vertices; only triangles are supported (triangulate the \
                  mesh first)"
+            ),
+            MeshError::TooManyTriangles {
+                source_name,
+                triangles,
+                max,
+            } => write!(
+                f,
+                "{} has {triangles} triangles; at most {max} are supported",
+                Subject(source_name)
             ),
             MeshError::Empty {
                 source_name,

@@ -74,6 +74,10 @@ use mass::Frame;
 /// A 3-vector.
 type V3 = [f64; 3];
 
+/// The most triangles a [`Mesh`] holds: `u32::MAX` (2³² − 1), so that every triangle has a
+/// `u32` handle (the [`SurfaceIndex`]'s nodes hold them).
+pub const MAX_TRIANGLES: usize = u32::MAX as usize;
+
 /// A validated triangle mesh. See the [module documentation](self) for the conventions.
 ///
 /// A mesh is immutable: its topology and mass properties are computed once, when it is built.
@@ -102,6 +106,7 @@ impl Mesh {
     /// # Errors
     ///
     /// * [`MeshError::Empty`] if there are no vertices or no triangles;
+    /// * [`MeshError::TooManyTriangles`] beyond [`MAX_TRIANGLES`];
     /// * [`MeshError::NonFiniteVertex`] naming the first vertex with a NaN or infinite coordinate;
     /// * [`MeshError::IndexOutOfRange`] naming the first triangle that refers to a missing vertex;
     /// * [`MeshError::ZeroArea`] if every triangle is degenerate.
@@ -121,6 +126,13 @@ impl Mesh {
                 source_name: source_name(),
                 vertices: vertices.len(),
                 triangles: triangles.len(),
+            });
+        }
+        if triangles.len() > MAX_TRIANGLES {
+            return Err(MeshError::TooManyTriangles {
+                source_name: source_name(),
+                triangles: triangles.len(),
+                max: MAX_TRIANGLES,
             });
         }
         if let Some(vertex) = vertices

@@ -133,12 +133,12 @@ impl<'m> SurfaceIndex<'m> {
     /// The index of `mesh`'s surface (its triangles with an inward normal,
     /// [`Mesh::face_normal_inward`]).
     ///
-    /// # Panics
-    /// If the mesh has 2³² triangles or more (the nodes hold `u32` indices).
+    /// Cannot fail: a [`Mesh`] has at most [`MAX_TRIANGLES`](super::MAX_TRIANGLES) triangles,
+    /// so each has a `u32` handle.
     pub fn new(mesh: &'m Mesh) -> Self {
         let ids: Vec<u32> = (0..mesh.triangles.len())
             .filter(|&t| mesh.face_normal_inward(t).is_some())
-            .map(|t| u32::try_from(t).expect("fewer than 2^32 triangles"))
+            .map(|t| u32::try_from(t).expect("a Mesh has at most MAX_TRIANGLES triangles"))
             .collect();
         let mut items: Vec<Item> = ids
             .iter()

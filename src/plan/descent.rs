@@ -1,7 +1,8 @@
 //! A planner that climbs the metric: contacts moved over the surface along the exact gradient.
 //!
 //! Each planned grasp starts from a random grasp drawn as the sampler draws them ([`samples`],
-//! same seed, same starts) and repeats:
+//! same seed, same starts) — or from the best of [`DescentConfig::screen`] random grasps, that
+//! one and more from a second stream — and repeats:
 //!
 //! 1. **Direction.** The exact gradient of the value ([`q1_gradient`], [`qinf_gradient`],
 //!    [`ows_gradient`]) with respect to each contact's position, projected on that contact's
@@ -27,7 +28,9 @@
 //!    used its evaluations ([`DescentConfig::evaluations`], its start's included), or when the
 //!    direction vanishes ([`Stop::Stationary`]). A run that stops short of force closure (on a
 //!    plateau of Q1, such as every contact on one face) starts again from a fresh random grasp
-//!    (a second seeded stream) while evaluations remain; the planned grasp is the best it found.
+//!    (a second seeded stream) while evaluations remain — and, when screening
+//!    ([`DescentConfig::screen`] above 1), so does one that stops at an optimum; the planned
+//!    grasp is the best it found.
 //!
 //! **Force closure first, then the metric.** Grasps are compared by (force closure, value): a
 //! force-closure grasp beats every grasp that is not. A start that is not force closure climbs
@@ -84,6 +87,10 @@ pub const MAX_STARTS: usize = 100_000;
 /// taking steps too small to matter.
 pub const MAX_EVALUATIONS: usize = 10_000;
 
+/// The most candidates [`DescentConfig::screen`] accepts: [`MAX_EVALUATIONS`] (each costs at
+/// least one evaluation).
+pub const MAX_SCREEN: usize = MAX_EVALUATIONS;
+
 /// What the seed of the restarts differs from [`DescentConfig::seed`] by (exclusive or): the
 /// restarts are their own stream, so the starts stay the sampler's samples.
 const RESTART_SEED: u64 = 0x9e37_79b9_7f4a_7c15;
@@ -131,6 +138,15 @@ pub struct DescentConfig {
     pub friction: FrictionModel,
     /// The metric climbed: [`Metric::Q1`], [`Metric::QInf`] or [`Metric::Ows`].
     pub metric: Metric,
+    /// Candidates screened per planned grasp (1 to [`MAX_SCREEN`]): the run's start is the best
+    /// (by force closure, then value) of its sampler start and `screen − 1` further random
+    /// grasps from the restarts' stream, each one evaluation (two for a Q_OWS candidate that
+    /// is not force closure) out of [`evaluations`](Self::evaluations). 1, the default, climbs
+    /// from the sampler's start itself. Above 1, a climb that stops with evaluations left
+    /// (at an optimum, or short of force closure) screens a fresh start and climbs again, the
+    /// planned grasp being the best found. Worth 10 or so for Q_OWS, whose climbs stop at
+    /// kinks (ties among disturbances) soon after they start: where a climb starts matters.
+    pub screen: usize,
     /// Seed of the starts: the same seed gives the same starts as [`plan`](super::plan)'s
     /// samples.
     pub seed: u64,
@@ -139,12 +155,14 @@ pub struct DescentConfig {
 }
 
 impl DescentConfig {
-    /// A configuration with 10 starts, 50 evaluations each, seed 1 and the default step rule.
+    /// A configuration with 10 starts, 50 evaluations each, no screening (`screen` 1), seed 1
+    /// and the default step rule.
     pub fn new(contacts: usize, friction: FrictionModel, metric: Metric) -> Self {
         DescentConfig {
             contacts,
             starts: 10,
             evaluations: 50,
+            screen: 1,
             friction,
             metric,
             seed: 1,
@@ -178,11 +196,12 @@ impl Stop {
 /// One planned grasp: the end of one run.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PlannedGrasp {
-    /// Which start (0-based) it climbed from.
+    /// Which start (0-based) it climbed from: the sampler's sample of that index, or the best of
+    /// the candidates screened with it ([`DescentConfig::screen`]).
     pub start: usize,
-    /// Whether the start was force closure.
+    /// Whether the grasp the climb started from was force closure.
     pub start_force_closure: bool,
-    /// The start's value: the metric's when force closure, else the value climbed toward it (≤ 0:
+    /// That grasp's value: the metric's when force closure, else the value climbed toward it (≤ 0:
     /// Q1's, or Q∞'s own in a Q∞ run).
     pub start_value: f64,
     /// The planned grasp, in the object's torque frame.
@@ -347,7 +366,8 @@ impl Climber<'_> {
 /// # Errors
 /// [`PlanError`] for an empty configuration, more than [`MAX_STARTS`] starts
 /// ([`PlanError::TooManyStarts`]) or [`MAX_EVALUATIONS`] evaluations
-/// ([`PlanError::TooManyEvaluations`]), fewer than 2 for Q_OWS
+/// ([`PlanError::TooManyEvaluations`]) or [`MAX_SCREEN`] candidates screened
+/// ([`PlanError::TooManyScreened`]), fewer than 2 evaluations for Q_OWS
 /// ([`PlanError::TooFewEvaluations`]), more than [`MAX_CONTACTS`]
 /// contacts, a metric the planner does not climb ([`PlanError::NotClimbable`]), a step rule that
 /// is not `0 < min ≤ initial ≤ max`, `grow ≥ 1` ([`PlanError::StepRule`]), a missing wrench space,
@@ -413,7 +433,7 @@ pub fn plan_descent(
 
 /// The configuration's bounds, checked before any work.
 fn check(config: &DescentConfig) -> Result<(), PlanError> {
-    if config.contacts == 0 || config.starts == 0 || config.evaluations == 0 {
+    if config.contacts == 0 || config.starts == 0 || config.evaluations == 0 || config.screen == 0 {
         return Err(PlanError::Empty);
     }
     if config.starts > MAX_STARTS {
@@ -426,6 +446,12 @@ fn check(config: &DescentConfig) -> Result<(), PlanError> {
         return Err(PlanError::TooManyEvaluations {
             evaluations: config.evaluations,
             max: MAX_EVALUATIONS,
+        });
+    }
+    if config.screen > MAX_SCREEN {
+        return Err(PlanError::TooManyScreened {
+            screen: config.screen,
+            max: MAX_SCREEN,
         });
     }
     if config.contacts > MAX_CONTACTS {
@@ -477,7 +503,7 @@ fn climb(
     restarts: &mut super::Samples<'_>,
 ) -> Result<PlannedGrasp, PlanError> {
     let mut evaluations = 0;
-    let (rank, evaluated) = climber.evaluate(&grasp, &mut evaluations)?;
+    let (grasp, rank, evaluated) = screened(climber, config, grasp, &mut evaluations, restarts)?;
     let mut planned = PlannedGrasp {
         start,
         start_force_closure: rank.0,
@@ -527,18 +553,43 @@ fn climb(
             (planned.grasp, planned.force_closure, planned.value) = (end, end_rank.0, end_rank.1);
         }
         planned.stop = stop;
-        if planned.force_closure
+        // Stuck short of force closure (a plateau or a kink Q1 cannot leave), or, when
+        // screening, stopped at an optimum with evaluations left: a fresh (screened) start.
+        if (planned.force_closure && config.screen == 1)
             || stop == Stop::Evaluations
             || planned.evaluations + climber.cost() > config.evaluations
         {
             break;
         }
-        // Stuck short of force closure (a plateau or a kink Q1 cannot leave): a fresh start.
         let next = restarts.next().expect("an endless sequence")?;
-        let (r, e) = climber.evaluate(&next, &mut planned.evaluations)?;
-        run = Some((next, r, e));
+        let (g, r, e) = screened(climber, config, next, &mut planned.evaluations, restarts)?;
+        run = Some((g, r, e));
     }
     Ok(planned)
+}
+
+/// The best (by force closure, then value) of `first` and up to `screen − 1` more random grasps
+/// from `restarts`, with its rank and evaluation, leaving room for at least one step after it.
+fn screened(
+    climber: &mut Climber<'_>,
+    config: &DescentConfig,
+    first: Grasp,
+    evaluations: &mut usize,
+    restarts: &mut super::Samples<'_>,
+) -> Result<(Grasp, (bool, f64), Evaluated), PlanError> {
+    let (rank, evaluated) = climber.evaluate(&first, evaluations)?;
+    let mut best = (first, rank, evaluated);
+    for _ in 1..config.screen {
+        if *evaluations + 2 * climber.cost() > config.evaluations {
+            break;
+        }
+        let candidate = restarts.next().expect("an endless sequence")?;
+        let (r, e) = climber.evaluate(&candidate, evaluations)?;
+        if r > best.1 {
+            best = (candidate, r, e);
+        }
+    }
+    Ok(best)
 }
 
 /// One run of steps from `grasp` (rank `rank`), spending `planned`'s evaluations; returns where it

@@ -51,8 +51,8 @@ use std::time::{Duration, Instant};
 pub mod descent;
 
 pub use descent::{
-    DescentConfig, DescentReport, MAX_EVALUATIONS, MAX_STARTS, PlannedGrasp, StepRule, Stop,
-    plan_descent,
+    DescentConfig, DescentReport, MAX_EVALUATIONS, MAX_SCREEN, MAX_STARTS, PlannedGrasp, StepRule,
+    Stop, plan_descent,
 };
 
 /// The most samples a plan accepts: 1,000,000.
@@ -244,6 +244,14 @@ pub enum PlanError {
         /// The limit, [`MAX_EVALUATIONS`].
         max: usize,
     },
+    /// More candidates screened per start than [`MAX_SCREEN`] for [`plan_descent`]
+    /// ([`DescentConfig::screen`]).
+    TooManyScreened {
+        /// The number asked for.
+        screen: usize,
+        /// The limit, [`MAX_SCREEN`].
+        max: usize,
+    },
     /// Fewer evaluations per start than the metric's start can take ([`plan_descent`] with
     /// `Metric::Ows` needs 2: a start that is not force closure takes Q_OWS and Q1).
     TooFewEvaluations {
@@ -273,7 +281,8 @@ impl fmt::Display for PlanError {
         match self {
             PlanError::Empty => write!(
                 f,
-                "a plan needs at least one contact and one sample (or start and evaluation)"
+                "a plan needs at least one contact and one sample (or start, evaluation and screened \
+                 candidate)"
             ),
             PlanError::TooManySamples { samples, max } => {
                 write!(
@@ -290,6 +299,10 @@ impl fmt::Display for PlanError {
             PlanError::TooManyEvaluations { evaluations, max } => write!(
                 f,
                 "{evaluations} evaluations per start are too many (at most {max})"
+            ),
+            PlanError::TooManyScreened { screen, max } => write!(
+                f,
+                "{screen} candidates screened per start are too many (at most {max})"
             ),
             PlanError::TooFewEvaluations {
                 evaluations,

@@ -8,7 +8,7 @@ use pqhull::grasp::quality::{Method, Metric, QualityError, q1};
 use pqhull::grasp::{FrictionModel, Grasp};
 use pqhull::mesh::Mesh;
 use pqhull::plan::{
-    DescentConfig, MAX_EVALUATIONS, MAX_STARTS, PlanConfig, PlanError, StepRule, plan,
+    DescentConfig, MAX_EVALUATIONS, MAX_SCREEN, MAX_STARTS, PlanConfig, PlanError, StepRule, plan,
     plan_descent, samples,
 };
 
@@ -146,7 +146,20 @@ fn the_descent_planner_names_what_it_refuses_before_any_work() {
     });
     assert!(matches!(e, PlanError::TooManyEvaluations { .. }), "{e}");
     assert!(e.to_string().contains("evaluations per start"), "{e}");
+    let e = refuse(DescentConfig {
+        screen: MAX_SCREEN + 1,
+        ..q1
+    });
+    assert_eq!(
+        e,
+        PlanError::TooManyScreened {
+            screen: MAX_SCREEN + 1,
+            max: MAX_SCREEN
+        }
+    );
+    assert!(e.to_string().contains("candidates screened"), "{e}");
     for empty in [
+        DescentConfig { screen: 0, ..q1 },
         DescentConfig { starts: 0, ..q1 },
         DescentConfig {
             evaluations: 0,

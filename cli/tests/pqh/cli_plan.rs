@@ -370,6 +370,8 @@ fn plan_descent_refuses_what_it_cannot_do() {
         (&["--evaluations", "1"], "--evaluations"),
         (&["--starts", "0"], "--starts"),
         (&["--starts", "100001"], "--starts"),
+        (&["--screen", "0"], "--screen"),
+        (&["--screen", "10001"], "--screen"),
     ] {
         let mut all = vec!["plan", "--mesh", mesh, "--planner", "descent"];
         all.extend_from_slice(args);
@@ -378,4 +380,48 @@ fn plan_descent_refuses_what_it_cannot_do() {
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert!(stderr.contains(says), "{args:?}: {stderr}");
     }
+}
+
+/// `--screen` reaches the planner: screened runs spend their evaluations (all but a few) and
+/// end elsewhere (on the bar, higher: 0.311 against 0.170 here).
+#[test]
+fn plan_descent_screens_its_starts() {
+    let bar = bar_obj();
+    let spent = |screen: &str| {
+        let out = pqh(&[
+            "plan",
+            "--mesh",
+            bar.to_str().unwrap(),
+            "--planner",
+            "descent",
+            "--starts",
+            "3",
+            "--evaluations",
+            "30",
+            "--screen",
+            screen,
+            "--full-samples",
+            "0",
+            "--json",
+        ]);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let report: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+        let run = &report["partial"];
+        let best = run["best"]["value"].as_f64().expect("a force-closure best");
+        (run["evaluations"].as_u64().unwrap(), best)
+    };
+    let (plain, screened) = (spent("1"), spent("6"));
+    assert!(
+        screened.0 >= 3 * 28,
+        "screened runs used {} of 90",
+        screened.0
+    );
+    assert!(
+        screened.1 > plain.1,
+        "{plain:?} unscreened against {screened:?}"
+    );
 }

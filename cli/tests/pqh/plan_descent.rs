@@ -16,6 +16,7 @@ fn against_the_sampler(
     metric: Metric,
     starts: usize,
     evaluations: usize,
+    screen: usize,
     edges: usize,
     must_beat: bool,
 ) -> usize {
@@ -27,6 +28,7 @@ fn against_the_sampler(
         let config = DescentConfig {
             starts,
             evaluations,
+            screen,
             seed: 11,
             ..DescentConfig::new(4, friction, metric)
         };
@@ -73,19 +75,18 @@ fn against_the_sampler(
 
 #[test]
 fn the_descent_planner_beats_the_sampler_by_q1_on_the_five_objects() {
-    assert_eq!(against_the_sampler(Metric::Q1, 6, 40, 8, true), 5);
+    assert_eq!(against_the_sampler(Metric::Q1, 6, 40, 1, 8, true), 5);
 }
 
-/// By Q_OWS the descent beats the sampler on three of the five objects (sphere, C shape,
-/// joystick) but not on the cube and the teapot (0.165 against 0.188 and 0.122 against 0.155
-/// here): Q_OWS ties among disturbances at most grasps, and its climbs stop at those kinks
-/// sooner than Q1's. What holds on all five is asserted: no planned grasp is worse than its
-/// start, and the planner beats the sampler somewhere.
+/// By Q_OWS, climbing from the sampler's starts alone (`screen` 1) loses to the sampler on the
+/// cube and the teapot (0.165 against 0.188 and 0.122 against 0.155): Q_OWS ties among
+/// disturbances at most grasps, and its climbs stop at those kinks soon after they start, so
+/// where a climb starts matters. With each start (and each restart after a climb stops with
+/// evaluations left) the best of SCREEN random candidates, out of the same evaluation budget,
+/// the planner beats the sampler on all five (0.215, 0.472, 0.289, 0.241 and 0.193 against
+/// 0.188, 0.391, 0.185, 0.186 and 0.155 here, in the order of `table1_objects`).
 #[test]
-fn the_descent_planner_climbs_q_ows_on_the_five_objects() {
-    let beaten = against_the_sampler(Metric::Ows, 4, 120, 6, false);
-    assert!(
-        beaten >= 1,
-        "the descent beat the sampler on no object by Q_OWS"
-    );
+fn the_descent_planner_beats_the_sampler_by_q_ows_on_the_five_objects() {
+    const SCREEN: usize = 12;
+    assert_eq!(against_the_sampler(Metric::Ows, 4, 120, SCREEN, 6, true), 5);
 }

@@ -405,7 +405,7 @@ def _count(value, name):
 
 
 def plan_descent(mesh, *, contacts=4, friction, cone_edges, metric="q1", starts=10,
-                 evaluations=50, seed=1, method="partial", space=None):
+                 evaluations=50, screen=1, seed=1, method="partial", space=None):
     """Grasps planned on a mesh by climbing the metric (the library's descent planner,
     ``pqhull::plan::plan_descent``; ``pqh plan --planner descent`` on the command line): from each
     of `starts` random grasps of `contacts` contacts (drawn uniformly by area on the surface,
@@ -431,7 +431,11 @@ def plan_descent(mesh, *, contacts=4, friction, cone_edges, metric="q1", starts=
       ("volume", ...) raises InputError: the planner follows gradients, which only these have.
     * `method`: "partial" (the partial hull) or "full" (the full hull), both exact.
     * `starts` (1 to 100,000), `evaluations` per planned grasp (1 to 10,000; at least 2 for
-      "ows"): the library's bounds, refused (InputError) before any work.
+      "ows"), `screen` (1 to 10,000): the library's bounds, refused (InputError) before any
+      work. With `screen` above 1 each climb starts from the best of `screen` random grasps
+      (each one evaluation out of `evaluations`), and a climb that stops with evaluations left
+      screens a fresh start and climbs again; about 10 pays for "ows", whose climbs stop at
+      kinks soon after they start.
 
     Returns a DescentReport, one row per start (S of them, in start order): ``positions`` and
     ``normals`` (S, m, 3) (unit inward normals), ``values`` and ``start_values`` (S,),
@@ -467,4 +471,4 @@ def plan_descent(mesh, *, contacts=4, friction, cone_edges, metric="q1", starts=
         mesh, contacts=_count(contacts, "contacts"), friction=float(friction),
         cone_edges=_count(cone_edges, "cone_edges"), metric=metric,
         starts=_count(starts, "starts"), evaluations=_count(evaluations, "evaluations"),
-        seed=_count(seed, "seed"), method=method, space=space)
+        screen=_count(screen, "screen"), seed=_count(seed, "seed"), method=method, space=space)

@@ -262,6 +262,7 @@ def plan_descent(
     metric: str = "q1",
     starts: int = 10,
     evaluations: int = 50,
+    screen: int = 1,
     seed: int = 1,
     method: str = "partial",
     space: Optional[ObjectWrenchSpace] = None,

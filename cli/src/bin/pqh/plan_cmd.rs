@@ -50,6 +50,10 @@ pub struct PlanArgs {
     /// descent: metric evaluations per planned grasp, its start's included, 2 to 10000
     #[arg(long, default_value_t = 50, value_parser = crate::limits::count(2, pqhull::plan::MAX_EVALUATIONS))]
     pub evaluations: usize,
+    /// descent: candidates screened per planned grasp, the best one climbed (each costs an
+    /// evaluation out of --evaluations; worth 10 to 30 for ows), 1 to 10000
+    #[arg(long, default_value_t = 1, value_parser = crate::limits::count(1, pqhull::plan::MAX_SCREEN))]
+    pub screen: usize,
     /// Object mesh, OBJ or STL (default: the built-in spot.obj, whatever the working directory)
     #[arg(long)]
     pub mesh: Option<PathBuf>,

@@ -39,6 +39,7 @@ pub fn run(
     let config = DescentConfig {
         starts: args.starts,
         evaluations: args.evaluations,
+        screen: args.screen,
         seed: args.seed,
         ..DescentConfig::new(args.contacts, friction, metric)
     };
