@@ -157,6 +157,24 @@ pub(in crate::grasp) struct RawSide<R, H> {
 #[derive(Clone, Debug, Default)]
 pub(in crate::grasp) struct BracketScratch {
     cheap: Vec<(f64, FacetId)>,
+    /// The facets the last bracket bounded from their raw simplices, with those bounds (at
+    /// least their cheap ones), and how many of `cheap` that was.
+    bounded: Vec<(f64, FacetId)>,
+    processed: usize,
+}
+
+/// The facets of the last [`bracket`] call whose lower bound is at most `limit`: every facet
+/// that may be as near as `limit` under that call's gauge (the bounds from the raw simplices
+/// where it computed them, else the cheap ones).
+pub(in crate::grasp) fn candidates(
+    scratch: &BracketScratch,
+    limit: f64,
+) -> impl Iterator<Item = FacetId> + '_ {
+    let bounded = scratch.bounded.iter().filter(move |(low, _)| *low <= limit);
+    let rest = scratch.cheap[scratch.processed..]
+        .iter()
+        .take_while(move |(low, _)| *low <= limit);
+    bounded.chain(rest).map(|&(_, id)| id)
 }
 
 /// The bracket of the metric `gauge` on the raw points from `hull`, built on the snapped points,
@@ -196,8 +214,11 @@ where
     cheap.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
     let mut low = f64::INFINITY;
     let mut best: Option<(f64, FacetId)> = None;
-    for &(cheap_low, id) in cheap.iter() {
+    scratch.bounded.clear();
+    scratch.processed = cheap.len();
+    for (index, &(cheap_low, id)) in cheap.iter().enumerate() {
         if cheap_low >= low {
+            scratch.processed = index;
             break; // every remaining facet's bound is at least this one's
         }
         let mut facet_low = cheap_low;
@@ -233,6 +254,7 @@ where
             }
         }
         low = low.min(facet_low);
+        scratch.bounded.push((facet_low, id));
     }
     // Rounding of the divisions above (half an ulp each): nudge `low` down.
     let low = low * (1.0 - 2e-16);

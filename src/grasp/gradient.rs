@@ -22,11 +22,11 @@
 //! then gives one subgradient-like element (the derivative along the face found) and the
 //! result says so.
 //!
-//! Not detected: a tie between two *different* faces at the same distance (a grasp with a
-//! symmetry, whose nearest facet and its mirror image are equally near). The reported value's
-//! deciding face is one of them, the other is not seen from it, and `differentiable` stays true;
-//! the numbers are then the one-sided derivative along the face found (what moving into that
-//! face's side gives), not a gradient.
+//! A tie between two *different* facets at the same distance (a grasp with a symmetry, whose
+//! nearest facet and its mirror image are equally near) is seen on the hull the value came
+//! from ([`Quality::tied`]) and flagged; the numbers are then the derivative along the face
+//! found (what moving into that face's side gives), not a gradient. Q_OWS's ties through
+//! another facet likewise ([`OwsQuality::tied`](super::ows::OwsQuality::tied)).
 
 use super::quality::Quality;
 use super::{Contact, Grasp};
@@ -134,7 +134,8 @@ pub fn q1_gradient(grasp: &Grasp, quality: &Quality) -> Result<Gradient, Gradien
         // The deciding face passes through the origin: no direction, Q1 = 0 on the boundary.
         return Ok(Gradient::zero(grasp.contact_count(), false));
     }
-    let mut differentiable = value != 0.0 && value.abs() > TIE * quality.scale;
+    // A tie with another facet (`Quality::tied`): a minimum of two faces' distances.
+    let mut differentiable = value != 0.0 && value.abs() > TIE * quality.scale && !quality.tied();
     // The whole face along u*: every wrench on the supporting plane u*·w = V. The deciding
     // wrenches are one simplex of it; a friction pyramid with three wrenches on the plane lies
     // in it whole (its k edges span one 2-flat, and stay in one as the inputs move), so the
@@ -264,7 +265,8 @@ pub fn qinf_gradient(
         // The deciding face holds the origin (the zero wrench's sum): Q∞ = 0 on the boundary.
         return Ok(Gradient::zero(m, false));
     }
-    let mut differentiable = value != 0.0 && value.abs() > TIE * quality.scale;
+    // A tie with another facet (`Quality::tied`): a minimum of two faces' distances.
+    let mut differentiable = value != 0.0 && value.abs() > TIE * quality.scale && !quality.tied();
     // Each contact's face along u*, and the support value it adds.
     let mut faces: Vec<Vec<(usize, [f64; 6])>> = Vec::with_capacity(m);
     let mut support = 0.0;
@@ -481,7 +483,8 @@ fn nearest_in_affine_hull(face: &[[f64; 6]]) -> (Vec<f64>, [f64; 6]) {
 /// `dρ* = Σ_j μ_j u·dw_j / (−u·d*)` with `μ` the weights of `y` on the facet (the facet
 /// completed by every wrench on its plane, as for Q1). Flagged not differentiable: `y` on a
 /// ridge (a weight near zero), and another disturbance whose ray crosses the facet's plane as
-/// early (a tie among disturbances). Not seen: a tie through another facet.
+/// early (a tie among disturbances), and a tie through another facet
+/// ([`OwsQuality::tied`](super::ows::OwsQuality::tied)).
 ///
 /// ```
 /// use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
@@ -541,7 +544,8 @@ pub fn ows_gradient(
     let shifted: Vec<[f64; 6]> = support.iter().map(|&j| sub6(&wrenches[j], &y)).collect();
     let (weights, offset) = nearest_in_affine_hull(&shifted);
     let across = -dot6(&u, &d);
-    let mut differentiable = across > 0.0
+    let mut differentiable = !quality.tied
+        && across > 0.0
         && norm(offset) <= TIE * scale
         && weights.iter().all(|&l| l > TIE)
         && support

@@ -70,6 +70,7 @@ use std::time::Instant;
 
 mod error;
 mod minkowski;
+pub(in crate::grasp) mod ties;
 mod vocabulary;
 pub use error::QualityError;
 pub use minkowski::MINKOWSKI_MATERIALISE_LIMIT;
@@ -77,6 +78,10 @@ pub use vocabulary::{Method, Metric, NameError};
 
 /// Up to seven wrenches: a facet's six, or the points spanning a nearest face.
 const MAX_DECIDING: usize = 7;
+
+/// Another facet within this fraction of the wrench scale of the value is a tie
+/// ([`Quality::tied`]): the gradients' tolerance, far above the value's accuracy (1e−12).
+const TIE_BAND: f64 = 1e-9;
 
 /// The result of one evaluation.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -95,6 +100,7 @@ pub struct Quality {
     pub scale: f64,
     deciding: [[f64; 6]; MAX_DECIDING],
     deciding_len: usize,
+    tied: bool,
     /// Work done (for the full methods: the whole hull).
     pub stats: Stats,
 }
@@ -106,6 +112,27 @@ impl Quality {
         &self.deciding[..self.deciding_len]
     }
 
+    /// Whether another facet, on another plane, is as near the origin as the deciding one
+    /// (within 1e−9 of the scale): the value is then a minimum of two smooth functions of the
+    /// grasp, not differentiable ([`q1_gradient`](crate::grasp::q1_gradient) and
+    /// [`qinf_gradient`](crate::grasp::qinf_gradient) say so). Seen on the hull the value came
+    /// from, partial or full (a partial hull's tie is the full hull's: see the module
+    /// `ties`); a near tie with a facet of a partial hull that would still grow is flagged
+    /// too (Qhull's value: from its floating-point planes). Always `false` when the origin is
+    /// not inside (the nearest point of a convex set is unique) and for the ellipsoid's values.
+    pub fn tied(&self) -> bool {
+        self.tied
+    }
+
+    /// This quality, flagged as tied when another facet of `hull` is (see [`tied`](Self::tied));
+    /// `facet` decides the value, `scale` is the wrench scale and `delta` bounds the distance
+    /// between `hull`'s points and the caller's wrenches (0 for a hull of the caller's own).
+    fn with_ties(mut self, hull: &Hull<6>, facet: crate::FacetId, scale: f64, delta: f64) -> Self {
+        let band = TIE_BAND * scale + 2.0 * delta;
+        self.tied = self.value > 0.0 && ties::tied(hull, facet, band);
+        self
+    }
+
     /// A value not yet banded: [`banded`](Self::banded) sets the scale and the verdict.
     fn new(value: f64, deciding: impl Iterator<Item = [f64; 6]>, stats: Stats) -> Self {
         let mut quality = Quality {
@@ -114,6 +141,7 @@ impl Quality {
             scale: 0.0,
             deciding: [[0.0; 6]; MAX_DECIDING],
             deciding_len: 0,
+            tied: false,
             stats,
         };
         for w in deciding.take(MAX_DECIDING) {
@@ -704,7 +732,8 @@ impl Explicit<'_> {
         let b: Bracket = bracket(hull, &mut side, &mut UnitBall, scratch)?;
         let value = b.value_within(largest_norm(raw))?;
         let deciding = hull.facet(b.facet).vertices().map(|v| raw[v]);
-        Some(Quality::new(value, deciding.into_iter(), hull.stats()))
+        let quality = Quality::new(value, deciding.into_iter(), hull.stats());
+        Some(quality.with_ties(hull, b.facet, largest_norm(raw), self.delta))
     }
 }
 
@@ -760,11 +789,12 @@ fn nearest_q1(
         HullBuffers::build(hull, w, pyramids, nearest)
     };
     match built {
-        Ok((_, result)) => Ok(Quality::new(
+        Ok((h, result)) => Ok(Quality::new(
             result.signed_distance,
             result.closest_facet_vertices.iter().map(|&v| w[v]),
             result.stats,
-        )),
+        )
+        .with_ties(h, result.closest_facet, largest_norm(w), 0.0)),
         Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
             Ok(degenerate(w, started))
         }
@@ -808,7 +838,19 @@ fn qhull_q1(w: &[[f64; 6]], started: Instant) -> Result<Quality, QualityError> {
         .expect("a hull has facets");
     if nearest.offset < 0.0 && hull.facets.iter().all(|f| f.offset < 0.0) {
         let deciding = nearest.vertices.iter().map(|&v| w[v]);
-        return Ok(Quality::new(-nearest.offset, deciding, stats));
+        let mut quality = Quality::new(-nearest.offset, deciding, stats);
+        // Ties as on our hulls (see `ties`), from Qhull's floating-point planes.
+        let band = TIE_BAND * largest_norm(w);
+        quality.tied = hull.facets.iter().any(|f| {
+            let apart: f64 = f
+                .normal
+                .iter()
+                .zip(&nearest.normal)
+                .map(|(a, b)| (a - b) * (a - b))
+                .sum();
+            (f.offset - nearest.offset).abs() <= band && apart.sqrt() > ties::DIFFERENT_PLANE
+        });
+        return Ok(quality);
     }
     let vertices = &hull.vertices;
     let point = min_norm_point(vertices.len(), |i| w[vertices[i]], &[0.0; 6]);

@@ -271,6 +271,153 @@ fn non_differentiable_grasps_are_flagged() {
     assert!(flagged(&mut evaluator, &repeated));
 }
 
+/// A grasp symmetric under the mirror x → −x (positions, normals and given tangents mirrored,
+/// the torque reference on the mirror plane) maps its wrench hull onto itself, each wrench
+/// (f, τ) to (−fx, fy, fz, τx, −τy, −τz): unless the nearest facet is its own mirror image, it
+/// and its image are equally near, and Q1 (Q∞ likewise) is the minimum of the two there, not
+/// differentiable. Every such grasp among random mirror-symmetric ones is flagged, by the
+/// partial and the full method; moving one contact by 1e−3 (breaking the symmetry) unflags it.
+#[test]
+fn ties_between_mirrored_facets_are_flagged() {
+    let unit = |v: [f64; 3]| {
+        let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        v.map(|c| c / l)
+    };
+    let mirror = |v: [f64; 3]| [-v[0], v[1], v[2]];
+    let cross = |a: [f64; 3], b: [f64; 3]| {
+        [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ]
+    };
+    let mirror_wrench = |w: &[f64; 6]| [-w[0], w[1], w[2], w[3], -w[4], -w[5]];
+    let mut rng = Rng::new(41);
+    use crate::support::grasps::random_disturbances;
+    use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
+    let (mut tied, mut own_image, mut ows_tied) = (0, 0, 0);
+    for _ in 0..60 {
+        // Two contacts on the unit sphere (normals inward, a tangent given) and their mirrors.
+        let sites: Vec<[f64; 3]> = (0..2)
+            .map(|_| unit([rng.normal(), rng.normal(), rng.normal()]))
+            .collect();
+        let grasp_of = |nudge: f64| {
+            let mut contacts = Vec::new();
+            for &p in &sites {
+                let n = p.map(|c| -c);
+                let t = unit(cross(n, [0.3, 0.5, 0.8]));
+                contacts.push(Contact::try_new(p, n, Some(t)).unwrap());
+                let q = [mirror(p)[0] + nudge, p[1], p[2]];
+                contacts.push(Contact::try_new(q, mirror(n), Some(mirror(t))).unwrap());
+            }
+            Grasp::builder(contacts, FrictionModel::try_new(0.8, 8).unwrap())
+                .torque_reference([0.0; 3])
+                .torque_scale(1.0)
+                .build()
+                .unwrap()
+        };
+        let (symmetric, broken) = (grasp_of(0.0), grasp_of(1e-3));
+        let mut partial = Evaluator::new(Metric::Q1, Method::Partial);
+        let quality = partial.evaluate(&symmetric).unwrap();
+        if !quality.force_closure {
+            continue;
+        }
+        if is_self_mirrored(&quality, mirror_wrench) {
+            own_image += 1;
+            continue;
+        }
+        tied += 1;
+        let mut full = Evaluator::new(Metric::Q1, Method::Full);
+        for (method, evaluator) in [("partial", &mut partial), ("full", &mut full)] {
+            let quality = evaluator.evaluate(&symmetric).unwrap();
+            assert!(quality.tied(), "{method}: {quality:?}");
+            assert!(!q1_gradient(&symmetric, &quality).unwrap().differentiable);
+            let quality = evaluator.evaluate(&broken).unwrap();
+            assert!(!quality.tied(), "{method}, symmetry broken: {quality:?}");
+        }
+        let qinf = Metric::QInf {
+            with_zero_wrench: true,
+        };
+        let quality = Evaluator::new(qinf, Method::Partial)
+            .evaluate(&symmetric)
+            .unwrap();
+        if quality.force_closure {
+            assert!(quality.tied() || is_self_mirrored(&quality, mirror_wrench));
+        }
+        // Q_OWS against a mirror-symmetric set of disturbances: the deciding disturbance's
+        // image leaves through the image of its facet as early. Through the same facet when
+        // that is its own image (flagged by the disturbances' tie), else through another
+        // (`tied`): never differentiable, by either exact method.
+        let half = random_disturbances(&mut rng, 6);
+        let both: Vec<[f64; 6]> = half.iter().flat_map(|d| [*d, mirror_wrench(d)]).collect();
+        let space = ObjectWrenchSpace::from_disturbances(both).unwrap();
+        for method in [Method::Partial, Method::Full] {
+            let quality = OwsEvaluator::new(method)
+                .evaluate(&symmetric, &space)
+                .unwrap();
+            if quality.value.is_none() {
+                continue;
+            }
+            ows_tied += usize::from(quality.tied);
+            let gradient = pqhull::grasp::ows_gradient(&symmetric, &space, &quality).unwrap();
+            assert!(!gradient.differentiable, "{method:?}: {quality:?}");
+            let moved = OwsEvaluator::new(method).evaluate(&broken, &space).unwrap();
+            assert!(!moved.tied, "{method:?}, symmetry broken: {moved:?}");
+        }
+    }
+    eprintln!(
+        "{tied} mirrored ties flagged, {own_image} nearest facets their own image; Q_OWS: \
+         {ows_tied} ties through another facet"
+    );
+    assert!(tied >= 5, "only {tied} ties among the force-closure grasps");
+    assert!(
+        ows_tied >= 5,
+        "only {ows_tied} Q_OWS ties through another facet"
+    );
+}
+
+/// Whether the plane of the deciding wrenches of `quality` is its own image under `mirror`
+/// (a linear isometry): its unit normal, by Gram–Schmidt on the simplex's edges, is fixed.
+fn is_self_mirrored(
+    quality: &pqhull::grasp::quality::Quality,
+    mirror: impl Fn(&[f64; 6]) -> [f64; 6],
+) -> bool {
+    let w = quality.deciding_wrenches();
+    let dot = |a: &[f64; 6], b: &[f64; 6]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
+    let mut basis: Vec<[f64; 6]> = Vec::new();
+    let reduce = |mut v: [f64; 6], basis: &[[f64; 6]]| {
+        for b in basis {
+            let c = dot(&v, b);
+            v.iter_mut().zip(b).for_each(|(x, y)| *x -= c * y);
+        }
+        v
+    };
+    for p in &w[1..] {
+        let edge: [f64; 6] = std::array::from_fn(|c| p[c] - w[0][c]);
+        let v = reduce(edge, &basis);
+        let l = dot(&v, &v).sqrt();
+        basis.push(v.map(|x| x / l));
+    }
+    // The axis with the largest part off the edges' span gives the normal.
+    let normal = (0..6)
+        .map(|k| {
+            let mut e = [0.0; 6];
+            e[k] = 1.0;
+            reduce(e, &basis)
+        })
+        .max_by(|a, b| dot(a, a).total_cmp(&dot(b, b)))
+        .unwrap();
+    let u = normal.map(|x| x / dot(&normal, &normal).sqrt());
+    let image = mirror(&u);
+    let apart = |s: f64| {
+        (0..6)
+            .map(|c| (image[c] - s * u[c]).powi(2))
+            .sum::<f64>()
+            .sqrt()
+    };
+    apart(1.0) < 1e-6 || apart(-1.0) < 1e-6
+}
+
 /// Q_OWS against central differences of Q_OWS, on force-closure grasps and random task wrench
 /// spaces of 12 disturbances.
 #[test]

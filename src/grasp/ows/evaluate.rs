@@ -2,10 +2,13 @@
 
 use super::ObjectWrenchSpace;
 use crate::geometry::vector::dot;
-use crate::geometry::{Gjk, largest_norm};
+use crate::geometry::{Gjk, SupportIndex, largest_norm};
 use crate::grasp::Grasp;
-use crate::grasp::certify::{BracketScratch, Disturbances, RawSide, bracket, support_with_error};
+use crate::grasp::certify::{
+    BracketScratch, Disturbances, RawSide, bracket, candidates, support_with_error,
+};
 use crate::grasp::flatness::{FLAT, Flatness};
+use crate::grasp::quality::ties::on_other_planes;
 use crate::grasp::quality::{
     FORCE_CLOSURE_EPSILON, HullBuffers, Method, Metric, QualityError, certified_outside,
     check_wrenches, find_or_make, q1_certified, q1_of_wrenches,
@@ -25,6 +28,13 @@ pub struct OwsQuality {
     pub value: Option<f64>,
     /// The disturbance whose inflation decides the value (exact methods only).
     pub deciding_disturbance: Option<usize>,
+    /// Whether another facet, on another plane, gives the value too (within 1e−9 of it, plus
+    /// the snapping's share on a snapped hull): Q_OWS is then a minimum of two smooth
+    /// functions of the grasp, not differentiable ([`ows_gradient`](crate::grasp::ows_gradient)
+    /// says so). Seen on the hull the value came from, by the partial hull (a partial hull's tie
+    /// is the full hull's, as for Q1's `Quality::tied`) and by brute force; `false` for
+    /// `PartialRays` (kept as published) and the ellipsoid.
+    pub tied: bool,
     /// Work done by the grasp's hull (the ellipsoid method: by its Q1 hull).
     pub stats: Stats,
 }
@@ -173,6 +183,7 @@ fn not_force_closure(stats: Stats) -> OwsQuality {
         force_closure: false,
         value: None,
         deciding_disturbance: None,
+        tied: false,
         stats,
     }
 }
@@ -238,10 +249,12 @@ fn ows_inner(
         let found = search(snapped, Some(pyramids), space, method, buffers)?;
         if let Some(quality) = found
             && let Some(hull) = buffers.hull.as_ref()
-            && let Some(value) = certify_ows(hull, raw, delta, scale, space, &mut buffers.bracket)
+            && let Some((value, tied)) =
+                certify_ows(hull, raw, delta, scale, space, &mut buffers.bracket)
         {
             return Ok(OwsQuality {
                 value: Some(value),
+                tied,
                 ..quality
             });
         }
@@ -275,11 +288,14 @@ fn search(
     method: Method,
     buffers: &mut OwsBuffers,
 ) -> Result<Option<OwsQuality>, QualityError> {
+    // Ties on the caller's own wrenches only: on snapped ones the certified value's bracket
+    // looks for them (`certify_ows`), and this pass would be wasted on the hot path.
+    let ties = pyramids.is_none().then(|| space.support_index());
     let result = match method {
         Method::Partial => {
             let parked = std::mem::take(&mut buffers.inflation);
             let mut strategy = parked.rebind_index(space.support_index());
-            let result = partial(w, pyramids, &mut strategy, &mut buffers.hull);
+            let result = partial(w, pyramids, &mut strategy, &mut buffers.hull, ties);
             buffers.inflation = strategy.park();
             result
         }
@@ -288,6 +304,7 @@ fn search(
             pyramids,
             OwsInflation::with_rays(space.disturbances()),
             &mut buffers.hull,
+            None,
         ),
         Method::Full => brute_force(w, pyramids, space, &mut buffers.hull),
         // Refused by `ows_inner` before any hull is built.
@@ -298,7 +315,8 @@ fn search(
 
 /// Q_OWS of the raw wrenches from `hull`, the snapped wrenches' hull holding the origin strictly
 /// inside, when the certified bracket is narrow enough and the surface keeps the raw Q1 above
-/// the force-closure band (see [`crate::grasp::certify`]).
+/// the force-closure band (see [`crate::grasp::certify`]); and whether another facet ties with
+/// the deciding one ([`OwsQuality::tied`]).
 fn certify_ows(
     hull: &Hull<6>,
     raw: &[[f64; 6]],
@@ -306,7 +324,7 @@ fn certify_ows(
     scale: f64,
     space: &ObjectWrenchSpace,
     scratch: &mut BracketScratch,
-) -> Option<f64> {
+) -> Option<(f64, bool)> {
     let mut side = RawSide {
         point: |v: usize| Some(raw[v]),
         error: 0.0,
@@ -317,21 +335,88 @@ fn certify_ows(
         index: space.support_index(),
     };
     let b = bracket(hull, &mut side, &mut gauge, scratch)?;
-    b.value_within(b.high.abs())
+    let value = b.value_within(b.high.abs())?;
+    // Snapping moves a facet's distance by up to δ, its factor by δ/g (g the disturbances'
+    // rate against it): relative `2δ/distance` between two facets, on top of the band.
+    let distance = -hull.signed_distance(b.facet, &[0.0; 6]);
+    let slack = 2.0 * delta / distance;
+    let limit = b.high * (1.0 + 2.0 * (TIE_BAND + slack));
+    let index = space.support_index();
+    let tied = tied_factor(hull, b.facet, slack, candidates(scratch, limit), index);
+    Some((value, tied))
 }
 
+/// Whether a facet among `candidates`, on another plane than `deciding`, has an exact factor
+/// (see [`exact_factor`]) within `TIE_BAND + slack` (relative) of `deciding`'s on `hull`, the
+/// disturbances' support answered by `index`. A precise facet (normal and offset within 1e−11
+/// of the exact ones) is screened first by the ball tree's cheap bound, then by its
+/// floating-point factor: the exact planes are computed only for the few that may tie.
+fn tied_factor(
+    hull: &Hull<6>,
+    deciding: FacetId,
+    slack: f64,
+    candidates: impl Iterator<Item = FacetId>,
+    index: &SupportIndex<6>,
+) -> bool {
+    let support = |toward: &[f64; 6]| index.support(toward);
+    let Some((own, _)) = exact_factor(hull, deciding, support) else {
+        return false;
+    };
+    // The screens' own slack: 1e−9 covers the floating-point factors' error.
+    let limit = own * (1.0 + TIE_BAND + slack);
+    let screen = limit * (1.0 + 1e-9);
+    let mut candidates = candidates;
+    candidates.any(|id| {
+        if id == deciding {
+            return false;
+        }
+        let facet = hull.facet(id);
+        if facet.normal_is_precise() {
+            let toward = facet.normal().map(|c| -c);
+            if facet.offset() > screen * index.upper_bound(&toward, CHEAP_DEPTH) {
+                return false;
+            }
+            match support(&toward) {
+                Some((h, _)) if h > 0.0 && facet.offset() <= screen * h => {}
+                _ => return false,
+            }
+        }
+        on_other_planes(hull, id, deciding)
+            && exact_factor(hull, id, support).is_some_and(|(f, _)| f <= limit)
+    })
+}
+
+/// Depth of the ball-tree nodes whose bound screens a facet in [`tied_factor`] (as the
+/// certification's cheap bound).
+const CHEAP_DEPTH: usize = 5;
+
+/// Another facet's factor within this fraction of the value is a tie ([`OwsQuality::tied`]),
+/// as for Q1 (`Quality::tied`).
+const TIE_BAND: f64 = 1e-9;
+
+/// Q_OWS by the partial hull of `wrenches` (the caller's, or snapped ones), with ties looked
+/// for among its facets when `support` (the disturbances' support) is given.
 fn partial<S: crate::Strategy<6, Output = crate::strategy::OwsResult<6>>>(
     wrenches: &[[f64; 6]],
     pyramids: Option<&[u32]>,
     strategy: S,
     hull: &mut Option<Hull<6>>,
+    ties: Option<&SupportIndex<6>>,
 ) -> Result<Option<OwsQuality>, QualityError> {
     match HullBuffers::build(hull, wrenches, pyramids, strategy) {
-        Ok((_, result)) => Ok(Some(OwsQuality {
+        Ok((h, result)) => Ok(Some(OwsQuality {
             // The strategy has a value exactly when the origin is strictly inside the hull.
             force_closure: result.value.is_some(),
             value: result.value,
             deciding_disturbance: result.deciding_disturbance,
+            // A partial hull's facets are nowhere beyond the full hull's, and its deciding
+            // facet is certain: a tie of the full hull is one of its facets (as for Q1).
+            tied: match (ties, result.deciding_facet) {
+                (Some(index), Some(facet)) if result.value.is_some_and(f64::is_finite) => {
+                    tied_factor(h, facet, 0.0, h.facets().map(|(id, _)| id), index)
+                }
+                _ => false,
+            },
             stats: result.stats,
         })),
         // Wrenches spanning fewer than six dimensions cannot hold the origin in their interior.
@@ -386,8 +471,10 @@ fn brute_force(
         .collect();
     bounds.sort_by(|a, b| a.0.total_cmp(&b.0));
     let mut best: Option<(f64, usize)> = None;
+    // Every exact factor within the tie band of the best so far, with its facet.
+    let mut near: Vec<(f64, FacetId)> = Vec::new();
     for (low, id) in bounds {
-        if best.is_some_and(|(b, _)| low > b) {
+        if best.is_some_and(|(b, _)| low > b * (1.0 + TIE_BAND)) {
             break;
         }
         // `toward` is −n: the largest rate is max_d (−n)·d.
@@ -398,16 +485,25 @@ fn brute_force(
                 .map(|(i, d)| (dot(*toward, *d), i))
                 .max_by(|a, b| a.0.total_cmp(&b.0))
         });
-        if let Some((r, i)) = exact
-            && best.is_none_or(|(b, _)| r < b)
-        {
-            best = Some((r, i));
+        if let Some((r, i)) = exact {
+            near.push((r, id));
+            if best.is_none_or(|(b, _)| r < b) {
+                best = Some((r, i));
+            }
         }
     }
+    let value = best.map_or(f64::INFINITY, |(r, _)| r);
+    let within = |r: f64| r <= value * (1.0 + TIE_BAND);
+    let deciding = near.iter().find(|(r, _)| *r == value).map(|&(_, id)| id);
+    let tied = deciding.is_some_and(|d| {
+        near.iter()
+            .any(|&(r, id)| id != d && within(r) && on_other_planes(hull, id, d))
+    });
     Ok(Some(OwsQuality {
         force_closure: true,
-        value: Some(best.map_or(f64::INFINITY, |(r, _)| r)),
+        value: Some(value),
         deciding_disturbance: best.map(|(_, i)| i),
+        tied,
         stats,
     }))
 }
@@ -449,6 +545,7 @@ fn ellipsoid(wrenches: &[[f64; 6]], space: &ObjectWrenchSpace) -> Result<OwsQual
         force_closure: true,
         value: Some(q1.value),
         deciding_disturbance: None,
+        tied: false,
         stats,
     })
 }

@@ -327,7 +327,12 @@ fn certify_sum(
     let value = b.value_within(scale)?;
     let vertices = hull.facet(b.facet).vertices();
     let deciding = vertices.iter().filter_map(|&v| raw_point(v));
-    Some(Quality::new(value, deciding, hull.stats()).banded(scale))
+    let quality = Quality::new(value, deciding, hull.stats());
+    Some(
+        quality
+            .with_ties(hull, b.facet, scale, delta + error)
+            .banded(scale),
+    )
 }
 
 /// 42 support points of the sum of `sets` along [`SEED_DIRECTIONS`], without repeats.
@@ -462,6 +467,7 @@ pub(super) fn partial(
             result.closest_facet_vertices.iter().map(|&v| h.point(v)),
             result.stats,
         )
+        .with_ties(h, result.closest_facet, scale, 0.0)
         .banded(scale)),
         Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
             let source = nearest.source_mut();
