@@ -127,9 +127,31 @@ impl Quality {
     /// This quality, flagged as tied when another facet of `hull` is (see [`tied`](Self::tied));
     /// `facet` decides the value, `scale` is the wrench scale and `delta` bounds the distance
     /// between `hull`'s points and the caller's wrenches (0 for a hull of the caller's own).
-    fn with_ties(mut self, hull: &Hull<6>, facet: crate::FacetId, scale: f64, delta: f64) -> Self {
+    /// `bracketed`: the scratch of the bracket that certified the value on `hull`, whose
+    /// per-facet lower bounds name the only facets that can tie; without it, every facet is
+    /// looked at.
+    fn with_ties(
+        mut self,
+        hull: &Hull<6>,
+        facet: crate::FacetId,
+        scale: f64,
+        delta: f64,
+        bracketed: Option<&BracketScratch>,
+    ) -> Self {
         let band = TIE_BAND * scale + 2.0 * delta;
-        self.tied = self.value > 0.0 && ties::tied(hull, facet, band);
+        self.tied = self.value > 0.0
+            && match bracketed {
+                Some(scratch) => {
+                    let limit = self.value + band;
+                    ties::tied(
+                        hull,
+                        facet,
+                        band,
+                        super::certify::candidates(scratch, limit),
+                    )
+                }
+                None => ties::tied(hull, facet, band, hull.facets().map(|(id, _)| id)),
+            };
         self
     }
 
@@ -733,7 +755,13 @@ impl Explicit<'_> {
         let value = b.value_within(largest_norm(raw))?;
         let deciding = hull.facet(b.facet).vertices().map(|v| raw[v]);
         let quality = Quality::new(value, deciding.into_iter(), hull.stats());
-        Some(quality.with_ties(hull, b.facet, largest_norm(raw), self.delta))
+        Some(quality.with_ties(
+            hull,
+            b.facet,
+            largest_norm(raw),
+            self.delta,
+            Some(&*scratch),
+        ))
     }
 }
 
@@ -794,7 +822,7 @@ fn nearest_q1(
             result.closest_facet_vertices.iter().map(|&v| w[v]),
             result.stats,
         )
-        .with_ties(h, result.closest_facet, largest_norm(w), 0.0)),
+        .with_ties(h, result.closest_facet, largest_norm(w), 0.0, None)),
         Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
             Ok(degenerate(w, started))
         }

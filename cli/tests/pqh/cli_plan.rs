@@ -293,10 +293,11 @@ fn on_the_bar(p: &[f64]) -> bool {
     inside && on_a_face
 }
 
-#[test]
-fn plan_descent_climbs_and_writes_a_grasp_pqh_grasp_reads() {
+/// `pqh plan --mesh BAR --planner descent --starts 3 ARGS --json`, which must succeed: its
+/// report.
+fn plan_descent_on_the_bar(args: &[&str]) -> Value {
     let bar = bar_obj();
-    let out = pqh(&[
+    let mut all = vec![
         "plan",
         "--mesh",
         bar.to_str().unwrap(),
@@ -304,16 +305,21 @@ fn plan_descent_climbs_and_writes_a_grasp_pqh_grasp_reads() {
         "descent",
         "--starts",
         "3",
-        "--evaluations",
-        "20",
         "--json",
-    ]);
+    ];
+    all.extend_from_slice(args);
+    let out = pqh(&all);
     assert!(
         out.status.success(),
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let report: Value = serde_json::from_slice(&out.stdout).expect("JSON");
+    serde_json::from_slice(&out.stdout).expect("JSON")
+}
+
+#[test]
+fn plan_descent_climbs_and_writes_a_grasp_pqh_grasp_reads() {
+    let report = plan_descent_on_the_bar(&["--evaluations", "20"]);
     assert_eq!(report["planner"], "descent");
     assert_eq!(report["metric"], "q1");
     for method in ["partial", "full"] {
@@ -386,30 +392,15 @@ fn plan_descent_refuses_what_it_cannot_do() {
 /// end elsewhere (on the bar, higher: 0.311 against 0.170 here).
 #[test]
 fn plan_descent_screens_its_starts() {
-    let bar = bar_obj();
     let spent = |screen: &str| {
-        let out = pqh(&[
-            "plan",
-            "--mesh",
-            bar.to_str().unwrap(),
-            "--planner",
-            "descent",
-            "--starts",
-            "3",
+        let report = plan_descent_on_the_bar(&[
             "--evaluations",
             "30",
             "--screen",
             screen,
             "--full-samples",
             "0",
-            "--json",
         ]);
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        let report: Value = serde_json::from_slice(&out.stdout).expect("JSON");
         let run = &report["partial"];
         let best = run["best"]["value"].as_f64().expect("a force-closure best");
         (run["evaluations"].as_u64().unwrap(), best)

@@ -355,7 +355,7 @@ fn tied_factor(
     hull: &Hull<6>,
     deciding: FacetId,
     slack: f64,
-    candidates: impl Iterator<Item = FacetId>,
+    mut candidates: impl Iterator<Item = FacetId>,
     index: &SupportIndex<6>,
 ) -> bool {
     let support = |toward: &[f64; 6]| index.support(toward);
@@ -365,7 +365,6 @@ fn tied_factor(
     // The screens' own slack: 1e−9 covers the floating-point factors' error.
     let limit = own * (1.0 + TIE_BAND + slack);
     let screen = limit * (1.0 + 1e-9);
-    let mut candidates = candidates;
     candidates.any(|id| {
         if id == deciding {
             return false;

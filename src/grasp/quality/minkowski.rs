@@ -330,7 +330,7 @@ fn certify_sum(
     let quality = Quality::new(value, deciding, hull.stats());
     Some(
         quality
-            .with_ties(hull, b.facet, scale, delta + error)
+            .with_ties(hull, b.facet, scale, delta + error, Some(&*scratch))
             .banded(scale),
     )
 }
@@ -467,7 +467,7 @@ pub(super) fn partial(
             result.closest_facet_vertices.iter().map(|&v| h.point(v)),
             result.stats,
         )
-        .with_ties(h, result.closest_facet, scale, 0.0)
+        .with_ties(h, result.closest_facet, scale, 0.0, None)
         .banded(scale)),
         Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
             let source = nearest.source_mut();

@@ -19,13 +19,18 @@ use crate::{FacetId, Hull};
 /// simplex, and a genuinely other facet at the same distance differs by far more.
 pub(super) const DIFFERENT_PLANE: f64 = 1e-6;
 
-/// Whether a facet of `hull` other than `deciding` (the origin inside), with a normal more than
-/// [`DIFFERENT_PLANE`] from its normal, lies within `band` of its distance from the origin,
-/// both measured on `hull` (which may be of snapped wrenches: `band` then covers the snapping
-/// too). One pass over the facets with floating-point bounds. A precise facet's normal and
+/// Whether a facet among `candidates` (of `hull`) other than `deciding` (the origin inside),
+/// with a normal more than [`DIFFERENT_PLANE`] from its normal, lies within `band` of its
+/// distance from the origin, both measured on `hull` (which may be of snapped wrenches: `band`
+/// then covers the snapping too). One pass over the candidates with floating-point bounds. A precise facet's normal and
 /// distance (within 1e−11 of the exact ones, far inside `band` and [`DIFFERENT_PLANE`]) are
 /// used as they are; a thin facet's exact ones are computed only when it is within the band.
-pub(in crate::grasp) fn tied(hull: &Hull<6>, deciding: FacetId, band: f64) -> bool {
+pub(in crate::grasp) fn tied(
+    hull: &Hull<6>,
+    deciding: FacetId,
+    band: f64,
+    candidates: impl Iterator<Item = FacetId>,
+) -> bool {
     let origin = [0.0; 6];
     let distance_of = |id: FacetId| {
         let exact = match hull.facet(id).normal_is_precise() {
@@ -36,7 +41,7 @@ pub(in crate::grasp) fn tied(hull: &Hull<6>, deciding: FacetId, band: f64) -> bo
     };
     let value = distance_of(deciding);
     let mut own: Option<[f64; 6]> = None;
-    for (id, _) in hull.facets() {
+    for id in candidates {
         if id == deciding {
             continue;
         }
