@@ -66,6 +66,7 @@ mod gradient;
 pub mod json;
 pub mod metrics;
 pub mod ows;
+mod pipeline;
 pub mod quality;
 mod random;
 mod snap;

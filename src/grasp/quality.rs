@@ -54,25 +54,26 @@
 //! ```
 
 use super::Grasp;
-use super::certify::{
-    self, Bracket, BracketScratch, RawSide, UnitBall, bracket, support_with_error,
-};
-use super::flatness::{FLAT, Flatness};
+use super::certify::BracketScratch;
+use super::pipeline::{self, Buffers, Expansion};
 use super::snap::{SnappedCones, pyramid_labels, snapped_union};
+use crate::Hull;
 use crate::geometry::{
     GJK_ITERATIONS, GJK_TOUCHING, Gjk, GjkVerdict, largest_norm, min_norm_point,
     min_norm_point_accurate,
 };
 use crate::predicates::times_power_of_two;
-use crate::strategy::{ClosestToOrigin, Complete, Stats};
-use crate::{Hull, HullError};
+use crate::strategy::Stats;
 use std::time::Instant;
 
 mod error;
+mod explicit;
 mod minkowski;
 pub(in crate::grasp) mod ties;
 mod vocabulary;
 pub use error::QualityError;
+use explicit::Explicit;
+pub(in crate::grasp) use explicit::nearest_hull;
 pub use minkowski::MINKOWSKI_MATERIALISE_LIMIT;
 pub use vocabulary::{Method, Metric, NameError};
 
@@ -130,7 +131,7 @@ impl Quality {
     /// `bracketed`: the scratch of the bracket that certified the value on `hull`, whose
     /// per-facet lower bounds name the only facets that can tie; without it, every facet is
     /// looked at.
-    fn with_ties(
+    pub(in crate::grasp) fn with_ties(
         mut self,
         hull: &Hull<6>,
         facet: crate::FacetId,
@@ -156,7 +157,11 @@ impl Quality {
     }
 
     /// A value not yet banded: [`banded`](Self::banded) sets the scale and the verdict.
-    fn new(value: f64, deciding: impl Iterator<Item = [f64; 6]>, stats: Stats) -> Self {
+    pub(in crate::grasp) fn new(
+        value: f64,
+        deciding: impl Iterator<Item = [f64; 6]>,
+        stats: Stats,
+    ) -> Self {
         let mut quality = Quality {
             force_closure: value > 0.0,
             value,
@@ -174,7 +179,7 @@ impl Quality {
     }
 
     /// The verdict under the force-closure band for the wrench scale `scale`.
-    fn banded(mut self, scale: f64) -> Self {
+    pub(in crate::grasp) fn banded(mut self, scale: f64) -> Self {
         self.scale = scale;
         self.force_closure = is_force_closure(self.value, scale);
         self
@@ -291,37 +296,8 @@ pub struct Evaluator {
     wrenches: Vec<[f64; 6]>,
     /// The contact of every wrench, when `wrenches` holds the snapped pyramids.
     pyramids: Vec<u32>,
-    buffers: HullBuffers,
-    minkowski: minkowski::MinkowskiBuffers,
-}
-
-/// The hull and partial strategy a Q1 evaluation reuses from one wrench set to the next.
-#[derive(Clone, Debug, Default)]
-pub(in crate::grasp) struct HullBuffers {
-    hull: Option<Hull<6>>,
-    nearest: ClosestToOrigin<6>,
-    gjk: Gjk<6>,
-    pub(in crate::grasp) bracket: BracketScratch,
-    pub(in crate::grasp) flatness: Flatness,
-}
-
-impl HullBuffers {
-    /// The hull of `w` grown by `strategy`, in the reused arena. `pyramids`, when given, names
-    /// the contact of every wrench: each contact's wrenches must lie *exactly* in one 2-D affine
-    /// plane, as snapped friction pyramids do (see [`Hull::rebuild_with_flats`]).
-    pub(in crate::grasp) fn build<'h, S: crate::Strategy<6>>(
-        hull: &'h mut Option<Hull<6>>,
-        w: &[[f64; 6]],
-        pyramids: Option<&[u32]>,
-        strategy: S,
-    ) -> Result<(&'h Hull<6>, S::Output), HullError> {
-        let h = hull.get_or_insert_with(Hull::empty);
-        let output = match pyramids {
-            Some(contact_of) => h.rebuild_with_trusted_flats(w, contact_of, 2, strategy)?,
-            None => h.rebuild_with_strategy(w, strategy)?,
-        };
-        Ok((h, output))
-    }
+    buffers: Buffers,
+    minkowski: minkowski::MinkowskiSearch,
 }
 
 impl Evaluator {
@@ -333,8 +309,8 @@ impl Evaluator {
             cones: SnappedCones::default(),
             wrenches: Vec::new(),
             pyramids: Vec::new(),
-            buffers: HullBuffers::default(),
-            minkowski: minkowski::MinkowskiBuffers::default(),
+            buffers: Buffers::default(),
+            minkowski: minkowski::MinkowskiSearch::default(),
         }
     }
 
@@ -362,7 +338,10 @@ impl Evaluator {
             return Err(not_evaluators(self.metric));
         }
         if !self.method.supports(self.metric) {
-            unsupported(self.method, self.metric)?;
+            return Err(QualityError::UnsupportedMethod {
+                method: self.method,
+                metric: self.metric,
+            });
         }
         self.cones.fill(grasp);
         // The caller's wrenches first: a finite one that is too large is named as such (its
@@ -378,35 +357,34 @@ impl Evaluator {
                 snapped_union(&self.cones, &mut self.wrenches);
                 let edges = self.cones.edges();
                 pyramid_labels(self.cones.contacts(), edges, &mut self.pyramids);
-                let scale = largest_norm(&self.cones.raw);
-                let raw = Explicit {
-                    raw: &self.cones.raw,
-                    snapped: &self.wrenches,
-                    pyramids: Some(&self.pyramids),
-                    delta: self.cones.delta.iter().fold(0.0, |m: f64, &d| m.max(d)),
-                };
-                match self.method {
-                    Method::Partial => raw.partial(started, &mut self.buffers)?,
-                    Method::Full => raw.full(started, &mut self.buffers)?,
-                    Method::Qhull => qhull_q1(&self.cones.raw, started)?,
-                    Method::PartialRays | Method::Ellipsoid => {
-                        unsupported(self.method, self.metric)?
-                    }
+                let delta = self.cones.delta.iter().fold(0.0, |m: f64, &d| m.max(d));
+                let raw = &self.cones.raw;
+                let mut set = Explicit::snapped(raw, &self.wrenches, &self.pyramids, delta);
+                match expansion(self.method, self.metric)? {
+                    Some(e) => pipeline::evaluate(&mut set, e, &mut self.buffers, started)?,
+                    None => qhull_q1(raw, started)?.banded(largest_norm(raw)),
                 }
-                .banded(scale)
             }
-            Metric::QInf { with_zero_wrench } => match self.method {
-                Method::Partial => {
-                    minkowski::partial(&self.cones, with_zero_wrench, &mut self.minkowski)?
+            Metric::QInf { with_zero_wrench } => match expansion(self.method, self.metric)? {
+                Some(Expansion::Partial) => {
+                    let mut set = minkowski::ImplicitSum::new(
+                        &self.cones,
+                        with_zero_wrench,
+                        &mut self.minkowski,
+                    );
+                    pipeline::evaluate(&mut set, Expansion::Partial, &mut self.buffers, started)?
                 }
-                _ => minkowski::full(
-                    &self.cones,
-                    with_zero_wrench,
-                    self.method,
-                    &mut self.wrenches,
-                    &mut self.buffers,
-                    started,
-                )?,
+                Some(Expansion::Full) => {
+                    let mut set = minkowski::MaterialisedSum::new(
+                        &self.cones,
+                        with_zero_wrench,
+                        &mut self.wrenches,
+                    );
+                    pipeline::evaluate(&mut set, Expansion::Full, &mut self.buffers, started)?
+                }
+                None => {
+                    minkowski::qhull(&self.cones, with_zero_wrench, &mut self.wrenches, started)?
+                }
             },
             metric => return Err(not_evaluators(metric)),
         };
@@ -483,13 +461,13 @@ pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Quality, 
         ));
     }
     let started = Instant::now();
-    let mut quality = match method {
-        Method::Partial => partial_q1(wrenches, None, started, &mut HullBuffers::default())?,
-        Method::Full => full_q1(wrenches, None, started, &mut HullBuffers::default())?,
-        Method::Qhull => qhull_q1(wrenches, started)?,
-        Method::PartialRays | Method::Ellipsoid => unsupported(method, Metric::Q1)?,
-    }
-    .banded(largest_norm(wrenches));
+    let mut quality = match expansion(method, Metric::Q1)? {
+        Some(e) => {
+            let mut set = Explicit::raw(wrenches);
+            pipeline::evaluate(&mut set, e, &mut Buffers::default(), started)?
+        }
+        None => qhull_q1(wrenches, started)?.banded(largest_norm(wrenches)),
+    };
     quality.stats.elapsed = started.elapsed();
     Ok(quality)
 }
@@ -502,16 +480,11 @@ pub(in crate::grasp) fn q1_certified(
     snapped: &[[f64; 6]],
     pyramids: &[u32],
     delta: f64,
-    buffers: &mut HullBuffers,
+    buffers: &mut Buffers,
 ) -> Result<Quality, QualityError> {
     let started = Instant::now();
-    let set = Explicit {
-        raw,
-        snapped,
-        pyramids: Some(pyramids),
-        delta,
-    };
-    let mut quality = set.partial(started, buffers)?.banded(largest_norm(raw));
+    let mut set = Explicit::snapped(raw, snapped, pyramids, delta);
+    let mut quality = pipeline::evaluate(&mut set, Expansion::Partial, buffers, started)?;
     quality.stats.elapsed = started.elapsed();
     Ok(quality)
 }
@@ -575,7 +548,7 @@ pub(in crate::grasp) fn find_or_make<E>(
 }
 
 /// Stats of work that built no hull (a degenerate wrench set).
-fn no_hull_stats(points: usize, started: Instant) -> Stats {
+pub(in crate::grasp) fn no_hull_stats(points: usize, started: Instant) -> Stats {
     Stats {
         points_processed: points,
         facets_created: 0,
@@ -585,26 +558,13 @@ fn no_hull_stats(points: usize, started: Instant) -> Stats {
 }
 
 /// −(distance from the origin to CH(w)) for a set too degenerate for a hull: never force closure.
-fn degenerate(w: &[[f64; 6]], started: Instant) -> Quality {
+pub(in crate::grasp) fn degenerate(w: &[[f64; 6]], started: Instant) -> Quality {
     // The plain run's corral starts the accurate one: its residual in double-double keeps the
     // distance of an origin within rounding of the set (a flat set) to about 1e−30 of its size.
     let rough = min_norm_point(w.len(), |i| w[i], &[0.0; 6]);
     let nearest = min_norm_point_accurate(w.len(), |i| w[i], &[0.0; 6], rough.support());
     let support = nearest.support().iter().map(|&i| w[i]);
     Quality::new(-nearest.distance, support, no_hull_stats(w.len(), started))
-}
-
-/// A boundary grasp's value is settled without the exact engine when its upper and lower bounds
-/// are each within this fraction of the scale: their midpoint is then within it of the exact
-/// value, half the `1e−14·scale` the metrics promise near zero (see `Explicit::boundary`).
-pub(super) const BOUNDARY: f64 = 5e-15;
-
-/// Q1 of `w` when it lies within [`FLAT`] of its scale of a hyperplane through the origin (see
-/// [`flatness`](super::flatness)): −(its distance from the origin) by Wolfe's algorithm over the
-/// points, within that slab's half-width of the exact value, and never force closure.
-fn flat_q1(w: &[[f64; 6]], started: Instant, flatness: &mut Flatness) -> Option<Quality> {
-    let tau = flatness.slab(w.iter().copied());
-    (tau <= FLAT * largest_norm(w)).then(|| degenerate(w, started))
 }
 
 /// When GJK certifies that the origin lies outside the hull of `w` (so the grasp is not force
@@ -627,212 +587,20 @@ pub(in crate::grasp) fn certified_outside(
     }
 }
 
-/// A Q1 wrench set as the evaluator sees it: the caller's raw wrenches, the snapped ones the
-/// search runs on (same indexing), and `delta`, a bound on the distance between the two.
-struct Explicit<'a> {
-    raw: &'a [[f64; 6]],
-    snapped: &'a [[f64; 6]],
-    pyramids: Option<&'a [u32]>,
-    delta: f64,
-}
-
-impl Explicit<'_> {
-    /// Q1 by the partial hull: GJK on the raw wrenches (a certified separation settles most
-    /// grasps that are not force closure); then the partial hull of the snapped wrenches, its
-    /// answer certified on the raw ones; failing that (the origin within `δ` of the snapped
-    /// boundary, or a bracket too wide), the exact partial hull of the raw wrenches.
-    fn partial(
-        &self,
-        started: Instant,
-        buffers: &mut HullBuffers,
-    ) -> Result<Quality, QualityError> {
-        if let Some((distance, inserted)) = certified_outside(self.raw, &mut buffers.gjk) {
-            let stats = no_hull_stats(1 + inserted, started);
-            return Ok(Quality::new(
-                -distance,
-                buffers.gjk.face().iter().copied(),
-                stats,
-            ));
+/// How the cascade grows its hulls for `method` ([`pipeline`]); `None` for Qhull, a baseline
+/// outside it.
+///
+/// # Errors
+/// [`QualityError::UnsupportedMethod`] for a method that does not compute `metric` (Q1 or Q∞).
+fn expansion(method: Method, metric: Metric) -> Result<Option<Expansion>, QualityError> {
+    match method {
+        Method::Partial => Ok(Some(Expansion::Partial)),
+        Method::Full => Ok(Some(Expansion::Full)),
+        Method::Qhull => Ok(None),
+        Method::PartialRays | Method::Ellipsoid => {
+            Err(QualityError::UnsupportedMethod { method, metric })
         }
-        if let Some(quality) = flat_q1(self.raw, started, &mut buffers.flatness) {
-            return Ok(quality);
-        }
-        let HullBuffers {
-            hull,
-            nearest,
-            bracket,
-            ..
-        } = buffers;
-        if let Ok((h, result)) = HullBuffers::build(hull, self.snapped, self.pyramids, nearest) {
-            if result.signed_distance > 0.0
-                && let Some(quality) = self.certify(h, bracket)
-            {
-                return Ok(quality);
-            }
-            if let Some(quality) = self.boundary(h, result.closest_facet) {
-                return Ok(quality);
-            }
-        }
-        partial_q1(self.raw, None, started, buffers)
     }
-
-    /// Q1 of a *boundary* grasp — the origin within `δ` of the snapped hull's facet `id`, where
-    /// the bracket has no lower bound — without the exact engine on the raw wrenches (which
-    /// builds slivers there, facets the floating-point filter cannot decide: far slower than the
-    /// two bounds below, docs/benchmarks.md, "Issue 11"). The raw simplex of
-    /// that facet bounds Q1 from above ([`certify::upper_bound_at`]); Wolfe's algorithm bounds it
-    /// from below, by −(the distance from the origin to the hull). When both are within
-    /// `BOUNDARY` of the scale, Q1 is their midpoint, within the `1e−14·scale` the metric
-    /// promises near zero, and the grasp is not force closure.
-    fn boundary(&self, hull: &Hull<6>, id: crate::FacetId) -> Option<Quality> {
-        let raw = self.raw;
-        let scale = largest_norm(raw);
-        let mut side = RawSide {
-            point: |v: usize| Some(raw[v]),
-            error: 0.0,
-            delta: self.delta,
-            support: |u: &[f64; 6]| support_with_error(raw, u),
-        };
-        let high = certify::upper_bound_at(hull, id, &mut side, &mut UnitBall)?;
-        if high > BOUNDARY * scale {
-            return None;
-        }
-        // The lower bound: −(the distance from the origin to the hull), by Wolfe's algorithm
-        // with the accurate residual (plain floating point leaves ~1e−14 of the scale here).
-        let rough = min_norm_point(raw.len(), |i| raw[i], &[0.0; 6]);
-        let nearest = min_norm_point_accurate(raw.len(), |i| raw[i], &[0.0; 6], rough.support());
-        // Its accuracy: 1e−15 of itself plus 1e−30 of the set's size; rounded up generously.
-        let distance = nearest.distance * (1.0 + 1e-14) + 1e-28 * scale;
-        (distance <= BOUNDARY * scale).then(|| {
-            let face = nearest.support().iter().map(|&i| raw[i]);
-            Quality::new(0.5 * (high - distance), face, hull.stats())
-        })
-    }
-
-    /// Q1 from the full hull of the snapped wrenches, certified on the raw ones when it holds
-    /// the origin; otherwise GJK on the raw wrenches, then the full hull of the raw wrenches.
-    fn full(&self, started: Instant, buffers: &mut HullBuffers) -> Result<Quality, QualityError> {
-        if let Some(quality) = flat_q1(self.raw, started, &mut buffers.flatness) {
-            return Ok(quality);
-        }
-        let strategy = crate::FarthestPoint::new();
-        // The full hull's work, reported whichever step gives the value (a GJK answer too: the
-        // full method built the hull first, and its counters should say so).
-        let mut full_stats = None;
-        if let Ok((h, ())) =
-            HullBuffers::build(&mut buffers.hull, self.snapped, self.pyramids, strategy)
-        {
-            full_stats = Some(h.stats());
-            if h.facets()
-                .all(|(id, _)| h.side_of(id, &[0.0; 6]) == crate::predicates::Sign::Negative)
-                && let Some(quality) = self.certify(h, &mut buffers.bracket)
-            {
-                return Ok(quality);
-            }
-        }
-        if let Some((distance, inserted)) = certified_outside(self.raw, &mut buffers.gjk) {
-            let stats = full_stats.unwrap_or_else(|| no_hull_stats(1 + inserted, started));
-            return Ok(Quality::new(
-                -distance,
-                buffers.gjk.face().iter().copied(),
-                stats,
-            ));
-        }
-        full_q1(self.raw, None, started, buffers)
-    }
-
-    /// Q1 of the raw wrenches from `hull`, a hull of the snapped ones holding the origin strictly
-    /// inside, when the certified bracket is narrow enough (see [`super::certify`]).
-    fn certify(&self, hull: &Hull<6>, scratch: &mut BracketScratch) -> Option<Quality> {
-        let raw = self.raw;
-        let mut side = RawSide {
-            point: |v: usize| Some(raw[v]),
-            error: 0.0,
-            delta: self.delta,
-            support: |u: &[f64; 6]| support_with_error(raw, u),
-        };
-        let b: Bracket = bracket(hull, &mut side, &mut UnitBall, scratch)?;
-        let value = b.value_within(largest_norm(raw))?;
-        let deciding = hull.facet(b.facet).vertices().map(|v| raw[v]);
-        let quality = Quality::new(value, deciding.into_iter(), hull.stats());
-        Some(quality.with_ties(
-            hull,
-            b.facet,
-            largest_norm(raw),
-            self.delta,
-            Some(&*scratch),
-        ))
-    }
-}
-
-/// Q1 of `w` by the partial hull; `pyramids` as in [`HullBuffers::build`].
-fn partial_q1(
-    w: &[[f64; 6]],
-    pyramids: Option<&[u32]>,
-    started: Instant,
-    buffers: &mut HullBuffers,
-) -> Result<Quality, QualityError> {
-    // Most grasps that are not force closure are separated from the origin by GJK, certified,
-    // without a hull; the rest (force closure, or the origin within rounding of the boundary) go
-    // on to the exact partial hull.
-    if let Some((distance, inserted)) = certified_outside(w, &mut buffers.gjk) {
-        let stats = no_hull_stats(1 + inserted, started);
-        return Ok(Quality::new(
-            -distance,
-            buffers.gjk.face().iter().copied(),
-            stats,
-        ));
-    }
-    if let Some(quality) = flat_q1(w, started, &mut buffers.flatness) {
-        return Ok(quality);
-    }
-    nearest_q1(w, pyramids, started, buffers, false)
-}
-
-/// Q1 of `w` from the full hull; `pyramids` as in [`HullBuffers::build`].
-fn full_q1(
-    w: &[[f64; 6]],
-    pyramids: Option<&[u32]>,
-    started: Instant,
-    buffers: &mut HullBuffers,
-) -> Result<Quality, QualityError> {
-    nearest_q1(w, pyramids, started, buffers, true)
-}
-
-/// Q1 of `w` by [`ClosestToOrigin`] on the partial hull it grows, or (`full`) on the full hull
-/// ([`Complete`]): one exact computation of the distance for both methods, inside (the nearest
-/// facet, certified, its distance from the exact determinants near the boundary) and outside
-/// (the exact nearest point), so the full method is exact by the same argument as the default.
-fn nearest_q1(
-    w: &[[f64; 6]],
-    pyramids: Option<&[u32]>,
-    started: Instant,
-    buffers: &mut HullBuffers,
-    full: bool,
-) -> Result<Quality, QualityError> {
-    let HullBuffers { hull, nearest, .. } = buffers;
-    let built = if full {
-        HullBuffers::build(hull, w, pyramids, Complete::new(nearest))
-    } else {
-        HullBuffers::build(hull, w, pyramids, nearest)
-    };
-    match built {
-        Ok((h, result)) => Ok(Quality::new(
-            result.signed_distance,
-            result.closest_facet_vertices.iter().map(|&v| w[v]),
-            result.stats,
-        )
-        .with_ties(h, result.closest_facet, largest_norm(w), 0.0, None)),
-        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
-            Ok(degenerate(w, started))
-        }
-        Err(e) => Err(QualityError::Hull(e)),
-    }
-}
-
-/// [`QualityError::UnsupportedMethod`], typed as any result.
-fn unsupported<T>(method: Method, metric: Metric) -> Result<T, QualityError> {
-    Err(QualityError::UnsupportedMethod { method, metric })
 }
 
 #[cfg(not(feature = "qhull"))]

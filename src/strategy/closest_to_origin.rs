@@ -374,6 +374,11 @@ impl<const D: usize, S> ClosestToOrigin<D, S> {
     pub fn source_mut(&mut self) -> &mut S {
         &mut self.source
     }
+
+    /// The implicit point source, to read what it recorded of the last run.
+    pub fn source(&self) -> &S {
+        &self.source
+    }
 }
 
 impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {

@@ -8,10 +8,11 @@ use crate::grasp::certify::{
     BracketScratch, Disturbances, RawSide, bracket, candidates, support_with_error,
 };
 use crate::grasp::flatness::{FLAT, Flatness};
+use crate::grasp::pipeline::{Buffers, build_hull};
 use crate::grasp::quality::ties::on_other_planes;
 use crate::grasp::quality::{
-    FORCE_CLOSURE_EPSILON, HullBuffers, Method, Metric, QualityError, certified_outside,
-    check_wrenches, find_or_make, q1_certified, q1_of_wrenches,
+    FORCE_CLOSURE_EPSILON, Method, Metric, QualityError, certified_outside, check_wrenches,
+    find_or_make, q1_certified, q1_of_wrenches,
 };
 use crate::grasp::snap::{SnappedCones, pyramid_labels, snapped_union};
 use crate::hull::{FacetId, Hull, HullError};
@@ -95,7 +96,7 @@ struct OwsBuffers {
     /// The slab test's workspace.
     flatness: Flatness,
     /// Q1's buffers, for the verdict when the OWS certificate cannot decide.
-    q1: HullBuffers,
+    q1: Buffers,
 }
 
 impl OwsEvaluator {
@@ -402,7 +403,7 @@ fn partial<S: crate::Strategy<6, Output = crate::strategy::OwsResult<6>>>(
     hull: &mut Option<Hull<6>>,
     ties: Option<&SupportIndex<6>>,
 ) -> Result<Option<OwsQuality>, QualityError> {
-    match HullBuffers::build(hull, wrenches, pyramids, strategy) {
+    match build_hull(hull, wrenches, pyramids, strategy) {
         Ok((h, result)) => Ok(Some(OwsQuality {
             // The strategy has a value exactly when the origin is strictly inside the hull.
             force_closure: result.value.is_some(),
@@ -430,7 +431,7 @@ fn brute_force(
     space: &ObjectWrenchSpace,
     hull: &mut Option<Hull<6>>,
 ) -> Result<Option<OwsQuality>, QualityError> {
-    let hull = match HullBuffers::build(hull, wrenches, pyramids, crate::FarthestPoint::new()) {
+    let hull = match build_hull(hull, wrenches, pyramids, crate::FarthestPoint::new()) {
         Ok((hull, ())) => hull,
         Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
             return Ok(None);

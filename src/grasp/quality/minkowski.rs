@@ -1,13 +1,13 @@
 //! Q∞ over the Minkowski sum ⊕_i W_i, implicitly (support function) or materialised.
 
-use super::{BOUNDARY, HullBuffers, Quality, QualityError, degenerate, full_q1, no_hull_stats};
+use super::{Quality, QualityError, degenerate, nearest_hull, no_hull_stats};
 use crate::geometry::vector::dot;
 use crate::geometry::{GJK_ITERATIONS, GJK_TOUCHING, Gjk, GjkVerdict, Support, SupportFn};
-use crate::grasp::certify::{self, RawSide, UnitBall, support_with_error};
+use crate::grasp::certify::support_with_error;
 use crate::grasp::flatness::{FLAT, Flatness};
+use crate::grasp::pipeline::{Built, Expansion, WrenchSet};
 use crate::grasp::snap::SnappedCones;
-use crate::predicates::Sign;
-use crate::strategy::{ClosestToOrigin, MinkowskiSum, PointSource};
+use crate::strategy::{ClosestToOrigin, MinkowskiSum, PointSource, SourceError, Stats};
 use crate::{FacetId, Hull, HullError};
 use std::time::Instant;
 
@@ -274,26 +274,18 @@ const SEED_DIRECTIONS: [[f64; 6]; 42] = {
 };
 
 /// What a Q∞ evaluation by the partial method reuses from grasp to grasp: the implicit source
-/// (inside the strategy, with its queue), the seeds, GJK's corral and the hull's arena.
+/// (inside the strategy, with its queue) and the seeds.
 #[derive(Clone, Debug)]
-pub(super) struct MinkowskiBuffers {
+pub(super) struct MinkowskiSearch {
     nearest: ClosestToOrigin<6, MinkowskiSource>,
     seeds: Vec<[f64; 6]>,
-    gjk: Gjk<6>,
-    hull: Option<Hull<6>>,
-    bracket: certify::BracketScratch,
-    flatness: Flatness,
 }
 
-impl Default for MinkowskiBuffers {
+impl Default for MinkowskiSearch {
     fn default() -> Self {
-        MinkowskiBuffers {
+        MinkowskiSearch {
             nearest: ClosestToOrigin::with_source([0.0; 6], MinkowskiSource::default()),
             seeds: Vec::new(),
-            gjk: Gjk::default(),
-            hull: None,
-            flatness: Flatness::default(),
-            bracket: certify::BracketScratch::default(),
         }
     }
 }
@@ -303,36 +295,6 @@ fn raw_scale(sets: &[Vec<[f64; 6]>]) -> f64 {
     sets.iter()
         .map(|set| set.iter().map(|w| dot(*w, *w).sqrt()).fold(0.0, f64::max))
         .sum()
-}
-
-/// Q∞ of the raw sum from `hull`, a hull of snapped Minkowski points holding the origin strictly
-/// inside, when the certified bracket is narrow enough; `raw_point` names the raw sum behind a
-/// hull input.
-fn certify_sum(
-    hull: &Hull<6>,
-    cones: &SnappedCones,
-    raw_sets: &[Vec<[f64; 6]>],
-    mut raw_point: impl FnMut(usize) -> Option<[f64; 6]>,
-    scratch: &mut certify::BracketScratch,
-) -> Option<Quality> {
-    let (delta, error) = raw_bounds(cones, raw_sets);
-    let mut side = RawSide {
-        point: &mut raw_point,
-        error,
-        delta,
-        support: |u: &[f64; 6]| sum_support_with_error(raw_sets, u),
-    };
-    let b = certify::bracket(hull, &mut side, &mut UnitBall, scratch)?;
-    let scale = raw_scale(raw_sets);
-    let value = b.value_within(scale)?;
-    let vertices = hull.facet(b.facet).vertices();
-    let deciding = vertices.iter().filter_map(|&v| raw_point(v));
-    let quality = Quality::new(value, deciding, hull.stats());
-    Some(
-        quality
-            .with_ties(hull, b.facet, scale, delta + error, Some(&*scratch))
-            .banded(scale),
-    )
 }
 
 /// 42 support points of the sum of `sets` along [`SEED_DIRECTIONS`], without repeats.
@@ -346,222 +308,354 @@ fn seed_points(seeds: &mut Vec<[f64; 6]>, mut support: impl FnMut(&[f64; 6]) -> 
     }
 }
 
-/// Q∞ of the grasp behind `cones` by the partial hull over the implicit Minkowski sum.
-///
-/// In order, each step only when the previous one cannot decide:
+/// Q∞'s wrench set for the partial method: the implicit Minkowski sum, answered through its
+/// support function (never materialised). The cascade's steps ([`pipeline`]) on it:
 /// 1. with the zero wrench, GJK on the *union* of the raw cone edges: a certified separation
 ///    means the grasp is not force closure, and then Q∞ = 0 exactly (the origin, a point of the
-///    sum, is on its boundary: the two hulls have the same force closure);
-/// 2. GJK on the raw sum's support function: a certified separation gives −distance;
-/// 3. contacts whose raw wrenches lie within a slab through the origin thin enough that the sum
+///    sum, is on its boundary: the two hulls have the same force closure); then GJK on the raw
+///    sum's support function, seeded with its support points along 42 fixed directions;
+/// 2. contacts whose raw wrenches lie within a slab through the origin thin enough that the sum
 ///    is within [`FLAT`] of its scale of a hyperplane ([`crate::grasp::flatness`]: two contacts,
 ///    contacts on a line or at one or two points) are not force closure: −distance by GJK run to
 ///    convergence, exactly 0 with the zero wrench (the origin is then a point of the flat sum);
-/// 4. the exact partial hull of the *snapped* sum, seeded with its support points along 42 fixed
-///    directions, its answer certified on the raw sum ([`certify`]);
+/// 3. the exact partial hull of the *snapped* sum, seeded as GJK, certified on the raw sum;
+/// 4. with the zero wrench, a boundary grasp's value lies in [0, the upper bound along the raw
+///    simplex of the nearest facet];
 /// 5. the exact partial hull of the raw sum (points summed in `f64`, within `1e−15` of the scale
-///    of the exact sums), when the certificate cannot decide;
-/// 6. a raw sum spanning fewer than six dimensions (no hull) is not force closure: its distance
-///    by GJK, or by Wolfe's algorithm over the materialised sum should GJK not converge.
-pub(super) fn partial(
-    cones: &SnappedCones,
+///    of the exact sums); a raw sum spanning fewer than six dimensions is flat, as in step 2.
+pub(super) struct ImplicitSum<'a> {
+    cones: &'a SnappedCones,
     with_zero_wrench: bool,
-    buffers: &mut MinkowskiBuffers,
-) -> Result<Quality, QualityError> {
-    let started = Instant::now();
-    let MinkowskiBuffers {
-        nearest,
-        seeds,
-        gjk,
-        hull,
-        bracket,
-        flatness,
-    } = buffers;
-    let source = nearest.source_mut();
-    source.fill(cones, with_zero_wrench, false);
-    let scale = source.raw_scale();
-    if with_zero_wrench {
-        let largest = source
-            .union
-            .iter()
-            .fold(0.0, |m: f64, w| m.max(dot(*w, *w).sqrt()));
-        let start = [source.raw_union_support(&[1.0, 0.0, 0.0, 0.0, 0.0, 0.0])];
-        let verdict = gjk.run(
-            &mut SupportFn(|v: &[f64; 6]| source.raw_union_support(v)),
-            largest,
-            &start,
-            GJK_ITERATIONS,
-            GJK_TOUCHING,
-        );
-        if let GjkVerdict::Separated { inserted, .. } = verdict {
-            let origin = std::iter::once([0.0; 6]);
-            let stats = no_hull_stats(1 + inserted, started);
-            return Ok(Quality::new(0.0, origin, stats).banded(scale));
+    search: &'a mut MinkowskiSearch,
+    scale: f64,
+}
+
+impl<'a> ImplicitSum<'a> {
+    /// The sum of `cones`' contact sets (with the zero wrench if asked), in `search`'s buffers.
+    pub(super) fn new(
+        cones: &'a SnappedCones,
+        with_zero_wrench: bool,
+        search: &'a mut MinkowskiSearch,
+    ) -> Self {
+        let source = search.nearest.source_mut();
+        source.fill(cones, with_zero_wrench, false);
+        let scale = source.raw_scale();
+        ImplicitSum {
+            cones,
+            with_zero_wrench,
+            search,
+            scale,
         }
     }
-    seed_points(seeds, |d| sum_support(&source.raw_sets, d));
-    let support = |v: &[f64; 6]| sum_support(&source.raw_sets, v);
-    if let GjkVerdict::Separated { distance, inserted } = gjk.run(
-        &mut SupportFn(support),
-        scale,
-        seeds,
-        GJK_ITERATIONS,
-        GJK_TOUCHING,
-    ) {
-        let stats = no_hull_stats(seeds.len() + inserted, started);
-        let face = gjk.face().iter().copied();
-        return Ok(Quality::new(-distance, face, stats).banded(scale));
+
+    fn raw_sets(&self) -> &[Vec<[f64; 6]>] {
+        &self.search.nearest.source().raw_sets
     }
-    if flat_contacts(&source.raw_sets, scale, flatness) {
-        let q = flat_sum(cones, with_zero_wrench, support, scale, seeds, gjk, started)?;
-        return Ok(q.banded(scale));
+
+    /// The seeds from the raw sum's support points.
+    fn raw_seeds(&mut self) {
+        let MinkowskiSearch { nearest, seeds } = &mut *self.search;
+        let raw_sets = &nearest.source().raw_sets;
+        seed_points(seeds, |d| sum_support(raw_sets, d));
     }
-    seed_points(seeds, |d| {
-        source.support_point(d).expect("a contact has cone edges")
-    });
-    let h = hull.get_or_insert_with(Hull::empty);
-    let snapped = h.rebuild_with_strategy(seeds, &mut *nearest);
-    // The source keeps its contract (its points are checked exactly, and within the seeds'
-    // range); should it not, the raw sum below decides.
-    if let Ok(Ok(result)) = snapped {
+
+    /// The partial hull of the sum the source holds, seeded from its own support points.
+    fn hull<'h>(
+        &mut self,
+        hull: &'h mut Option<Hull<6>>,
+    ) -> Result<Result<Built<'h>, SourceError<6>>, HullError> {
+        let MinkowskiSearch { nearest, seeds } = &mut *self.search;
         let source = nearest.source_mut();
-        let raw_point = |v: usize| source.raw_point(&h.point(v));
-        if result.signed_distance > 0.0
-            && let Some(quality) = certify_sum(h, cones, &source.raw_sets, raw_point, bracket)
-        {
-            return Ok(quality);
-        }
-        // A boundary grasp with the zero wrench: the origin, a point of the sum, is within δ of
-        // the snapped surface. The sum's value lies in [0, the upper bound along the raw simplex
-        // of the nearest facet]; when that is within `BOUNDARY` of the scale, its midpoint is
-        // the value to the accuracy promised near zero (the raw sum's exact hull would be
-        // slivers, facets the floating-point filter cannot decide: docs/benchmarks.md, "Issue 11").
-        if with_zero_wrench {
-            let raw_point = |v: usize| source.raw_point(&h.point(v));
-            let (delta, error) = raw_bounds(cones, &source.raw_sets);
-            let raw_sets = &source.raw_sets;
-            let mut side = RawSide {
-                point: raw_point,
-                error,
-                delta,
-                support: |u: &[f64; 6]| sum_support_with_error(raw_sets, u),
-            };
-            if let Some(high) =
-                certify::upper_bound_at(h, result.closest_facet, &mut side, &mut UnitBall)
-                && high <= BOUNDARY * scale
-            {
-                let origin = std::iter::once([0.0; 6]);
-                return Ok(Quality::new(0.5 * high.max(0.0), origin, h.stats()).banded(scale));
+        seed_points(seeds, |d| {
+            source.support_point(d).expect("a contact has cone edges")
+        });
+        let h = hull.get_or_insert_with(Hull::empty);
+        match h.rebuild_with_strategy(seeds, &mut *nearest) {
+            Ok(Ok(result)) => Ok(Ok(Some((h, result)))),
+            Ok(Err(e)) => Ok(Err(e)),
+            Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
+                Ok(Ok(None))
             }
+            Err(e) => Err(e),
         }
-    }
-    // The exact engine on the raw sum.
-    let source = nearest.source_mut();
-    source.fill(cones, with_zero_wrench, true);
-    seed_points(seeds, |d| {
-        source.support_point(d).expect("a contact has cone edges")
-    });
-    match h.rebuild_with_strategy(seeds, &mut *nearest) {
-        Ok(Ok(result)) => Ok(Quality::new(
-            result.signed_distance,
-            result.closest_facet_vertices.iter().map(|&v| h.point(v)),
-            result.stats,
-        )
-        .with_ties(h, result.closest_facet, scale, 0.0, None)
-        .banded(scale)),
-        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
-            let source = nearest.source_mut();
-            let support = |v: &[f64; 6]| sum_support(&source.raw_sets, v);
-            let q = flat_sum(cones, with_zero_wrench, support, scale, seeds, gjk, started)?;
-            Ok(q.banded(scale))
-        }
-        Err(e) => Err(QualityError::Hull(e)),
-        // The source returns only points strictly beyond (exact test) and within its seeds'
-        // range; a broken promise is reported, not assumed away.
-        Ok(Err(e)) => Err(QualityError::Source(e)),
     }
 }
 
-/// Q∞ by a full method: the full hull of the materialised snapped sum, certified on the raw sum
-/// when it holds the origin; otherwise GJK on the raw sum, then the full hull of the materialised
-/// raw sum. `out` is the buffer for the materialised points.
-pub(super) fn full(
-    cones: &SnappedCones,
-    with_zero_wrench: bool,
-    method: super::Method,
-    out: &mut Vec<[f64; 6]>,
-    buffers: &mut HullBuffers,
-    started: Instant,
-) -> Result<Quality, QualityError> {
-    let mut raw_sets = Vec::new();
-    fill_sets(&mut raw_sets, cones, with_zero_wrench, true);
-    let scale = raw_scale(&raw_sets);
-    if method == super::Method::Qhull {
-        if !cfg!(feature = "qhull") {
-            return Err(QualityError::QhullUnavailable);
-        }
-        materialise(cones, with_zero_wrench, true, out)?;
-        return Ok(super::qhull_q1(out, started)?.banded(scale));
+impl WrenchSet for ImplicitSum<'_> {
+    fn scale(&self) -> f64 {
+        self.scale
     }
-    let _ = method;
-    if flat_contacts(&raw_sets, scale, &mut buffers.flatness) {
-        let mut seeds = Vec::new();
-        seed_points(&mut seeds, |d| sum_support(&raw_sets, d));
-        let support = |v: &[f64; 6]| sum_support(&raw_sets, v);
-        let q = flat_sum(
-            cones,
-            with_zero_wrench,
-            support,
-            scale,
-            &seeds,
-            &mut buffers.gjk,
+
+    fn separated(&mut self, gjk: &mut Gjk<6>, started: Instant) -> Option<Quality> {
+        if self.with_zero_wrench {
+            let source = self.search.nearest.source();
+            let largest = source
+                .union
+                .iter()
+                .fold(0.0, |m: f64, w| m.max(dot(*w, *w).sqrt()));
+            let start = [source.raw_union_support(&[1.0, 0.0, 0.0, 0.0, 0.0, 0.0])];
+            let verdict = gjk.run(
+                &mut SupportFn(|v: &[f64; 6]| source.raw_union_support(v)),
+                largest,
+                &start,
+                GJK_ITERATIONS,
+                GJK_TOUCHING,
+            );
+            if let GjkVerdict::Separated { inserted, .. } = verdict {
+                let origin = std::iter::once([0.0; 6]);
+                return Some(Quality::new(
+                    0.0,
+                    origin,
+                    no_hull_stats(1 + inserted, started),
+                ));
+            }
+        }
+        self.raw_seeds();
+        separated_sum(
+            self.raw_sets(),
+            &self.search.seeds,
+            self.scale,
+            gjk,
             started,
-        )?;
-        return Ok(q.banded(scale));
+        )
     }
-    materialise(cones, with_zero_wrench, false, out)?;
-    let m = raw_sets.len();
-    // Point i of the odometer order: contact c's choice is digit c (most significant first), in
-    // the mixed radix of the sets' sizes (a soft contact's set is twice a hard one's).
-    let tuple_sum = |i: usize| {
-        let mut rest = i;
-        let mut digits = [0usize; 64];
-        for c in (0..m.min(64)).rev() {
-            let size = raw_sets[c].len();
-            digits[c] = rest % size;
-            rest /= size;
-        }
-        Some(sum(&raw_sets, digits[..m.min(64)].iter().copied()))
-    };
-    let strategy = crate::FarthestPoint::new();
-    let snapped = HullBuffers::build(&mut buffers.hull, out, None, strategy);
-    // The full hull's work, reported by a GJK answer too (as for Q1's full method).
-    let mut full_stats = None;
-    if let Ok((h, ())) = snapped {
-        full_stats = Some(h.stats());
-        if h.facets()
-            .all(|(id, _)| h.side_of(id, &[0.0; 6]) == Sign::Negative)
-            && let Some(quality) = certify_sum(h, cones, &raw_sets, tuple_sum, &mut buffers.bracket)
-        {
-            return Ok(quality);
+
+    fn is_flat(&mut self, flatness: &mut Flatness) -> bool {
+        flat_contacts(self.raw_sets(), self.scale, flatness)
+    }
+
+    fn flat_value(&mut self, gjk: &mut Gjk<6>, started: Instant) -> Result<Quality, QualityError> {
+        self.raw_seeds();
+        let raw_sets = &self.search.nearest.source().raw_sets;
+        let support = |v: &[f64; 6]| sum_support(raw_sets, v);
+        let seeds = &self.search.seeds;
+        flat_sum(
+            self.cones,
+            self.with_zero_wrench,
+            support,
+            self.scale,
+            seeds,
+            gjk,
+            started,
+        )
+    }
+
+    fn snapped_hull<'h>(
+        &mut self,
+        hull: &'h mut Option<Hull<6>>,
+        _: &mut ClosestToOrigin<6>,
+        _: Expansion,
+    ) -> Result<Built<'h>, QualityError> {
+        // The source keeps its contract (its points are checked exactly, and within the seeds'
+        // range); should it not, or should the engine refuse the snapped sum, the raw sum decides.
+        Ok(self.hull(hull).ok().and_then(Result::ok).flatten())
+    }
+
+    fn raw_hull<'h>(
+        &mut self,
+        hull: &'h mut Option<Hull<6>>,
+        _: &mut ClosestToOrigin<6>,
+        _: Expansion,
+    ) -> Result<Built<'h>, QualityError> {
+        let source = self.search.nearest.source_mut();
+        source.fill(self.cones, self.with_zero_wrench, true);
+        match self.hull(hull) {
+            Ok(Ok(built)) => Ok(built),
+            // The source returns only points strictly beyond (exact test) and within its
+            // seeds' range; a broken promise is reported, not assumed away.
+            Ok(Err(e)) => Err(QualityError::Source(e)),
+            Err(e) => Err(QualityError::Hull(e)),
         }
     }
-    let mut seeds = Vec::new();
-    seed_points(&mut seeds, |d| sum_support(&raw_sets, d));
-    let support = |v: &[f64; 6]| sum_support(&raw_sets, v);
-    if let GjkVerdict::Separated { distance, inserted } = buffers.gjk.run(
+
+    fn raw_point(&self, hull: &Hull<6>, v: usize) -> Option<[f64; 6]> {
+        self.search.nearest.source().raw_point(&hull.point(v))
+    }
+
+    fn raw_bounds(&self) -> (f64, f64) {
+        raw_bounds(self.cones, self.raw_sets())
+    }
+
+    fn raw_support(&self, u: &[f64; 6]) -> (f64, f64) {
+        sum_support_with_error(self.raw_sets(), u)
+    }
+
+    fn outside_bound(&mut self) -> Option<Quality> {
+        zero_wrench_bound(self.with_zero_wrench)
+    }
+}
+
+/// With the zero wrench, the origin is a point of the sum: Q∞ ≥ 0.
+fn zero_wrench_bound(with_zero_wrench: bool) -> Option<Quality> {
+    let origin = std::iter::once([0.0; 6]);
+    with_zero_wrench.then(|| Quality::new(0.0, origin, Stats::default()))
+}
+
+/// GJK on the support function of the sum of `raw_sets`, from `seeds`: the quality when the sum
+/// is certified not to hold the origin.
+fn separated_sum(
+    raw_sets: &[Vec<[f64; 6]>],
+    seeds: &[[f64; 6]],
+    scale: f64,
+    gjk: &mut Gjk<6>,
+    started: Instant,
+) -> Option<Quality> {
+    let support = |v: &[f64; 6]| sum_support(raw_sets, v);
+    match gjk.run(
         &mut SupportFn(support),
         scale,
-        &seeds,
+        seeds,
         GJK_ITERATIONS,
         GJK_TOUCHING,
     ) {
-        let stats = full_stats.unwrap_or_else(|| no_hull_stats(seeds.len() + inserted, started));
-        let face = buffers.gjk.face().iter().copied();
-        return Ok(Quality::new(-distance, face, stats).banded(scale));
+        GjkVerdict::Separated { distance, inserted } => {
+            let stats = no_hull_stats(seeds.len() + inserted, started);
+            Some(Quality::new(-distance, gjk.face().iter().copied(), stats))
+        }
+        _ => None,
     }
+}
+
+/// Q∞'s wrench set for the full method: the Minkowski sum materialised (up to
+/// [`MINKOWSKI_MATERIALISE_LIMIT`] points), snapped for the search and raw for the exact hull,
+/// in the odometer order of [`materialise`].
+pub(super) struct MaterialisedSum<'a> {
+    cones: &'a SnappedCones,
+    with_zero_wrench: bool,
+    raw_sets: Vec<Vec<[f64; 6]>>,
+    /// The materialised points: snapped, then raw once [`WrenchSet::raw_hull`] ran.
+    out: &'a mut Vec<[f64; 6]>,
+    out_is_raw: bool,
+    seeds: Vec<[f64; 6]>,
+    scale: f64,
+}
+
+impl<'a> MaterialisedSum<'a> {
+    /// The sum of `cones`' contact sets (with the zero wrench if asked), materialised in `out`.
+    pub(super) fn new(
+        cones: &'a SnappedCones,
+        with_zero_wrench: bool,
+        out: &'a mut Vec<[f64; 6]>,
+    ) -> Self {
+        let mut raw_sets = Vec::new();
+        fill_sets(&mut raw_sets, cones, with_zero_wrench, true);
+        let scale = raw_scale(&raw_sets);
+        MaterialisedSum {
+            cones,
+            with_zero_wrench,
+            raw_sets,
+            out,
+            out_is_raw: false,
+            seeds: Vec::new(),
+            scale,
+        }
+    }
+
+    fn raw_seeds(&mut self) {
+        let raw_sets = &self.raw_sets;
+        seed_points(&mut self.seeds, |d| sum_support(raw_sets, d));
+    }
+}
+
+impl WrenchSet for MaterialisedSum<'_> {
+    fn scale(&self) -> f64 {
+        self.scale
+    }
+
+    fn separated(&mut self, gjk: &mut Gjk<6>, started: Instant) -> Option<Quality> {
+        self.raw_seeds();
+        separated_sum(&self.raw_sets, &self.seeds, self.scale, gjk, started)
+    }
+
+    fn is_flat(&mut self, flatness: &mut Flatness) -> bool {
+        flat_contacts(&self.raw_sets, self.scale, flatness)
+    }
+
+    fn flat_value(&mut self, gjk: &mut Gjk<6>, started: Instant) -> Result<Quality, QualityError> {
+        if self.out_is_raw {
+            // The raw sum, materialised and without a hull: Wolfe's algorithm over its points.
+            return Ok(degenerate(self.out, started));
+        }
+        self.raw_seeds();
+        let raw_sets = &self.raw_sets;
+        let support = |v: &[f64; 6]| sum_support(raw_sets, v);
+        let seeds = &self.seeds;
+        flat_sum(
+            self.cones,
+            self.with_zero_wrench,
+            support,
+            self.scale,
+            seeds,
+            gjk,
+            started,
+        )
+    }
+
+    fn snapped_hull<'h>(
+        &mut self,
+        hull: &'h mut Option<Hull<6>>,
+        nearest: &mut ClosestToOrigin<6>,
+        expansion: Expansion,
+    ) -> Result<Built<'h>, QualityError> {
+        materialise(self.cones, self.with_zero_wrench, false, self.out)?;
+        self.out_is_raw = false;
+        Ok(nearest_hull(hull, self.out, None, nearest, expansion).unwrap_or(None))
+    }
+
+    fn raw_hull<'h>(
+        &mut self,
+        hull: &'h mut Option<Hull<6>>,
+        nearest: &mut ClosestToOrigin<6>,
+        expansion: Expansion,
+    ) -> Result<Built<'h>, QualityError> {
+        materialise(self.cones, self.with_zero_wrench, true, self.out)?;
+        self.out_is_raw = true;
+        nearest_hull(hull, self.out, None, nearest, expansion).map_err(QualityError::Hull)
+    }
+
+    fn raw_point(&self, _: &Hull<6>, v: usize) -> Option<[f64; 6]> {
+        // Point v of the odometer order: contact c's choice is digit c (most significant
+        // first), in the mixed radix of the sets' sizes (a soft contact's set is twice a hard
+        // one's).
+        let m = self.raw_sets.len();
+        let mut rest = v;
+        let mut digits = [0usize; crate::grasp::MAX_CONTACTS];
+        for c in (0..m).rev() {
+            let size = self.raw_sets[c].len();
+            digits[c] = rest % size;
+            rest /= size;
+        }
+        (rest == 0).then(|| sum(&self.raw_sets, digits[..m].iter().copied()))
+    }
+
+    fn raw_bounds(&self) -> (f64, f64) {
+        raw_bounds(self.cones, &self.raw_sets)
+    }
+
+    fn raw_support(&self, u: &[f64; 6]) -> (f64, f64) {
+        sum_support_with_error(&self.raw_sets, u)
+    }
+
+    fn outside_bound(&mut self) -> Option<Quality> {
+        zero_wrench_bound(self.with_zero_wrench)
+    }
+}
+
+/// Q∞ by Qhull (a baseline outside the cascade): Qhull's hull of the materialised raw sum.
+pub(super) fn qhull(
+    cones: &SnappedCones,
+    with_zero_wrench: bool,
+    out: &mut Vec<[f64; 6]>,
+    started: Instant,
+) -> Result<Quality, QualityError> {
+    if !cfg!(feature = "qhull") {
+        return Err(QualityError::QhullUnavailable);
+    }
+    let mut raw_sets = Vec::new();
+    fill_sets(&mut raw_sets, cones, with_zero_wrench, true);
+    let scale = raw_scale(&raw_sets);
     materialise(cones, with_zero_wrench, true, out)?;
-    Ok(full_q1(out, None, started, buffers)?.banded(scale))
+    Ok(super::qhull_q1(out, started)?.banded(scale))
 }
 
 /// Whether the contacts' raw wrench sets (zero wrench or not) lie within a slab through the

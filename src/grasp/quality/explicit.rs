@@ -1,0 +1,148 @@
+//! Q1's wrench set for the cascade: the explicit union of the caller's wrenches, with or without
+//! a snapped copy to search on.
+
+use super::{Quality, QualityError, certified_outside, degenerate, no_hull_stats};
+use crate::geometry::{Gjk, largest_norm, min_norm_point, min_norm_point_accurate};
+use crate::grasp::certify::support_with_error;
+use crate::grasp::flatness::{FLAT, Flatness};
+use crate::grasp::pipeline::{Built, Expansion, WrenchSet, build_hull};
+use crate::strategy::{ClosestToOrigin, Complete};
+use crate::{Hull, HullError};
+use std::time::Instant;
+
+/// A Q1 wrench set: the caller's raw wrenches and, optionally, the snapped ones the search runs
+/// on (same indexing), each contact's pyramid an exact 2-D flat, within `delta` of the raw ones.
+pub(in crate::grasp) struct Explicit<'a> {
+    raw: &'a [[f64; 6]],
+    snapped: Option<Snapped<'a>>,
+    scale: f64,
+}
+
+/// The snapped wrenches, the contact of each (its pyramid, an exact flat) and `δ`.
+#[derive(Clone, Copy)]
+struct Snapped<'a> {
+    points: &'a [[f64; 6]],
+    pyramids: &'a [u32],
+    delta: f64,
+}
+
+impl<'a> Explicit<'a> {
+    /// The caller's wrenches `raw`, searched as they are (exact on exactly these numbers).
+    pub(in crate::grasp) fn raw(raw: &'a [[f64; 6]]) -> Self {
+        Explicit {
+            raw,
+            snapped: None,
+            scale: largest_norm(raw),
+        }
+    }
+
+    /// The caller's wrenches `raw`, searched on their snapped copy `snapped` (same indexing;
+    /// `pyramids` names each wrench's contact; within `delta` of the raw ones).
+    pub(in crate::grasp) fn snapped(
+        raw: &'a [[f64; 6]],
+        snapped: &'a [[f64; 6]],
+        pyramids: &'a [u32],
+        delta: f64,
+    ) -> Self {
+        Explicit {
+            raw,
+            snapped: Some(Snapped {
+                points: snapped,
+                pyramids,
+                delta,
+            }),
+            scale: largest_norm(raw),
+        }
+    }
+}
+
+/// The hull of `points` grown by `expansion` in `hull`'s arena; `flats`, when given, names the
+/// contact of every point, each contact's points lying *exactly* in one 2-D affine plane (see
+/// [`build_hull`]). `Ok(None)` when the points span fewer than six dimensions.
+pub(in crate::grasp) fn nearest_hull<'h>(
+    hull: &'h mut Option<Hull<6>>,
+    points: &[[f64; 6]],
+    flats: Option<&[u32]>,
+    nearest: &mut ClosestToOrigin<6>,
+    expansion: Expansion,
+) -> Result<Built<'h>, HullError> {
+    let built = match expansion {
+        Expansion::Partial => build_hull(hull, points, flats, nearest),
+        Expansion::Full => build_hull(hull, points, flats, Complete::new(nearest)),
+    };
+    match built {
+        Ok(built) => Ok(Some(built)),
+        Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => Ok(None),
+        Err(e) => Err(e),
+    }
+}
+
+impl WrenchSet for Explicit<'_> {
+    fn scale(&self) -> f64 {
+        self.scale
+    }
+
+    fn separated(&mut self, gjk: &mut Gjk<6>, started: Instant) -> Option<Quality> {
+        let (distance, inserted) = certified_outside(self.raw, gjk)?;
+        let stats = no_hull_stats(1 + inserted, started);
+        Some(Quality::new(-distance, gjk.face().iter().copied(), stats))
+    }
+
+    fn is_flat(&mut self, flatness: &mut Flatness) -> bool {
+        flatness.slab(self.raw.iter().copied()) <= FLAT * self.scale
+    }
+
+    fn flat_value(&mut self, _: &mut Gjk<6>, started: Instant) -> Result<Quality, QualityError> {
+        Ok(degenerate(self.raw, started))
+    }
+
+    fn snapped_hull<'h>(
+        &mut self,
+        hull: &'h mut Option<Hull<6>>,
+        nearest: &mut ClosestToOrigin<6>,
+        expansion: Expansion,
+    ) -> Result<Built<'h>, QualityError> {
+        let Some(s) = self.snapped else {
+            return Ok(None);
+        };
+        // A snapped hull the engine refuses leaves the raw one to decide.
+        Ok(nearest_hull(hull, s.points, Some(s.pyramids), nearest, expansion).unwrap_or(None))
+    }
+
+    fn raw_hull<'h>(
+        &mut self,
+        hull: &'h mut Option<Hull<6>>,
+        nearest: &mut ClosestToOrigin<6>,
+        expansion: Expansion,
+    ) -> Result<Built<'h>, QualityError> {
+        nearest_hull(hull, self.raw, None, nearest, expansion).map_err(QualityError::Hull)
+    }
+
+    fn raw_point(&self, _: &Hull<6>, v: usize) -> Option<[f64; 6]> {
+        self.raw.get(v).copied()
+    }
+
+    fn raw_bounds(&self) -> (f64, f64) {
+        (self.snapped.map_or(0.0, |s| s.delta), 0.0)
+    }
+
+    fn raw_support(&self, u: &[f64; 6]) -> (f64, f64) {
+        support_with_error(self.raw, u)
+    }
+
+    fn outside_bound(&mut self) -> Option<Quality> {
+        // −(the distance from the origin to the hull), by Wolfe's algorithm with the accurate
+        // residual (plain floating point leaves ~1e−14 of the scale here).
+        let raw = self.raw;
+        let rough = min_norm_point(raw.len(), |i| raw[i], &[0.0; 6]);
+        let nearest = min_norm_point_accurate(raw.len(), |i| raw[i], &[0.0; 6], rough.support());
+        // Its accuracy: 1e−15 of itself plus 1e−30 of the set's size; rounded up generously.
+        let distance = nearest.distance * (1.0 + 1e-14) + 1e-28 * self.scale;
+        let face = nearest.support().iter().map(|&i| raw[i]);
+        Some(Quality::new(
+            -distance,
+            face,
+            crate::strategy::Stats::default(),
+        ))
+    }
+}
