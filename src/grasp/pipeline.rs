@@ -3,7 +3,8 @@
 //!
 //! Each step runs only when the ones before it cannot decide:
 //!
-//! 1. **Separation** (partial method first; the full method after its hull): GJK on the raw set's
+//! 1. **Separation** (partial method first; the full method after its snapped hull's
+//!    certificate): GJK on the raw set's
 //!    support function. A certified separation means the grasp is not force closure and gives
 //!    −(the distance), from support points alone.
 //! 2. **Flatness**: a raw set within [`FLAT`](super::flatness::FLAT) of a hyperplane through the
@@ -23,12 +24,21 @@
 //! measured against). What differs between the explicit union (Q1), the implicit Minkowski sum
 //! (Q∞, partial) and the materialised sum (Q∞, full) is only how each step reaches the points:
 //! the [`WrenchSet`] methods.
+//!
+//! Q_OWS (`grasp/ows/evaluate.rs`) runs the same steps on the same [`Explicit`] set with the
+//! disturbances' gauge in place of the unit ball: steps 1 and 2 through the set's methods (no
+//! value: not force closure), step 3 with its own search (`OwsInflation`, or brute force) certified
+//! by [`bracket_on`], and, when that cannot decide, this cascade for Q1's verdict before its
+//! search on the raw wrenches. Its value type (`OwsQuality`: `None` when not force closure) is
+//! not yet [`Quality`], which is why it is not one more [`WrenchSet`] caller of [`evaluate`].
+//!
+//! [`Explicit`]: super::quality::Explicit
 
-use super::certify::{self, BracketScratch, RawSide, UnitBall, bracket};
+use super::certify::{self, Bracket, BracketScratch, Gauge, RawSide, UnitBall, bracket};
 use super::flatness::Flatness;
 use super::quality::{Quality, QualityError};
 use crate::geometry::Gjk;
-use crate::strategy::{ClosestToOrigin, DistanceResult, Stats};
+use crate::strategy::{ClosestToOrigin, DistanceResult};
 use crate::{FacetId, Hull, HullError, Strategy};
 use std::time::Instant;
 
@@ -174,27 +184,25 @@ fn cascade<W: WrenchSet>(
     if set.is_flat(flatness) {
         return set.flat_value(gjk, started);
     }
-    // The full hull's work, reported whichever step gives the value.
-    let mut full_stats: Option<Stats> = None;
-    if let Some((h, result)) = set.snapped_hull(hull, nearest, expansion)? {
-        if expansion == Expansion::Full {
-            full_stats = Some(h.stats());
-        }
-        if result.signed_distance > 0.0
-            && let Some(quality) = certified(set, h, scratch)
-        {
-            return Ok(quality);
-        }
-        if let Some(quality) = boundary(set, h, result.closest_facet) {
-            return Ok(quality);
-        }
+    let snapped = set.snapped_hull(hull, nearest, expansion)?;
+    if let Some((h, result)) = &snapped
+        && result.signed_distance > 0.0
+        && let Some(quality) = certified(set, h, scratch)
+    {
+        return Ok(quality);
     }
     if expansion == Expansion::Full
         && let Some(mut quality) = set.separated(gjk, started)
     {
-        if let Some(stats) = full_stats {
-            quality.stats = stats;
+        // The full hull's work, whichever step gives the value.
+        if let Some((h, _)) = &snapped {
+            quality.stats = h.stats();
         }
+        return Ok(quality);
+    }
+    if let Some((h, result)) = &snapped
+        && let Some(quality) = boundary(set, h, result.closest_facet)
+    {
         return Ok(quality);
     }
     match set.raw_hull(hull, nearest, expansion)? {
@@ -209,17 +217,33 @@ fn cascade<W: WrenchSet>(
 }
 
 /// The bracket's side of the raw set `$set` for the hull `$hull`, for [`certify`]'s functions.
+/// `$widen` is added to `δ`.
 macro_rules! raw_side {
-    ($set:expr, $hull:expr) => {{
+    ($set:expr, $hull:expr, $widen:expr) => {{
         let (set, hull) = ($set, $hull);
         let (delta, error) = set.raw_bounds();
         RawSide {
             point: move |v: usize| set.raw_point(hull, v),
             error,
-            delta,
+            delta: delta + $widen,
             support: move |u: &[f64; 6]| set.raw_support(u),
         }
     }};
+}
+
+/// The rigorous bracket of the metric of `gauge` on `set`'s raw points from `hull`, a hull of
+/// its snapped copy holding the origin strictly inside ([`certify::bracket`]); `widen` is added
+/// to the snapping bound `δ` (Q_OWS asks the surface to keep the raw Q1 above the force-closure
+/// band too). The step-3 certificate of every metric: Q1 and Q∞ with the unit ball, Q_OWS with
+/// the disturbances.
+pub(in crate::grasp) fn bracket_on<W: WrenchSet, G: Gauge>(
+    set: &W,
+    hull: &Hull<6>,
+    gauge: &mut G,
+    widen: f64,
+    scratch: &mut BracketScratch,
+) -> Option<Bracket> {
+    bracket(hull, &mut raw_side!(set, hull, widen), gauge, scratch)
 }
 
 /// Step 3: the metric of the raw set from `hull`, a snapped hull holding the origin strictly
@@ -229,7 +253,7 @@ fn certified<W: WrenchSet>(
     hull: &Hull<6>,
     scratch: &mut BracketScratch,
 ) -> Option<Quality> {
-    let b = bracket(hull, &mut raw_side!(set, hull), &mut UnitBall, scratch)?;
+    let b = bracket_on(set, hull, &mut UnitBall, 0.0, scratch)?;
     let scale = set.scale();
     let value = b.value_within(scale)?;
     let vertices = hull.facet(b.facet).vertices();
@@ -245,7 +269,7 @@ fn certified<W: WrenchSet>(
 /// [`BOUNDARY`] of the scale: their midpoint, never force closure.
 fn boundary<W: WrenchSet>(set: &mut W, hull: &Hull<6>, id: FacetId) -> Option<Quality> {
     let scale = set.scale();
-    let high = certify::upper_bound_at(hull, id, &mut raw_side!(&*set, hull), &mut UnitBall)?;
+    let high = certify::upper_bound_at(hull, id, &mut raw_side!(&*set, hull, 0.0), &mut UnitBall)?;
     if high > BOUNDARY * scale {
         return None;
     }

@@ -72,7 +72,7 @@ mod minkowski;
 pub(in crate::grasp) mod ties;
 mod vocabulary;
 pub use error::QualityError;
-use explicit::Explicit;
+pub(in crate::grasp) use explicit::Explicit;
 pub(in crate::grasp) use explicit::nearest_hull;
 pub use minkowski::MINKOWSKI_MATERIALISE_LIMIT;
 pub use vocabulary::{Method, Metric, NameError};
@@ -468,23 +468,6 @@ pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Quality, 
         }
         None => qhull_q1(wrenches, started)?.banded(largest_norm(wrenches)),
     };
-    quality.stats.elapsed = started.elapsed();
-    Ok(quality)
-}
-
-/// Q1 of the raw wrenches `raw` by the partial method, searched on their snapped copy
-/// `snapped` (same indexing, `pyramids` naming each wrench's contact, within `delta` of the raw
-/// ones) and certified on `raw`, as [`Evaluator::evaluate`] does; banded.
-pub(in crate::grasp) fn q1_certified(
-    raw: &[[f64; 6]],
-    snapped: &[[f64; 6]],
-    pyramids: &[u32],
-    delta: f64,
-    buffers: &mut Buffers,
-) -> Result<Quality, QualityError> {
-    let started = Instant::now();
-    let mut set = Explicit::snapped(raw, snapped, pyramids, delta);
-    let mut quality = pipeline::evaluate(&mut set, Expansion::Partial, buffers, started)?;
     quality.stats.elapsed = started.elapsed();
     Ok(quality)
 }

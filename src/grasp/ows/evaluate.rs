@@ -2,17 +2,15 @@
 
 use super::ObjectWrenchSpace;
 use crate::geometry::vector::dot;
-use crate::geometry::{Gjk, SupportIndex, largest_norm};
+use crate::geometry::{Gjk, SupportIndex};
 use crate::grasp::Grasp;
-use crate::grasp::certify::{
-    BracketScratch, Disturbances, RawSide, bracket, candidates, support_with_error,
-};
-use crate::grasp::flatness::{FLAT, Flatness};
-use crate::grasp::pipeline::{Buffers, build_hull};
+use crate::grasp::certify::{BracketScratch, Disturbances, candidates};
+use crate::grasp::flatness::Flatness;
+use crate::grasp::pipeline::{self, Buffers, Expansion, WrenchSet, build_hull};
 use crate::grasp::quality::ties::on_other_planes;
 use crate::grasp::quality::{
-    FORCE_CLOSURE_EPSILON, Method, Metric, QualityError, certified_outside, check_wrenches,
-    find_or_make, q1_certified, q1_of_wrenches,
+    Explicit, FORCE_CLOSURE_EPSILON, Method, Metric, QualityError, check_wrenches, find_or_make,
+    q1_of_wrenches,
 };
 use crate::grasp::snap::{SnappedCones, pyramid_labels, snapped_union};
 use crate::hull::{FacetId, Hull, HullError};
@@ -148,11 +146,8 @@ impl OwsEvaluator {
         let edges = grasp.friction().cone_edges();
         pyramid_labels(self.cones.contacts(), edges, &mut self.pyramids);
         let delta = self.cones.delta.iter().fold(0.0, |m: f64, &d| m.max(d));
-        let set = GraspSet {
-            raw: &self.cones.raw,
-            snapped: Some((&self.wrenches, &self.pyramids, delta)),
-        };
-        let mut quality = ows_with(&set, space, self.method, &mut self.buffers)?;
+        let mut set = Explicit::snapped(&self.cones.raw, &self.wrenches, &self.pyramids, delta);
+        let mut quality = ows_with(&mut set, space, self.method, &mut self.buffers, started)?;
         quality.stats.elapsed = started.elapsed();
         Ok(quality)
     }
@@ -170,11 +165,8 @@ pub fn ows_of_wrenches(
     method: Method,
 ) -> Result<OwsQuality, QualityError> {
     let started = Instant::now();
-    let set = GraspSet {
-        raw: wrenches,
-        snapped: None,
-    };
-    let mut quality = ows_with(&set, space, method, &mut OwsBuffers::default())?;
+    let mut set = Explicit::raw(wrenches);
+    let mut quality = ows_with(&mut set, space, method, &mut OwsBuffers::default(), started)?;
     quality.stats.elapsed = started.elapsed();
     Ok(quality)
 }
@@ -189,36 +181,33 @@ fn not_force_closure(stats: Stats) -> OwsQuality {
     }
 }
 
-/// The grasp's wrenches: the caller's raw ones, and, from a grasp, the snapped ones the search
-/// runs on (same indexing) with their pyramids and `δ`, the bound on their distance to the raw.
-struct GraspSet<'a> {
-    raw: &'a [[f64; 6]],
-    snapped: Option<Snapped<'a>>,
-}
-
-/// The snapped wrenches, their pyramids (the contact of each) and `δ`.
-type Snapped<'a> = (&'a [[f64; 6]], &'a [u32], f64);
-
 /// [`ows_inner`], with a value beyond `f64::MAX` (disturbances tiny beside the grasp's wrenches,
 /// say 1e−310 against 1) an error rather than +∞, which JSON would print as null.
 fn ows_with(
-    set: &GraspSet<'_>,
+    set: &mut Explicit<'_>,
     space: &ObjectWrenchSpace,
     method: Method,
     buffers: &mut OwsBuffers,
+    started: Instant,
 ) -> Result<OwsQuality, QualityError> {
-    let quality = ows_inner(set, space, method, buffers)?;
+    let quality = ows_inner(set, space, method, buffers, started)?;
     match quality.value {
         Some(v) if !v.is_finite() => Err(QualityError::OwsValueOverflow),
         _ => Ok(quality),
     }
 }
 
+/// Q_OWS by the grasp cascade's steps ([`pipeline`](crate::grasp::pipeline)) with the
+/// disturbances' gauge: the separation and slab tests of the wrench set (no value: not force
+/// closure); the search on the snapped wrenches, certified on the raw ones by the same bracket
+/// as Q1's; failing that, Q1's cascade for the verdict, then the search on the caller's own
+/// numbers.
 fn ows_inner(
-    set: &GraspSet<'_>,
+    set: &mut Explicit<'_>,
     space: &ObjectWrenchSpace,
     method: Method,
     buffers: &mut OwsBuffers,
+    started: Instant,
 ) -> Result<OwsQuality, QualityError> {
     if !method.supports(Metric::Ows) {
         return Err(QualityError::UnsupportedMethod {
@@ -226,32 +215,30 @@ fn ows_inner(
             metric: Metric::Ows,
         });
     }
-    let raw = set.raw;
+    let raw = set.raw_wrenches();
     check_wrenches(raw)?;
     if raw.is_empty() {
         return Ok(not_force_closure(Stats::default()));
     }
     // A grasp GJK certifies not force closure has no OWS value: no hull needed. (Not for
     // `PartialRays`, kept as published for comparison.)
-    if method == Method::Partial && certified_outside(raw, &mut buffers.gjk).is_some() {
+    if method == Method::Partial && set.separated(&mut buffers.gjk, started).is_some() {
         return Ok(not_force_closure(Stats::default()));
     }
-    let scale = largest_norm(raw);
     // Wrenches within rounding of a hyperplane through the origin: Q1 at most the slab's
     // half-width, far below the force-closure band (see `grasp::flatness`).
-    if buffers.flatness.slab(raw.iter().copied()) <= FLAT * scale {
+    if set.is_flat(&mut buffers.flatness) {
         return Ok(not_force_closure(Stats::default()));
     }
     if method == Method::Ellipsoid {
         return ellipsoid(raw, space);
     }
-    if let Some((snapped, pyramids, delta)) = set.snapped {
+    if let Some((snapped, pyramids)) = set.snapped_copy() {
         // The search on the snapped wrenches, its answer certified on the raw ones.
         let found = search(snapped, Some(pyramids), space, method, buffers)?;
         if let Some(quality) = found
             && let Some(hull) = buffers.hull.as_ref()
-            && let Some((value, tied)) =
-                certify_ows(hull, raw, delta, scale, space, &mut buffers.bracket)
+            && let Some((value, tied)) = certify_ows(set, hull, space, &mut buffers.bracket)
         {
             return Ok(OwsQuality {
                 value: Some(value),
@@ -263,10 +250,9 @@ fn ows_inner(
     // Force closure under the band from Q1 (certified on the snapped search when there is one:
     // the exact engine alone builds slivers on boundary grasps), then the search on exactly
     // the caller's numbers.
-    let q1 = match set.snapped {
-        Some((snapped, pyramids, delta)) => {
-            q1_certified(raw, snapped, pyramids, delta, &mut buffers.q1)?
-        }
+    let q1 = match set.snapped_copy() {
+        Some(_) => pipeline::evaluate(set, Expansion::Partial, &mut buffers.q1, started)?,
+        // In the wrenches' own unit, as Q1 of an explicit set is evaluated.
         None => q1_of_wrenches(raw, Method::Partial)?,
     };
     if !q1.force_closure {
@@ -309,7 +295,12 @@ fn search(
         ),
         Method::Full => brute_force(w, pyramids, space, &mut buffers.hull),
         // Refused by `ows_inner` before any hull is built.
-        Method::Ellipsoid | Method::Qhull => unreachable!("no exact OWS hull by {method:?}"),
+        Method::Ellipsoid | Method::Qhull => {
+            return Err(QualityError::UnsupportedMethod {
+                method,
+                metric: Metric::Ows,
+            });
+        }
     };
     Ok(result?.filter(|q| q.force_closure))
 }
@@ -319,23 +310,17 @@ fn search(
 /// the force-closure band (see [`crate::grasp::certify`]); and whether another facet ties with
 /// the deciding one ([`OwsQuality::tied`]).
 fn certify_ows(
+    set: &Explicit<'_>,
     hull: &Hull<6>,
-    raw: &[[f64; 6]],
-    delta: f64,
-    scale: f64,
     space: &ObjectWrenchSpace,
     scratch: &mut BracketScratch,
 ) -> Option<(f64, bool)> {
-    let mut side = RawSide {
-        point: |v: usize| Some(raw[v]),
-        error: 0.0,
-        delta: delta + FORCE_CLOSURE_EPSILON * scale,
-        support: |u: &[f64; 6]| support_with_error(raw, u),
-    };
     let mut gauge = Disturbances {
         index: space.support_index(),
     };
-    let b = bracket(hull, &mut side, &mut gauge, scratch)?;
+    let widen = FORCE_CLOSURE_EPSILON * set.scale();
+    let b = pipeline::bracket_on(set, hull, &mut gauge, widen, scratch)?;
+    let (delta, _) = set.raw_bounds();
     let value = b.value_within(b.high.abs())?;
     // Snapping moves a facet's distance by up to δ, its factor by δ/g (g the disturbances'
     // rate against it): relative `2δ/distance` between two facets, on top of the band.

@@ -56,6 +56,18 @@ impl<'a> Explicit<'a> {
     }
 }
 
+impl<'a> Explicit<'a> {
+    /// The caller's wrenches.
+    pub(in crate::grasp) fn raw_wrenches(&self) -> &'a [[f64; 6]] {
+        self.raw
+    }
+
+    /// The snapped copy, when there is one: its points and the contact of each.
+    pub(in crate::grasp) fn snapped_copy(&self) -> Option<(&'a [[f64; 6]], &'a [u32])> {
+        self.snapped.map(|s| (s.points, s.pyramids))
+    }
+}
+
 /// The hull of `points` grown by `expansion` in `hull`'s arena; `flats`, when given, names the
 /// contact of every point, each contact's points lying *exactly* in one 2-D affine plane (see
 /// [`build_hull`]). `Ok(None)` when the points span fewer than six dimensions.

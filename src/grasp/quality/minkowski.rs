@@ -1,6 +1,6 @@
 //! Q∞ over the Minkowski sum ⊕_i W_i, implicitly (support function) or materialised.
 
-use super::{Quality, QualityError, degenerate, nearest_hull, no_hull_stats};
+use super::{Quality, QualityError, certified_outside, degenerate, nearest_hull, no_hull_stats};
 use crate::geometry::vector::dot;
 use crate::geometry::{GJK_ITERATIONS, GJK_TOUCHING, Gjk, GjkVerdict, Support, SupportFn};
 use crate::grasp::certify::support_with_error;
@@ -175,8 +175,6 @@ pub(super) struct MinkowskiSource {
     with_zero_wrench: bool,
     /// The caller's raw wrench sets (with the zero wrench if asked), whatever `sum` holds.
     raw_sets: Vec<Vec<[f64; 6]>>,
-    /// The caller's raw wrenches, unscaled: the union whose force closure the sum shares.
-    union: Vec<[f64; 6]>,
     /// Every point handed out (seeds and insertions), and its tuple (`contacts` entries each in
     /// `tuples`): how a hull vertex finds its raw point for the certificate.
     log: Vec<[f64; 6]>,
@@ -190,8 +188,6 @@ impl MinkowskiSource {
             fill_set(set, cones, c, with_zero_wrench, raw);
         });
         fill_sets(&mut self.raw_sets, cones, with_zero_wrench, true);
-        self.union.clear();
-        self.union.extend_from_slice(&cones.raw);
         self.log.clear();
         self.tuples.clear();
         self.with_zero_wrench = with_zero_wrench;
@@ -211,19 +207,6 @@ impl MinkowskiSource {
             &self.raw_sets,
             self.tuples[i * m..(i + 1) * m].iter().copied(),
         ))
-    }
-
-    /// The support point of the union of the contacts' raw cone edges (no zero wrench): the
-    /// hull whose force closure Q∞ with the zero wrench shares.
-    fn raw_union_support(&self, direction: &[f64; 6]) -> [f64; 6] {
-        let mut best = (f64::NEG_INFINITY, [0.0; 6]);
-        for w in &self.union {
-            let height = dot(*direction, *w);
-            if height > best.0 {
-                best = (height, *w);
-            }
-        }
-        best.1
     }
 
     /// The sum of each contact's largest raw wrench norm: the scale of the force-closure band.
@@ -387,28 +370,10 @@ impl WrenchSet for ImplicitSum<'_> {
     }
 
     fn separated(&mut self, gjk: &mut Gjk<6>, started: Instant) -> Option<Quality> {
-        if self.with_zero_wrench {
-            let source = self.search.nearest.source();
-            let largest = source
-                .union
-                .iter()
-                .fold(0.0, |m: f64, w| m.max(dot(*w, *w).sqrt()));
-            let start = [source.raw_union_support(&[1.0, 0.0, 0.0, 0.0, 0.0, 0.0])];
-            let verdict = gjk.run(
-                &mut SupportFn(|v: &[f64; 6]| source.raw_union_support(v)),
-                largest,
-                &start,
-                GJK_ITERATIONS,
-                GJK_TOUCHING,
-            );
-            if let GjkVerdict::Separated { inserted, .. } = verdict {
-                let origin = std::iter::once([0.0; 6]);
-                return Some(Quality::new(
-                    0.0,
-                    origin,
-                    no_hull_stats(1 + inserted, started),
-                ));
-            }
+        if self.with_zero_wrench
+            && let Some(quality) = union_separated(&self.cones.raw, gjk, started)
+        {
+            return Some(quality);
         }
         self.raw_seeds();
         separated_sum(
@@ -483,6 +448,19 @@ impl WrenchSet for ImplicitSum<'_> {
     fn outside_bound(&mut self) -> Option<Quality> {
         zero_wrench_bound(self.with_zero_wrench)
     }
+}
+
+/// With the zero wrench: when GJK certifies that the *union* of the raw cone edges `union` does
+/// not hold the origin, the grasp is not force closure and Q∞ = 0 exactly (the origin, a point of
+/// the sum, is on its boundary: the two hulls have the same force closure).
+fn union_separated(union: &[[f64; 6]], gjk: &mut Gjk<6>, started: Instant) -> Option<Quality> {
+    let (_, inserted) = certified_outside(union, gjk)?;
+    let origin = std::iter::once([0.0; 6]);
+    Some(Quality::new(
+        0.0,
+        origin,
+        no_hull_stats(1 + inserted, started),
+    ))
 }
 
 /// With the zero wrench, the origin is a point of the sum: Q∞ ≥ 0.
@@ -563,6 +541,11 @@ impl WrenchSet for MaterialisedSum<'_> {
     }
 
     fn separated(&mut self, gjk: &mut Gjk<6>, started: Instant) -> Option<Quality> {
+        if self.with_zero_wrench
+            && let Some(quality) = union_separated(&self.cones.raw, gjk, started)
+        {
+            return Some(quality);
+        }
         self.raw_seeds();
         separated_sum(&self.raw_sets, &self.seeds, self.scale, gjk, started)
     }
