@@ -18,7 +18,7 @@ pub const MIN_DIMENSION: usize = 2;
 pub const MAX_DIMENSION: usize = 8;
 
 /// Slots of the initial simplex: its D + 1 vertices at the largest dimension.
-const MAX_SIMPLEX: usize = MAX_DIMENSION + 1;
+pub(in crate::hull) const MAX_SIMPLEX: usize = MAX_DIMENSION + 1;
 
 impl<const D: usize> Hull<D> {
     /// Validates the input, scales it, builds the initial simplex and the first outside sets.
@@ -52,6 +52,7 @@ impl<const D: usize> Hull<D> {
             flat_dim: 0,
             grid: None,
             partition_farthest: false,
+            start: None,
             trace: None,
         }
     }
@@ -67,6 +68,7 @@ impl<const D: usize> Hull<D> {
     ) -> Result<(), HullError> {
         self.started = Instant::now();
         self.partition_farthest = partition_farthest;
+        let start = self.start.take();
         self.free.clear();
         self.planes.clear();
         // Free the slots in descending order, so that they are reused from slot 0 up, as in a
@@ -106,7 +108,11 @@ impl<const D: usize> Hull<D> {
             .extend(input.iter().map(|p| p.map(|x| x * scale)));
         self.grid = ExactGrid::of(&self.points);
         self.mark_repeats();
-        let mut simplex = initial_simplex(&self.points)?;
+        let chosen = start;
+        let mut simplex = match chosen.filter(|s| independent(&self.points, &s[..=D])) {
+            Some(simplex) => simplex,
+            None => initial_simplex(&self.points)?,
+        };
         // Its vertices are distinct points: name each by its first copy, as every vertex is.
         for s in &mut simplex[..=D] {
             *s = self.scratch.first_copy[*s] as usize;
@@ -581,6 +587,19 @@ fn initial_simplex<const D: usize>(points: &[[f64; D]]) -> Result<[usize; MAX_SI
     let mut simplex = [0; MAX_SIMPLEX];
     simplex[..=D].copy_from_slice(&independent[..=D]);
     Ok(simplex)
+}
+
+/// Whether the points `simplex` (D + 1 indices into `points`) are in range and affinely
+/// independent, exactly.
+fn independent<const D: usize>(points: &[[f64; D]], simplex: &[usize]) -> bool {
+    if simplex.iter().any(|&s| s >= points.len()) {
+        return false;
+    }
+    let mut vertices = [[0.0; D]; D];
+    for (v, &s) in vertices.iter_mut().zip(simplex) {
+        *v = points[s];
+    }
+    orientation(&vertices, &points[simplex[D]]) != Sign::Zero
 }
 
 fn greedy_simplex<const D: usize>(points: &[[f64; D]]) -> Option<[usize; MAX_SIMPLEX]> {

@@ -92,6 +92,9 @@ pub struct Hull<const D: usize> {
     /// Whether an outside point goes to the candidate facet it is farthest beyond rather than to
     /// the first found ([`Strategy::partitions_to_farthest`]).
     partition_farthest: bool,
+    /// The initial simplex the next build starts from, when a caller knows a better one than the
+    /// greedy choice ([`Hull::start_next_build_from`]); taken by the build.
+    start: Option<[usize; build::MAX_SIMPLEX]>,
     /// The run being recorded, if any ([`Hull::try_with_strategy_traced`]); `None` costs each
     /// trace hook one branch.
     trace: Option<Box<Trace<D>>>,
@@ -239,6 +242,19 @@ impl<const D: usize> Hull<D> {
         self.flat_dim = flat_dim;
         self.initialise(points, strategy.partitions_to_farthest())?;
         Ok(self.run_in_place(strategy))
+    }
+
+    /// Asks the next build (only) to start from the simplex on the input points `simplex`
+    /// (D + 1 indices) instead of the greedy one: a caller that knows points around the query
+    /// (the grasp layer: the simplex GJK ends with, which holds the origin) saves the partial
+    /// strategy the expansions that would first bring the query inside. Ignored when the points
+    /// are not affinely independent, exactly, or an index is out of range.
+    pub(crate) fn start_next_build_from(&mut self, simplex: &[usize]) {
+        self.start = (simplex.len() == D + 1).then(|| {
+            let mut start = [0; build::MAX_SIMPLEX];
+            start[..=D].copy_from_slice(simplex);
+            start
+        });
     }
 
     /// Makes every live facet's normal precise (see [`Facet::normal_is_precise`]): an exact

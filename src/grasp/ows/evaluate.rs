@@ -235,6 +235,7 @@ fn ows_inner(
     }
     if let Some((snapped, pyramids)) = set.snapped_copy() {
         // The search on the snapped wrenches, its answer certified on the raw ones.
+        set.start_hull(&mut buffers.hull);
         let found = search(snapped, Some(pyramids), space, method, buffers)?;
         if let Some(quality) = found
             && let Some(hull) = buffers.hull.as_ref()
