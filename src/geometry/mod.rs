@@ -24,6 +24,7 @@ pub mod vector;
 
 pub use ellipsoid::{CentredEllipsoid, EllipsoidError};
 pub use gjk::{GJK_ITERATIONS, GJK_TOUCHING, Gjk, GjkVerdict};
+pub(crate) use nearest::origin_weights;
 pub use nearest::{
     FAR, Nearest, min_norm_point, min_norm_point_accurate, min_norm_point_exact,
     nearest_face_in_simplex, nearest_in_simplex, rescaled,

@@ -549,6 +549,14 @@ fn combination<const D: usize>(points: &[[f64; D]], weights: &[f64; 9]) -> [f64;
     x
 }
 
+/// The barycentric coordinates of the origin in the simplex on `points` (D + 1 affinely
+/// independent points), by [`affine_minimiser`]; `None` when they are numerically dependent.
+pub(crate) fn origin_weights<const D: usize>(points: &[[f64; D]]) -> Option<[f64; 9]> {
+    (points.len() == D + 1)
+        .then(|| affine_minimiser(points))
+        .flatten()
+}
+
 /// Affine weights (summing to 1) of the point of the affine hull of `points` nearest the origin,
 /// or `None` if the points are (numerically) affinely dependent. Normal equations on differences
 /// from the first point, Gaussian elimination with partial pivoting, one refinement step.

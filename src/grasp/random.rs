@@ -1,5 +1,5 @@
-//! Seeded random grasps: on a box (the test object of the seed paper's GWS evaluation) and on a
-//! mesh's surface.
+//! Seeded random grasps: on a box (the test object of the seed paper's GWS evaluation), on an
+//! ellipsoid and on a mesh's surface.
 
 use super::{Contact, FrictionModel, Grasp, GraspError};
 use crate::geometry::Rng;
@@ -46,6 +46,54 @@ impl Grasp {
             .torque_scale(rho)
             .build()
             .expect("random_on_box: at least one contact")
+    }
+
+    /// A random grasp with `contacts` fingers on the ellipsoid x²/a² + y²/b² + z²/c² = 1 with
+    /// semi-axes `semi = [a, b, c]`: each finger at the point (a·u₀, b·u₁, c·u₂) for a uniformly
+    /// random unit vector u (not area-uniform: denser toward the short axes' ends), pushing along
+    /// the surface's inward normal −(x/a², y/b², z/c²) normalised (default tangent). Unlike the
+    /// box's, no two normals coincide, so the friction pyramids are in general position. Torque
+    /// reference: the centre; torque scale: the largest semi-axis (the largest distance from
+    /// the centre to the surface, as GraspIt! does).
+    ///
+    /// ```
+    /// use pqhull::grasp::{FrictionModel, Grasp};
+    /// use pqhull::geometry::Rng;
+    /// let g = Grasp::random_on_ellipsoid(&mut Rng::new(1), [0.5, 0.2, 0.1], 4, FrictionModel::try_new(0.5, 8)?);
+    /// for c in g.contacts() {
+    ///     let [x, y, z] = c.position();
+    ///     assert!((x * x / 0.25 + y * y / 0.04 + z * z / 0.01 - 1.0).abs() < 1e-12);
+    ///     // Inward: the normal points back toward the centre.
+    ///     assert!(x * c.normal()[0] + y * c.normal()[1] + z * c.normal()[2] < 0.0);
+    /// }
+    /// assert_eq!(g.torque_scale(), 0.5);
+    /// # Ok::<(), pqhull::grasp::GraspError>(())
+    /// ```
+    ///
+    /// # Panics
+    /// If `contacts` is 0 or a semi-axis is not finite and positive.
+    pub fn random_on_ellipsoid(
+        rng: &mut Rng,
+        semi: [f64; 3],
+        contacts: usize,
+        friction: FrictionModel,
+    ) -> Grasp {
+        check_half_extents("random_on_ellipsoid", semi);
+        let fingers = (0..contacts)
+            .map(|_| {
+                let u = rng.unit_vector(3);
+                let p: [f64; 3] = std::array::from_fn(|c| semi[c] * u[c]);
+                let g: [f64; 3] = std::array::from_fn(|c| -p[c] / (semi[c] * semi[c]));
+                let norm = g.iter().map(|x| x * x).sum::<f64>().sqrt();
+                let n = g.map(|x| x / norm);
+                Contact::try_new(p, n, None).expect("a unit normal off a point of the surface")
+            })
+            .collect();
+        let rho = semi.iter().fold(0.0, |m: f64, &h| m.max(h));
+        Grasp::builder(fingers, friction)
+            .torque_scale(rho)
+            .build()
+            .expect("random_on_ellipsoid: at least one contact")
     }
 
     /// A random grasp with `contacts` fingers (at most 6) on distinct faces of the box

@@ -6,7 +6,7 @@ use super::Progress;
 use super::batch::{BatchRow, PoolError, Pools, batch};
 use super::runs::{MethodRun, RunSummary, evaluate_all};
 use super::stats::{mean, median};
-use super::workloads::{BAR_FRICTION, bar_grasps};
+use super::workloads::{BAR_FRICTION, GwsObject, object_grasps};
 use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality};
 use pqhull::grasp::{FrictionModel, GraspError};
 use serde_json::{Value, json};
@@ -56,6 +56,8 @@ pub struct GwsConfig {
     pub batch_min_ms: f64,
     /// Seed of the random grasps.
     pub seed: u64,
+    /// The object the grasps are on.
+    pub object: GwsObject,
 }
 
 impl Default for GwsConfig {
@@ -73,6 +75,7 @@ impl Default for GwsConfig {
             batch_rounds: 3,
             batch_min_ms: 200.0,
             seed: 1,
+            object: GwsObject::Bar,
         }
     }
 }
@@ -137,6 +140,8 @@ pub struct EdgesResult {
 pub struct GwsReport {
     /// The seed of the grasps.
     pub seed: u64,
+    /// The object the grasps are on.
+    pub object: GwsObject,
     /// Contacts per grasp.
     pub contacts: usize,
     /// The batch pool sizes.
@@ -247,7 +252,13 @@ pub fn run(config: &GwsConfig, progress: Progress<'_>) -> Result<GwsReport, GwsE
     let mut results = Vec::new();
     for &k in &config.edges {
         let friction = FrictionModel::try_new(BAR_FRICTION, k).map_err(GwsError::Edges)?;
-        let set = bar_grasps(config.seed, config.grasps, config.contacts, friction);
+        let set = object_grasps(
+            config.object,
+            config.seed,
+            config.grasps,
+            config.contacts,
+            friction,
+        );
         let mut runs = Vec::new();
         let mut partial_results = Vec::new();
         for &m in &methods {
@@ -305,6 +316,7 @@ pub fn run(config: &GwsConfig, progress: Progress<'_>) -> Result<GwsReport, GwsE
     }
     Ok(GwsReport {
         seed: config.seed,
+        object: config.object,
         contacts: config.contacts,
         threads,
         available_parallelism: available_parallelism(),
@@ -435,6 +447,7 @@ impl GwsReport {
         json!({
             "benchmark": "gws",
             "seed": self.seed,
+            "object": self.object.name(),
             "threads": self.threads,
             "available_parallelism": self.available_parallelism,
             "batch_rounds": self.batch_rounds,

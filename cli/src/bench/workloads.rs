@@ -35,6 +35,62 @@ pub fn bar_grasps(seed: u64, count: usize, contacts: usize, friction: FrictionMo
         .collect()
 }
 
+/// The object of the GWS benchmark's grasps.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum GwsObject {
+    /// The 1 × 0.4 × 0.2 bar ([`BAR_HALF_EXTENTS`], [`Grasp::random_on_box`]): axis-aligned
+    /// normals, so contacts on one face share their friction pyramid's orientation.
+    #[default]
+    Bar,
+    /// The ellipsoid with the bar's half extents as semi-axes ([`Grasp::random_on_ellipsoid`]):
+    /// every normal different.
+    Ellipsoid,
+}
+
+impl GwsObject {
+    /// The name `pqh bench gws --object` takes.
+    pub fn name(self) -> &'static str {
+        match self {
+            GwsObject::Bar => "bar",
+            GwsObject::Ellipsoid => "ellipsoid",
+        }
+    }
+}
+
+/// `count` random grasps of `contacts` fingers on `object`, all from one generator seeded with
+/// `seed` ([`bar_grasps`] for the bar).
+///
+/// ```
+/// use pqhull_cli::bench::workloads::{BAR_FRICTION, GwsObject, bar_grasps, object_grasps};
+/// use pqhull::grasp::FrictionModel;
+/// let friction = FrictionModel::try_new(BAR_FRICTION, 8)?;
+/// assert_eq!(object_grasps(GwsObject::Bar, 1, 3, 4, friction), bar_grasps(1, 3, 4, friction));
+/// let round = object_grasps(GwsObject::Ellipsoid, 1, 3, 4, friction);
+/// assert_eq!(round.len(), 3);
+/// assert_ne!(round, bar_grasps(1, 3, 4, friction));
+/// # Ok::<(), pqhull::grasp::GraspError>(())
+/// ```
+///
+/// # Panics
+/// If `contacts` is 0.
+pub fn object_grasps(
+    object: GwsObject,
+    seed: u64,
+    count: usize,
+    contacts: usize,
+    friction: FrictionModel,
+) -> Vec<Grasp> {
+    match object {
+        GwsObject::Bar => bar_grasps(seed, count, contacts, friction),
+        GwsObject::Ellipsoid => {
+            let mut rng = Rng::new(seed);
+            (0..count)
+                .map(|_| Grasp::random_on_ellipsoid(&mut rng, BAR_HALF_EXTENTS, contacts, friction))
+                .collect()
+        }
+    }
+}
+
 /// `count` random grasps of `contacts` fingers at area-uniform points of `mesh`'s surface
 /// ([`Grasp::random_on_surface`]), each put in `space`'s torque frame
 /// ([`ObjectWrenchSpace::frame`]); one generator seeded with `seed`.

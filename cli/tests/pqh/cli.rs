@@ -430,6 +430,53 @@ fn bench_gws_json_reports_ratios_and_agreement() {
 }
 
 #[test]
+fn bench_gws_on_the_ellipsoid_agrees_across_methods() {
+    let run = |object: &str| {
+        let out = pqh(
+            &[
+                "bench",
+                "gws",
+                "--object",
+                object,
+                "--grasps",
+                "40",
+                "--full-grasps",
+                "40",
+                "--edges",
+                "6",
+                "--qinf-max-edges",
+                "0",
+                "--batch-rounds",
+                "0",
+                "--json",
+            ],
+            None,
+        );
+        assert!(out.status.success(), "{}", stderr(&out));
+        json(&out)
+    };
+    let (ellipsoid, bar) = (run("ellipsoid"), run("bar"));
+    assert_eq!(ellipsoid["object"], "ellipsoid");
+    assert_eq!(bar["object"], "bar");
+    let r = &ellipsoid["results"][0];
+    // The full method agrees with the partial one on every grasp, and some are force closure.
+    assert_eq!(r["disagreements"], 0);
+    let partial = &r["methods"][0];
+    assert_eq!(partial["method"], "partial");
+    assert!(partial["force_closure"].as_u64().unwrap() > 0, "{partial}");
+    // Other grasps than the bar's (the work counters, unlike the times, are deterministic).
+    let work = |row: &serde_json::Value| {
+        (
+            row["mean_facets_created"].clone(),
+            row["mean_points_processed"].clone(),
+        )
+    };
+    assert_ne!(work(partial), work(&bar["results"][0]["methods"][0]));
+    let bad = pqh(&["bench", "gws", "--object", "sphere"], None);
+    assert_eq!(bad.status.code(), Some(2), "{}", stderr(&bad));
+}
+
+#[test]
 fn bench_gws_json_reports_qinf_and_batch_throughput() {
     let out = pqh(
         &[

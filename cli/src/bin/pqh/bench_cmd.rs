@@ -5,10 +5,12 @@ use crate::error::CliError;
 use crate::methods::GwsMethodArg;
 use clap::{Args, ValueEnum};
 use pqhull_cli::bench::gws::{self, GwsConfig, GwsError, GwsReport};
+use pqhull_cli::bench::workloads::GwsObject;
 use std::io::Write;
 
 pub const GWS_LONG_ABOUT: &str = "\
-Random 4-contact grasps on a 1 x 0.4 x 0.2 bar (mu = 0.5, torque scale = half-diagonal), for
+Random 4-contact grasps on a 1 x 0.4 x 0.2 bar (mu = 0.5, torque scale = half-diagonal) or,
+with --object ellipsoid, on the ellipsoid of semi-axes 0.5, 0.2, 0.1 (torque scale 0.5), for
 each number of cone edges k: Q1 by every --methods entry on the same grasps (full and qhull on
 the first --full-grasps), with full/partial ratios of time, points and facets and a count of
 disagreements; Q-inf by the partial method over the implicit Minkowski sum (--qinf-max-edges,
@@ -35,6 +37,15 @@ impl QinfVariant {
             QinfVariant::Plain => gws::QinfVariant::Plain,
         }
     }
+}
+
+/// `--object`'s values.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum ObjectArg {
+    /// The 1 x 0.4 x 0.2 bar
+    Bar,
+    /// The ellipsoid of semi-axes 0.5, 0.2, 0.1
+    Ellipsoid,
 }
 
 #[derive(Debug, Args)]
@@ -85,6 +96,10 @@ pub struct GwsArgs {
     /// Seed of the random grasps
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
+    /// The object the grasps are on: `bar` (axis-aligned normals) or `ellipsoid` (every normal
+    /// different)
+    #[arg(long, value_enum, default_value = "bar")]
+    pub object: ObjectArg,
     /// One JSON document instead of the tables
     #[arg(long)]
     pub json: bool,
@@ -133,6 +148,10 @@ pub fn run(args: &GwsArgs) -> Result<(), CliError> {
         batch_rounds: args.batch_rounds,
         batch_min_ms: args.batch_min_ms,
         seed: args.seed,
+        object: match args.object {
+            ObjectArg::Bar => GwsObject::Bar,
+            ObjectArg::Ellipsoid => GwsObject::Ellipsoid,
+        },
     };
     let mut bars = crate::progress::Phases::default();
     let report = gws::run(&config, &mut |label, done, total| {
@@ -162,8 +181,13 @@ fn num(x: f64) -> f64 {
 fn print_tables(out: &mut impl Write, report: &GwsReport) -> std::io::Result<()> {
     writeln!(
         out,
-        "GWS Q1, {} contacts, random grasps on a 1 x 0.4 x 0.2 bar (seed {})",
-        report.contacts, report.seed
+        "GWS Q1, {} contacts, random grasps on {} (seed {})",
+        report.contacts,
+        match report.object {
+            GwsObject::Bar => "a 1 x 0.4 x 0.2 bar",
+            GwsObject::Ellipsoid => "the ellipsoid of semi-axes 0.5, 0.2, 0.1",
+        },
+        report.seed
     )?;
     writeln!(
         out,
