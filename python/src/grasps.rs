@@ -9,9 +9,9 @@ use numpy::{
     PyArray1, PyArray2, PyArray3, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3,
     PyUntypedArrayMethods, ToPyArray,
 };
-use pqhull::grasp::metrics::{Score, Scorer};
-use pqhull::grasp::ows::{ObjectWrenchSpace as Space, evaluate_ows_batch};
-use pqhull::grasp::quality::{Method, Metric, NameError, QualityError, evaluate_batch};
+use pqhull::grasp::metrics::{Score, Scorer, score_batch};
+use pqhull::grasp::ows::ObjectWrenchSpace as Space;
+use pqhull::grasp::quality::{Method, Metric, NameError, QualityError};
 use pqhull::grasp::{Contact, FrictionModel, Gradient, Grasp};
 use pyo3::prelude::*;
 
@@ -573,38 +573,20 @@ pub fn evaluate(
     // closure; only `gradient` gives a gradient.
     type Row = (Option<f64>, bool, Option<Gradient>);
     let run = || -> Vec<Result<Row, String>> {
-        use rayon::prelude::*;
-        match (metric, space) {
+        if gradient {
             // The batch's values, then each one's gradient beside it.
-            _ if gradient => gradient::batch(&good, metric, method, space),
-            (Metric::Q1 | Metric::QInf { .. }, _) => evaluate_batch(&good, metric, method)
+            return gradient::batch(&good, metric, method, space);
+        }
+        // Refusals were checked above, before any work: a failure here is the batch's own.
+        match score_batch(&good, metric, method, space) {
+            Ok(scores) => scores
                 .into_iter()
                 .map(|r| {
-                    r.map(|q| (Some(q.value), q.force_closure, None))
+                    r.map(|s| (s.value, s.force_closure, None))
                         .map_err(|e| e.to_string())
                 })
                 .collect(),
-            // Only Q_OWS takes a space (checked above).
-            (_, Some(space)) => evaluate_ows_batch(&good, space, method)
-                .into_iter()
-                .map(|r| {
-                    r.map(|q| (q.value, q.force_closure, None))
-                        .map_err(|e| e.to_string())
-                })
-                .collect(),
-            // The other metrics, in input order (par_iter's collect keeps it).
-            (_, None) => good
-                .par_iter()
-                .map_init(
-                    || Scorer::new(metric, method, None),
-                    |scorer, g| {
-                        let score = scorer.as_mut().map_err(|e| e.to_string())?.score(g);
-                        score
-                            .map(|s| (s.value, s.force_closure, None))
-                            .map_err(|e| e.to_string())
-                    },
-                )
-                .collect(),
+            Err(e) => vec![Err(e.to_string()); good.len()],
         }
     };
     let started = std::time::Instant::now();

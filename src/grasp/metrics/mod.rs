@@ -47,7 +47,7 @@ use std::time::Instant;
 
 mod scorer;
 
-pub use scorer::{Score, Scorer};
+pub use scorer::{Score, Scorer, score_batch};
 
 /// Why a metric could not be computed.
 #[derive(Clone, Debug, PartialEq)]

@@ -2,8 +2,10 @@
 
 use super::{MetricError, grasp_matrix_metrics, gws_volume};
 use crate::grasp::Grasp;
-use crate::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
-use crate::grasp::quality::{Evaluator, Method, Metric, QualityError};
+use crate::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, evaluate_ows_batch};
+use crate::grasp::quality::{
+    Evaluator, Method, Metric, QualityError, evaluate_batch, find_or_make,
+};
 use crate::hull::Stats;
 use std::time::Instant;
 
@@ -160,4 +162,96 @@ impl<'a> Scorer<'a> {
             stats,
         })
     }
+}
+
+/// Scores every grasp by `metric` and `method` (`space`: the object's wrench space, for
+/// [`Metric::Ows`] only), results in input order: on all cores (rayon's current pool) with the
+/// `parallel` feature, else one after another. The one batch call for every metric, and the one
+/// per-thread reuse: Q1 and Q∞ go through
+/// [`evaluate_batch`](crate::grasp::quality::evaluate_batch), Q_OWS and wrench resistance
+/// through [`evaluate_ows_batch`] (the resisted wrench's space built once for the batch), and
+/// the volume and the grasp-matrix metrics through one [`Scorer`] per worker thread, kept for
+/// the life of the thread (rayon's `map_init` would make one per job it splits off).
+///
+/// ```
+/// use pqhull::grasp::metrics::{score_batch, Scorer};
+/// use pqhull::grasp::quality::{Method, Metric};
+/// use pqhull::grasp::{FrictionModel, Grasp};
+/// use pqhull::geometry::Rng;
+///
+/// let friction = FrictionModel::try_new(0.5, 6)?;
+/// let mut rng = Rng::new(2);
+/// let grasps: Vec<Grasp> =
+///     (0..8).map(|_| Grasp::random_on_box(&mut rng, [0.5, 0.2, 0.1], 4, friction)).collect();
+/// for metric in [Metric::Q1, Metric::Volume, Metric::Isotropy] {
+///     let scores = score_batch(&grasps, metric, Method::Partial, None)?;
+///     let mut one = Scorer::new(metric, Method::Partial, None)?;
+///     for (score, grasp) in scores.iter().zip(&grasps) {
+///         let (a, b) = (score.as_ref().unwrap(), one.score(grasp)?);
+///         assert_eq!((a.force_closure, a.value), (b.force_closure, b.value));
+///     }
+/// }
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+///
+/// # Errors
+/// As [`Scorer::new`], before any grasp is scored; each grasp's own error in its entry.
+pub fn score_batch(
+    grasps: &[Grasp],
+    metric: Metric,
+    method: Method,
+    space: Option<&ObjectWrenchSpace>,
+) -> Result<Vec<Result<Score, MetricError>>, MetricError> {
+    // The refusals of `Scorer::new`, once: every entry below would repeat them.
+    Scorer::new(metric, method, space)?;
+    let ows = |space: &ObjectWrenchSpace| {
+        evaluate_ows_batch(grasps, space, method)
+            .into_iter()
+            .map(|r| {
+                r.map(|q| Score {
+                    force_closure: q.force_closure,
+                    value: q.value,
+                    stats: q.stats,
+                })
+                .map_err(MetricError::Quality)
+            })
+            .collect()
+    };
+    Ok(match (metric, space) {
+        (Metric::Q1 | Metric::QInf { .. }, _) => evaluate_batch(grasps, metric, method)
+            .into_iter()
+            .map(|r| {
+                r.map(|q| Score {
+                    force_closure: q.force_closure,
+                    value: Some(q.value),
+                    stats: q.stats,
+                })
+                .map_err(MetricError::Quality)
+            })
+            .collect(),
+        (Metric::Ows, Some(space)) => ows(space),
+        (Metric::Resist { wrench }, _) => {
+            let space =
+                ObjectWrenchSpace::from_disturbances(vec![wrench]).map_err(MetricError::Wrench)?;
+            ows(&space)
+        }
+        _ => crate::grasp::map_in_order(grasps, |grasp| {
+            SCORERS.with_borrow_mut(|kept| {
+                let scorer = find_or_make(
+                    kept,
+                    |s| s.metric == metric && s.method == method,
+                    || Scorer::new(metric, method, None).expect("checked above"),
+                );
+                scorer.score(grasp)
+            })
+        }),
+    })
+}
+
+thread_local! {
+    /// The scorers of [`score_batch`] on this thread (metrics without a wrench space), one per
+    /// (metric, method) used.
+    static SCORERS: std::cell::RefCell<Vec<Scorer<'static>>> = const {
+        std::cell::RefCell::new(Vec::new())
+    };
 }
