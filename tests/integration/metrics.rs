@@ -315,3 +315,36 @@ fn resisting_a_subnormal_wrench_is_an_error() {
             .is_finite()
     );
 }
+
+#[test]
+fn metric_errors_give_their_cause_as_source() {
+    use pqhull::grasp::metrics::Scorer;
+    use pqhull::grasp::quality::Metric;
+    use std::error::Error;
+    let grasp = &bar_grasps(1, 1, 4, FrictionModel::try_new(BAR_FRICTION, 8).unwrap())[0];
+    // A zero wrench to resist: the space's own error is the source.
+    let zero = resist(grasp, [0.0; 6], Method::Partial).unwrap_err();
+    assert!(matches!(zero, MetricError::Wrench(_)), "{zero:?}");
+    let cause = zero.source().expect("a source");
+    assert!(
+        cause
+            .downcast_ref::<pqhull::grasp::ows::OwsError>()
+            .is_some()
+    );
+    // Q_OWS without a space: the quality error is the source, and says what was wrong.
+    let err = Scorer::new(Metric::Ows, Method::Partial, None).unwrap_err();
+    let source = err.source().expect("a source");
+    assert_eq!(
+        source.to_string(),
+        QualityError::OwsNeedsWrenchSpace.to_string()
+    );
+    assert!(source.downcast_ref::<QualityError>().is_some());
+    // The batch call refuses the same way, before any grasp.
+    let batch = pqhull::grasp::metrics::score_batch(
+        std::slice::from_ref(grasp),
+        Metric::Ows,
+        Method::Partial,
+        None,
+    );
+    assert_eq!(batch.unwrap_err(), err);
+}

@@ -94,7 +94,18 @@ impl fmt::Display for MetricError {
     }
 }
 
-impl std::error::Error for MetricError {}
+impl std::error::Error for MetricError {
+    /// The wrapped error, as [`QualityError`]'s variants give theirs.
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            MetricError::Grasp(e) => Some(e),
+            MetricError::Quality(e) => Some(e),
+            MetricError::Wrench(e) => Some(e),
+            MetricError::Hull(e) => Some(e),
+            MetricError::Svd(_) | MetricError::VolumeOverflow => None,
+        }
+    }
+}
 
 impl From<QualityError> for MetricError {
     fn from(e: QualityError) -> Self {

@@ -70,7 +70,7 @@ impl<'a> Explicit<'a> {
     /// Asks the next build in `hull`'s arena to start from the simplex GJK ended with (seven
     /// wrenches around the origin), when [`WrenchSet::separated`] left one: a partial search
     /// then starts with the origin inside (measured: 20 % fewer facets for force-closure Q1 at
-    /// 4 × 8 edges, 9 % at 4 × 32; `examples/profile_q1`).
+    /// 4 × 8 edges, 9 % at 4 × 32; `cli/examples/profile_q1.rs`).
     pub(in crate::grasp) fn start_hull(&self, hull: &mut Option<Hull<6>>) {
         if let Some(start) = &self.start {
             hull.get_or_insert_with(Hull::empty)
