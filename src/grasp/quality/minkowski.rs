@@ -335,13 +335,6 @@ impl<'a> ImplicitSum<'a> {
         &self.search.nearest.source().raw_sets
     }
 
-    /// The seeds from the raw sum's support points.
-    fn raw_seeds(&mut self) {
-        let MinkowskiSearch { nearest, seeds } = &mut *self.search;
-        let raw_sets = &nearest.source().raw_sets;
-        seed_points(seeds, |d| sum_support(raw_sets, d));
-    }
-
     /// The partial hull of the sum the source holds, seeded from its own support points.
     fn hull<'h>(
         &mut self,
@@ -375,14 +368,8 @@ impl WrenchSet for ImplicitSum<'_> {
         {
             return Some(quality);
         }
-        self.raw_seeds();
-        separated_sum(
-            self.raw_sets(),
-            &self.search.seeds,
-            self.scale,
-            gjk,
-            started,
-        )
+        let MinkowskiSearch { nearest, seeds } = &mut *self.search;
+        separated_sum(&nearest.source().raw_sets, seeds, self.scale, gjk, started)
     }
 
     fn is_flat(&mut self, flatness: &mut Flatness) -> bool {
@@ -390,19 +377,10 @@ impl WrenchSet for ImplicitSum<'_> {
     }
 
     fn flat_value(&mut self, gjk: &mut Gjk<6>, started: Instant) -> Result<Quality, QualityError> {
-        self.raw_seeds();
-        let raw_sets = &self.search.nearest.source().raw_sets;
-        let support = |v: &[f64; 6]| sum_support(raw_sets, v);
-        let seeds = &self.search.seeds;
-        flat_sum(
-            self.cones,
-            self.with_zero_wrench,
-            support,
-            self.scale,
-            seeds,
-            gjk,
-            started,
-        )
+        let MinkowskiSearch { nearest, seeds } = &mut *self.search;
+        let raw_sets = &nearest.source().raw_sets;
+        let (cones, zero) = (self.cones, self.with_zero_wrench);
+        flat_sum(cones, zero, raw_sets, self.scale, seeds, gjk, started)
     }
 
     fn snapped_hull<'h>(
@@ -469,15 +447,17 @@ fn zero_wrench_bound(with_zero_wrench: bool) -> Option<Quality> {
     with_zero_wrench.then(|| Quality::new(0.0, origin, Stats::default()))
 }
 
-/// GJK on the support function of the sum of `raw_sets`, from `seeds`: the quality when the sum
-/// is certified not to hold the origin.
+/// GJK on the support function of the sum of `raw_sets`, from its support points along
+/// [`SEED_DIRECTIONS`] (in `seeds`): the quality when the sum is certified not to hold the
+/// origin.
 fn separated_sum(
     raw_sets: &[Vec<[f64; 6]>],
-    seeds: &[[f64; 6]],
+    seeds: &mut Vec<[f64; 6]>,
     scale: f64,
     gjk: &mut Gjk<6>,
     started: Instant,
 ) -> Option<Quality> {
+    seed_points(seeds, |d| sum_support(raw_sets, d));
     let support = |v: &[f64; 6]| sum_support(raw_sets, v);
     match gjk.run(
         &mut SupportFn(support),
@@ -528,11 +508,6 @@ impl<'a> MaterialisedSum<'a> {
             scale,
         }
     }
-
-    fn raw_seeds(&mut self) {
-        let raw_sets = &self.raw_sets;
-        seed_points(&mut self.seeds, |d| sum_support(raw_sets, d));
-    }
 }
 
 impl WrenchSet for MaterialisedSum<'_> {
@@ -546,8 +521,7 @@ impl WrenchSet for MaterialisedSum<'_> {
         {
             return Some(quality);
         }
-        self.raw_seeds();
-        separated_sum(&self.raw_sets, &self.seeds, self.scale, gjk, started)
+        separated_sum(&self.raw_sets, &mut self.seeds, self.scale, gjk, started)
     }
 
     fn is_flat(&mut self, flatness: &mut Flatness) -> bool {
@@ -559,16 +533,13 @@ impl WrenchSet for MaterialisedSum<'_> {
             // The raw sum, materialised and without a hull: Wolfe's algorithm over its points.
             return Ok(degenerate(self.out, started));
         }
-        self.raw_seeds();
-        let raw_sets = &self.raw_sets;
-        let support = |v: &[f64; 6]| sum_support(raw_sets, v);
-        let seeds = &self.seeds;
+        let (cones, zero) = (self.cones, self.with_zero_wrench);
         flat_sum(
-            self.cones,
-            self.with_zero_wrench,
-            support,
+            cones,
+            zero,
+            &self.raw_sets,
             self.scale,
-            seeds,
+            &mut self.seeds,
             gjk,
             started,
         )
@@ -651,18 +622,21 @@ fn flat_contacts(raw_sets: &[Vec<[f64; 6]>], scale: f64, flatness: &mut Flatness
 }
 
 /// −(distance from the origin) of a sum spanning fewer than six dimensions, never force closure:
-/// GJK run to convergence on the support function `support` of a sum whose points have norms
-/// below `scale` (the origin may lie in the sum, so it must not stop at "touching"); should it
-/// not converge, Wolfe's algorithm over the materialised raw sum, when that fits.
+/// GJK run to convergence on the support function of the sum of `raw_sets`, whose points have
+/// norms below `scale` (the origin may lie in the sum, so it must not stop at "touching"),
+/// seeded in `seeds`; should it not converge, Wolfe's algorithm over the materialised raw sum,
+/// when that fits.
 fn flat_sum(
     cones: &SnappedCones,
     with_zero_wrench: bool,
-    support: impl FnMut(&[f64; 6]) -> [f64; 6],
+    raw_sets: &[Vec<[f64; 6]>],
     scale: f64,
-    seeds: &[[f64; 6]],
+    seeds: &mut Vec<[f64; 6]>,
     gjk: &mut Gjk<6>,
     started: Instant,
 ) -> Result<Quality, QualityError> {
+    seed_points(seeds, |d| sum_support(raw_sets, d));
+    let support = |v: &[f64; 6]| sum_support(raw_sets, v);
     if with_zero_wrench {
         // The origin is in the sum (every contact's zero wrench), which spans fewer than six
         // dimensions: it lies on the sum's boundary, at distance exactly 0.
