@@ -3,10 +3,10 @@
 //!
 //! Each step runs only when the ones before it cannot decide:
 //!
-//! 1. **Separation** (partial method first; the full method after its snapped hull's
-//!    certificate): GJK on the raw set's
-//!    support function. A certified separation means the grasp is not force closure and gives
-//!    −(the distance), from support points alone.
+//! 1. **Separation** (the partial method first; the full method after its snapped hull's
+//!    certificate): GJK on the raw set's support function. A certified separation means the
+//!    grasp is not force closure and gives −(the distance), from support points alone. When GJK
+//!    cannot separate, its final simplex may start the hull of step 3 (`Explicit`).
 //! 2. **Flatness**: a raw set within [`FLAT`](super::flatness::FLAT) of a hyperplane through the
 //!    origin is not force closure; its value comes from the set's own nearest-point routine.
 //! 3. **The snapped hull** (partial or full), when the set has a snapped copy: when it holds the
