@@ -73,7 +73,7 @@ pub(in crate::grasp) mod ties;
 mod vocabulary;
 pub use error::QualityError;
 pub(in crate::grasp) use explicit::Explicit;
-pub(in crate::grasp) use explicit::nearest_hull;
+pub(in crate::grasp) use explicit::{holds_the_origin_well, nearest_hull};
 pub use minkowski::MINKOWSKI_MATERIALISE_LIMIT;
 pub use vocabulary::{Method, Metric, NameError};
 

@@ -1,6 +1,9 @@
 //! Q∞ over the Minkowski sum ⊕_i W_i, implicitly (support function) or materialised.
 
-use super::{Quality, QualityError, certified_outside, degenerate, nearest_hull, no_hull_stats};
+use super::{
+    Quality, QualityError, certified_outside, degenerate, holds_the_origin_well, nearest_hull,
+    no_hull_stats,
+};
 use crate::geometry::vector::dot;
 use crate::geometry::{GJK_ITERATIONS, GJK_TOUCHING, Gjk, GjkVerdict, Support, SupportFn};
 use crate::grasp::certify::support_with_error;
@@ -262,6 +265,12 @@ const SEED_DIRECTIONS: [[f64; 6]; 42] = {
 pub(super) struct MinkowskiSearch {
     nearest: ClosestToOrigin<6, MinkowskiSource>,
     seeds: Vec<[f64; 6]>,
+    /// The raw sum points GJK's support function handed out, and their tuples (`m` each).
+    seen: Vec<[f64; 6]>,
+    seen_tuples: Vec<usize>,
+    /// The tuples of GJK's final simplex (7·`m`), when it holds the origin well: the snapped
+    /// hull's start (see `Explicit::start_hull`); empty otherwise.
+    start: Vec<usize>,
 }
 
 impl Default for MinkowskiSearch {
@@ -269,6 +278,9 @@ impl Default for MinkowskiSearch {
         MinkowskiSearch {
             nearest: ClosestToOrigin::with_source([0.0; 6], MinkowskiSource::default()),
             seeds: Vec::new(),
+            seen: Vec::new(),
+            seen_tuples: Vec::new(),
+            start: Vec::new(),
         }
     }
 }
@@ -320,6 +332,8 @@ impl<'a> ImplicitSum<'a> {
         with_zero_wrench: bool,
         search: &'a mut MinkowskiSearch,
     ) -> Self {
+        // A start found for another grasp's sets must not outlive it.
+        search.start.clear();
         let source = search.nearest.source_mut();
         source.fill(cones, with_zero_wrench, false);
         let scale = source.raw_scale();
@@ -335,17 +349,38 @@ impl<'a> ImplicitSum<'a> {
         &self.search.nearest.source().raw_sets
     }
 
-    /// The partial hull of the sum the source holds, seeded from its own support points.
+    /// The partial hull of the sum the source holds, seeded from its own support points; with
+    /// `start`, also from the points of GJK's final simplex's tuples, which it starts from.
     fn hull<'h>(
         &mut self,
         hull: &'h mut Option<Hull<6>>,
+        start: bool,
     ) -> Result<Result<Built<'h>, SourceError<6>>, HullError> {
-        let MinkowskiSearch { nearest, seeds } = &mut *self.search;
+        let MinkowskiSearch {
+            nearest,
+            seeds,
+            start: tuples,
+            ..
+        } = &mut *self.search;
         let source = nearest.source_mut();
         seed_points(seeds, |d| {
             source.support_point(d).expect("a contact has cone edges")
         });
         let h = hull.get_or_insert_with(Hull::empty);
+        let m = source.raw_sets.len();
+        if start && m > 0 && tuples.len() == 7 * m {
+            let mut simplex = [0usize; 7];
+            for (s, tuple) in simplex.iter_mut().zip(tuples.chunks_exact(m)) {
+                let point = source.sum.sum_of(tuple.iter().copied());
+                source.log.push(point);
+                source.tuples.extend_from_slice(tuple);
+                *s = seeds.iter().position(|q| *q == point).unwrap_or_else(|| {
+                    seeds.push(point);
+                    seeds.len() - 1
+                });
+            }
+            h.start_next_build_from(&simplex);
+        }
         match h.rebuild_with_strategy(seeds, &mut *nearest) {
             Ok(Ok(result)) => Ok(Ok(Some((h, result)))),
             Ok(Err(e)) => Ok(Err(e)),
@@ -368,8 +403,44 @@ impl WrenchSet for ImplicitSum<'_> {
         {
             return Some(quality);
         }
-        let MinkowskiSearch { nearest, seeds } = &mut *self.search;
-        separated_sum(&nearest.source().raw_sets, seeds, self.scale, gjk, started)
+        let MinkowskiSearch {
+            nearest,
+            seeds,
+            seen,
+            seen_tuples,
+            start,
+        } = &mut *self.search;
+        let raw_sets = &nearest.source().raw_sets;
+        if !self.with_zero_wrench {
+            // Without the zero wrench, starting from GJK's simplex made more facets, not fewer
+            // (docs/benchmarks.md, "Issue 25"): the plain support function, nothing recorded.
+            let support = |v: &[f64; 6]| sum_support(raw_sets, v);
+            return separated_sum(support, seeds, self.scale, gjk, started);
+        }
+        seen.clear();
+        seen_tuples.clear();
+        // The raw sum's support point, its tuple recorded (the same point as `sum_support`:
+        // each contact's first maximiser, summed in order).
+        let support = |d: &[f64; 6]| {
+            let from = seen_tuples.len();
+            seen_tuples.extend(raw_sets.iter().map(|set| first_maximiser(set, d)));
+            let p = sum(raw_sets, seen_tuples[from..].iter().copied());
+            seen.push(p);
+            p
+        };
+        let quality = separated_sum(support, seeds, self.scale, gjk, started);
+        start.clear();
+        if quality.is_none() && holds_the_origin_well(gjk.face()) {
+            let m = raw_sets.len();
+            for p in gjk.face() {
+                let Some(i) = seen.iter().position(|q| q == p) else {
+                    start.clear();
+                    break;
+                };
+                start.extend_from_slice(&seen_tuples[i * m..(i + 1) * m]);
+            }
+        }
+        quality
     }
 
     fn is_flat(&mut self, flatness: &mut Flatness) -> bool {
@@ -377,7 +448,7 @@ impl WrenchSet for ImplicitSum<'_> {
     }
 
     fn flat_value(&mut self, gjk: &mut Gjk<6>, started: Instant) -> Result<Quality, QualityError> {
-        let MinkowskiSearch { nearest, seeds } = &mut *self.search;
+        let MinkowskiSearch { nearest, seeds, .. } = &mut *self.search;
         let raw_sets = &nearest.source().raw_sets;
         let (cones, zero) = (self.cones, self.with_zero_wrench);
         flat_sum(cones, zero, raw_sets, self.scale, seeds, gjk, started)
@@ -391,7 +462,7 @@ impl WrenchSet for ImplicitSum<'_> {
     ) -> Result<Built<'h>, QualityError> {
         // The source keeps its contract (its points are checked exactly, and within the seeds'
         // range); should it not, or should the engine refuse the snapped sum, the raw sum decides.
-        Ok(self.hull(hull).ok().and_then(Result::ok).flatten())
+        Ok(self.hull(hull, true).ok().and_then(Result::ok).flatten())
     }
 
     fn raw_hull<'h>(
@@ -402,7 +473,7 @@ impl WrenchSet for ImplicitSum<'_> {
     ) -> Result<Built<'h>, QualityError> {
         let source = self.search.nearest.source_mut();
         source.fill(self.cones, self.with_zero_wrench, true);
-        match self.hull(hull) {
+        match self.hull(hull, false) {
             Ok(Ok(built)) => Ok(built),
             // The source returns only points strictly beyond (exact test) and within its
             // seeds' range; a broken promise is reported, not assumed away.
@@ -447,18 +518,29 @@ fn zero_wrench_bound(with_zero_wrench: bool) -> Option<Quality> {
     with_zero_wrench.then(|| Quality::new(0.0, origin, Stats::default()))
 }
 
-/// GJK on the support function of the sum of `raw_sets`, from its support points along
+/// The index of the first point of `set` maximising `d·p` (as the slices' [`Support`]).
+fn first_maximiser(set: &[[f64; 6]], d: &[f64; 6]) -> usize {
+    let mut best = (f64::NEG_INFINITY, 0);
+    for (i, p) in set.iter().enumerate() {
+        let height = dot(*d, *p);
+        if height > best.0 || i == 0 {
+            best = (height, i);
+        }
+    }
+    best.1
+}
+
+/// GJK on the support function `support` of a Minkowski sum, from its support points along
 /// [`SEED_DIRECTIONS`] (in `seeds`): the quality when the sum is certified not to hold the
 /// origin.
 fn separated_sum(
-    raw_sets: &[Vec<[f64; 6]>],
+    mut support: impl FnMut(&[f64; 6]) -> [f64; 6],
     seeds: &mut Vec<[f64; 6]>,
     scale: f64,
     gjk: &mut Gjk<6>,
     started: Instant,
 ) -> Option<Quality> {
-    seed_points(seeds, |d| sum_support(raw_sets, d));
-    let support = |v: &[f64; 6]| sum_support(raw_sets, v);
+    seed_points(seeds, &mut support);
     match gjk.run(
         &mut SupportFn(support),
         scale,
@@ -521,7 +603,9 @@ impl WrenchSet for MaterialisedSum<'_> {
         {
             return Some(quality);
         }
-        separated_sum(&self.raw_sets, &mut self.seeds, self.scale, gjk, started)
+        let raw_sets = &self.raw_sets;
+        let support = |v: &[f64; 6]| sum_support(raw_sets, v);
+        separated_sum(support, &mut self.seeds, self.scale, gjk, started)
     }
 
     fn is_flat(&mut self, flatness: &mut Flatness) -> bool {
