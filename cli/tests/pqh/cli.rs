@@ -431,6 +431,13 @@ fn bench_gws_json_reports_ratios_and_agreement() {
 
 #[test]
 fn bench_gws_on_the_ellipsoid_agrees_across_methods() {
+    // Qhull on the caller's raw wrenches is the independent reference (the `qhull` feature, which
+    // CI builds); our full hull a consistency check beside it.
+    let methods = if cfg!(feature = "qhull") {
+        "partial,full,qhull"
+    } else {
+        "partial,full"
+    };
     let run = |object: &str| {
         let out = pqh(
             &[
@@ -438,6 +445,8 @@ fn bench_gws_on_the_ellipsoid_agrees_across_methods() {
                 "gws",
                 "--object",
                 object,
+                "--methods",
+                methods,
                 "--grasps",
                 "40",
                 "--full-grasps",
@@ -459,8 +468,12 @@ fn bench_gws_on_the_ellipsoid_agrees_across_methods() {
     assert_eq!(ellipsoid["object"], "ellipsoid");
     assert_eq!(bar["object"], "bar");
     let r = &ellipsoid["results"][0];
-    // The full method agrees with the partial one on every grasp, and some are force closure.
+    // Every method agrees with the partial one on every grasp (Qhull included, where built),
+    // and some grasps are force closure.
     assert_eq!(r["disagreements"], 0);
+    let evaluated = r["methods"].as_array().unwrap();
+    assert_eq!(evaluated.len(), methods.split(',').count());
+    assert!(evaluated.iter().all(|m| m["errors"] == 0), "{r}");
     let partial = &r["methods"][0];
     assert_eq!(partial["method"], "partial");
     assert!(partial["force_closure"].as_u64().unwrap() > 0, "{partial}");
