@@ -24,18 +24,34 @@
 //!
 //! A tie between two *different* facets at the same distance (a grasp with a symmetry, whose
 //! nearest facet and its mirror image are equally near) is seen on the hull the value came
-//! from ([`Quality::tied`]) and flagged; the numbers are then the derivative along the face
+//! from ([`Evaluation::tied`]) and flagged; the numbers are then the derivative along the face
 //! found (what moving into that face's side gives), not a gradient. Q_OWS's ties through
-//! another facet likewise ([`OwsQuality::tied`](super::ows::OwsQuality::tied)).
+//! another facet likewise.
 
-use super::quality::Quality;
-use super::{Contact, Grasp};
+use super::quality::Metric;
+use super::{Contact, Evaluation, Grasp};
 use crate::geometry::min_norm_point;
 use crate::geometry::vector::{add, cross, dot, norm, scale, sub};
 use faer::Mat;
 use faer::linalg::solvers::SolveLstsq;
 use std::f64::consts::PI;
 use std::fmt;
+
+/// Q1's or Q∞'s value and wrench scale from `quality`, which must be of the metric named
+/// `expected` (`is_expected`).
+fn hull_value(
+    quality: &Evaluation,
+    expected: &'static str,
+    is_expected: bool,
+) -> Result<(f64, f64), GradientError> {
+    match (is_expected, quality.value, quality.scale) {
+        (true, Some(value), Some(scale)) => Ok((value, scale)),
+        _ => Err(GradientError::OtherMetric {
+            expected,
+            found: quality.metric,
+        }),
+    }
+}
 
 /// The derivative of a metric's value with respect to the grasp's inputs, contact by contact in
 /// input order.
@@ -61,11 +77,18 @@ pub enum GradientError {
     /// A deciding wrench of the quality is none of the grasp's wrenches: the quality is not
     /// this grasp's Q1 (or was evaluated in a rescaled unit, for wrenches beyond 2^±256).
     NotThisGrasp {
-        /// The deciding wrench's position in [`Quality::deciding_wrenches`].
+        /// The deciding wrench's position in [`Evaluation::deciding_wrenches`].
         deciding: usize,
     },
     /// The quality names no deciding wrench.
     NoDecidingFace,
+    /// The evaluation is of another metric than the one this function differentiates.
+    OtherMetric {
+        /// The metric differentiated.
+        expected: &'static str,
+        /// The evaluation's metric.
+        found: Metric,
+    },
 }
 
 impl fmt::Display for GradientError {
@@ -77,6 +100,11 @@ impl fmt::Display for GradientError {
                  differentiate the Q1 evaluated on it"
             ),
             GradientError::NoDecidingFace => f.write_str("the quality names no deciding wrench"),
+            GradientError::OtherMetric { expected, found } => write!(
+                f,
+                "the evaluation is of {found}, not of {expected}: differentiate the metric it \
+                 evaluated"
+            ),
         }
     }
 }
@@ -93,17 +121,16 @@ const TIE: f64 = 1e-9;
 /// value is accurate to 1e−12 of it.
 const ON_PLANE: f64 = 1e-11;
 
-/// The gradient of `quality`, this grasp's Q1 (by any method of [`Evaluator`](
-/// super::quality::Evaluator)), with respect to every contact's position and normal and the
+/// The gradient of `quality`, this grasp's Q1 (by any method of
+/// [`Evaluator`](super::Evaluator)), with respect to every contact's position and normal and the
 /// friction coefficient.
 ///
 /// ```
-/// use pqhull::grasp::quality::{Evaluator, Method, Metric};
-/// use pqhull::grasp::{Contact, FrictionModel, Grasp, q1_gradient};
+/// use pqhull::grasp::{Contact, Evaluator, FrictionModel, Grasp, Method, Metric, q1_gradient};
 /// let contacts = [[1.0, 0.1, 0.0], [-1.0, 0.0, 0.2], [0.1, 1.0, 0.0], [0.0, -1.0, -0.1]]
 ///     .map(|p| Contact::try_new(p, p.map(|x| -x), None).unwrap());
 /// let grasp = Grasp::builder(contacts.to_vec(), FrictionModel::try_new(0.5, 8)?).build()?;
-/// let q1 = Evaluator::new(Metric::Q1, Method::Partial).evaluate(&grasp)?;
+/// let q1 = Evaluator::new(Metric::Q1, Method::Partial, None)?.evaluate(&grasp)?;
 /// let gradient = q1_gradient(&grasp, &q1)?;
 /// assert_eq!(gradient.positions.len(), 4);
 /// assert!(gradient.friction > 0.0); // more friction, a wider cone: a better grasp
@@ -111,9 +138,10 @@ const ON_PLANE: f64 = 1e-11;
 /// ```
 ///
 /// # Errors
-/// [`GradientError`] when `quality` is not this grasp's (its deciding wrenches are not the
-/// grasp's wrenches).
-pub fn q1_gradient(grasp: &Grasp, quality: &Quality) -> Result<Gradient, GradientError> {
+/// [`GradientError::OtherMetric`] when `quality` is not of Q1; [`GradientError::NotThisGrasp`]
+/// when it is not this grasp's (its deciding wrenches are not the grasp's wrenches).
+pub fn q1_gradient(grasp: &Grasp, quality: &Evaluation) -> Result<Gradient, GradientError> {
+    let (value, scale) = hull_value(quality, "q1", quality.metric == Metric::Q1)?;
     let wrenches = grasp.wrenches();
     let deciding = quality.deciding_wrenches();
     if deciding.is_empty() {
@@ -126,7 +154,6 @@ pub fn q1_gradient(grasp: &Grasp, quality: &Quality) -> Result<Gradient, Gradien
     }
     // u*: from the origin toward the deciding face's nearest point inside, away from it outside.
     let (_, x) = nearest_in_affine_hull(deciding);
-    let value = quality.value;
     let distance = norm(x);
     let sign = if value > 0.0 { 1.0 } else { -1.0 };
     let u: [f64; 6] = std::array::from_fn(|c| sign * x[c] / distance);
@@ -135,7 +162,7 @@ pub fn q1_gradient(grasp: &Grasp, quality: &Quality) -> Result<Gradient, Gradien
         return Ok(Gradient::zero(grasp.contact_count(), false));
     }
     // A tie with another facet (`Quality::tied`): a minimum of two faces' distances.
-    let mut differentiable = value != 0.0 && value.abs() > TIE * quality.scale && !quality.tied();
+    let mut differentiable = value != 0.0 && value.abs() > TIE * scale && !quality.tied();
     // The whole face along u*: every wrench on the supporting plane u*·w = V. The deciding
     // wrenches are one simplex of it; a friction pyramid with three wrenches on the plane lies
     // in it whole (its k edges span one 2-flat, and stay in one as the inputs move), so the
@@ -143,7 +170,7 @@ pub fn q1_gradient(grasp: &Grasp, quality: &Quality) -> Result<Gradient, Gradien
     // again; the weights of that point on its support are the dual weights Danskin's theorem
     // asks for (any such weights give the same derivative where V is differentiable).
     let plane: Vec<usize> = (0..wrenches.len())
-        .filter(|&j| dot6(&u, &wrenches[j]) >= value - ON_PLANE * quality.scale)
+        .filter(|&j| dot6(&u, &wrenches[j]) >= value - ON_PLANE * scale)
         .collect();
     let nearest = min_norm_point(plane.len(), |i| wrenches[plane[i]], &[0.0; 6]);
     let support: Vec<usize> = nearest.support().iter().map(|&i| plane[i]).collect();
@@ -151,7 +178,7 @@ pub fn q1_gradient(grasp: &Grasp, quality: &Quality) -> Result<Gradient, Gradien
     let (weights, foot) = nearest_in_affine_hull(&face);
     // The foot of the face found must be the deciding one's, in the face's relative interior.
     differentiable &=
-        norm(sub6(&foot, &x)) <= TIE * quality.scale && weights.iter().all(|&l| l > TIE);
+        norm(sub6(&foot, &x)) <= TIE * scale && weights.iter().all(|&l| l > TIE);
     // A repeated wrench (contacts listed twice): which copy decides is a tie.
     differentiable &= support
         .iter()
@@ -221,7 +248,7 @@ impl Gradient {
 /// along the deciding direction): a few per contact in general, k for a whole pyramid.
 const MAX_FACE_TUPLES: usize = 1 << 16;
 
-/// The gradient of `quality`, this grasp's Q∞ (`with_zero_wrench` as it was evaluated), with
+/// The gradient of `quality`, this grasp's Q∞ (with or without the zero wrench, as evaluated), with
 /// respect to every contact's position and normal and the friction coefficient.
 ///
 /// Q∞ is the signed distance from the origin to the boundary of the Minkowski sum `⊕_i W_i` of
@@ -232,31 +259,33 @@ const MAX_FACE_TUPLES: usize = 1 << 16;
 /// wrench's weight is the total of the sums it is in.
 ///
 /// ```
-/// use pqhull::grasp::quality::{Evaluator, Method, Metric};
-/// use pqhull::grasp::{Contact, FrictionModel, Grasp, qinf_gradient};
+/// use pqhull::grasp::{Contact, Evaluator, FrictionModel, Grasp, Method, Metric, qinf_gradient};
 /// let contacts = [[0.9, 0.1, 0.2], [-0.8, 0.3, 0.1], [0.2, -0.9, 0.3], [0.1, 0.2, -0.95]]
 ///     .map(|p| Contact::try_new(p, p.map(|x| -x), None).unwrap());
 /// let grasp = Grasp::builder(contacts.to_vec(), FrictionModel::try_new(0.6, 6)?).build()?;
 /// let metric = Metric::QInf { with_zero_wrench: false };
-/// let qinf = Evaluator::new(metric, Method::Partial).evaluate(&grasp)?;
-/// let gradient = qinf_gradient(&grasp, &qinf, false)?;
+/// let qinf = Evaluator::new(metric, Method::Partial, None)?.evaluate(&grasp)?;
+/// let gradient = qinf_gradient(&grasp, &qinf)?;
 /// assert_eq!(gradient.normals.len(), 4);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 ///
 /// # Errors
-/// [`GradientError::NoDecidingFace`] when the quality names no deciding wrench.
-pub fn qinf_gradient(
-    grasp: &Grasp,
-    quality: &Quality,
-    with_zero_wrench: bool,
-) -> Result<Gradient, GradientError> {
+/// [`GradientError::OtherMetric`] when `quality` is not of Q∞;
+/// [`GradientError::NoDecidingFace`] when it names no deciding wrench.
+pub fn qinf_gradient(grasp: &Grasp, quality: &Evaluation) -> Result<Gradient, GradientError> {
+    let Metric::QInf { with_zero_wrench } = quality.metric else {
+        return Err(GradientError::OtherMetric {
+            expected: "qinf",
+            found: quality.metric,
+        });
+    };
+    let (value, scale) = hull_value(quality, "qinf", true)?;
     let deciding = quality.deciding_wrenches();
     if deciding.is_empty() {
         return Err(GradientError::NoDecidingFace);
     }
     let (_, x) = nearest_in_affine_hull(deciding);
-    let value = quality.value;
     let distance = norm(x);
     let sign = if value > 0.0 { 1.0 } else { -1.0 };
     let u: [f64; 6] = std::array::from_fn(|c| sign * x[c] / distance);
@@ -266,7 +295,7 @@ pub fn qinf_gradient(
         return Ok(Gradient::zero(m, false));
     }
     // A tie with another facet (`Quality::tied`): a minimum of two faces' distances.
-    let mut differentiable = value != 0.0 && value.abs() > TIE * quality.scale && !quality.tied();
+    let mut differentiable = value != 0.0 && value.abs() > TIE * scale && !quality.tied();
     // Each contact's face along u*, and the support value it adds.
     let mut faces: Vec<Vec<(usize, [f64; 6])>> = Vec::with_capacity(m);
     let mut support = 0.0;
@@ -291,7 +320,7 @@ pub fn qinf_gradient(
         );
     }
     // The deciding direction must be the one whose support is the value.
-    differentiable &= (support - value).abs() <= TIE * quality.scale;
+    differentiable &= (support - value).abs() <= TIE * scale;
     let count = faces
         .iter()
         .try_fold(1usize, |n, f| n.checked_mul(f.len()))
@@ -334,7 +363,7 @@ pub fn qinf_gradient(
     let face: Vec<[f64; 6]> = chosen.iter().map(|&s| sums[s]).collect();
     let (weights, foot) = nearest_in_affine_hull(&face);
     differentiable &=
-        norm(sub6(&foot, &x)) <= TIE * quality.scale && weights.iter().all(|&l| l > TIE);
+        norm(sub6(&foot, &x)) <= TIE * scale && weights.iter().all(|&l| l > TIE);
     // A generic face of the sum is the sum of faces whose dimensions add up to its own; more
     // (three whole pyramids tied along u*, say) is a degenerate direction where a slight move
     // of the inputs breaks the ties one way or the other.
@@ -473,9 +502,10 @@ fn nearest_in_affine_hull(face: &[[f64; 6]]) -> (Vec<f64>, [f64; 6]) {
 }
 
 /// The gradient of `quality`, this grasp's Q_OWS against `space` (by an exact method of
-/// [`OwsEvaluator`](super::ows::OwsEvaluator)), with respect to every contact's position and
-/// normal and the friction coefficient; `None` when the grasp is not force closure (Q_OWS has
-/// no value) or the method named no deciding disturbance (the ellipsoid's approximation).
+/// [`Evaluator`](super::Evaluator)), with respect to every contact's position and normal and the
+/// friction coefficient; `None` when the grasp is not force closure (Q_OWS has no value), the
+/// method named no deciding disturbance (the ellipsoid's approximation), or `quality` is not of
+/// Q_OWS.
 ///
 /// Q_OWS is `ρ* = min_d max {ρ : −ρ d ∈ H}` over the disturbances `d`, `H` the hull of the
 /// wrenches. The deciding disturbance's exit point `y = −ρ* d*` lies on a facet of `H` with
@@ -484,12 +514,11 @@ fn nearest_in_affine_hull(face: &[[f64; 6]]) -> (Vec<f64>, [f64; 6]) {
 /// completed by every wrench on its plane, as for Q1). Flagged not differentiable: `y` on a
 /// ridge (a weight near zero), and another disturbance whose ray crosses the facet's plane as
 /// early (a tie among disturbances), and a tie through another facet
-/// ([`OwsQuality::tied`](super::ows::OwsQuality::tied)).
+/// ([`Evaluation::tied`]).
 ///
 /// ```
-/// use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
-/// use pqhull::grasp::quality::Method;
-/// use pqhull::grasp::{Contact, FrictionModel, Grasp, ows_gradient};
+/// use pqhull::grasp::ows::ObjectWrenchSpace;
+/// use pqhull::grasp::{Contact, Evaluator, FrictionModel, Grasp, Method, Metric, ows_gradient};
 /// let contacts = [[0.9, 0.1, 0.2], [-0.8, 0.3, 0.1], [0.2, -0.9, 0.3], [0.1, 0.2, -0.95]]
 ///     .map(|p| Contact::try_new(p, p.map(|x| -x), None).unwrap());
 /// let grasp = Grasp::builder(contacts.to_vec(), FrictionModel::try_new(0.6, 6)?).build()?;
@@ -497,7 +526,7 @@ fn nearest_in_affine_hull(face: &[[f64; 6]]) -> (Vec<f64>, [f64; 6]) {
 ///     [0.0, 0.0, -1.0, 0.0, 0.0, 0.0],
 ///     [0.3, 0.0, 0.0, 0.0, 0.1, 0.0],
 /// ])?;
-/// let ows = OwsEvaluator::new(Method::Partial).evaluate(&grasp, &space)?;
+/// let ows = Evaluator::new(Metric::Ows, Method::Partial, Some(&space))?.evaluate(&grasp)?;
 /// let gradient = ows_gradient(&grasp, &space, &ows).expect("force closure");
 /// assert_eq!(gradient.positions.len(), 4);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
@@ -505,8 +534,11 @@ fn nearest_in_affine_hull(face: &[[f64; 6]]) -> (Vec<f64>, [f64; 6]) {
 pub fn ows_gradient(
     grasp: &Grasp,
     space: &super::ows::ObjectWrenchSpace,
-    quality: &super::ows::OwsQuality,
+    quality: &Evaluation,
 ) -> Option<Gradient> {
+    if quality.metric != Metric::Ows {
+        return None;
+    }
     let rho = quality.value?;
     let deciding = quality.deciding_disturbance?;
     let disturbances = space.disturbances();
@@ -544,7 +576,7 @@ pub fn ows_gradient(
     let shifted: Vec<[f64; 6]> = support.iter().map(|&j| sub6(&wrenches[j], &y)).collect();
     let (weights, offset) = nearest_in_affine_hull(&shifted);
     let across = -dot6(&u, &d);
-    let mut differentiable = !quality.tied
+    let mut differentiable = !quality.tied()
         && across > 0.0
         && norm(offset) <= TIE * scale
         && weights.iter().all(|&l| l > TIE)

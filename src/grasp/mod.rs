@@ -60,6 +60,8 @@
 mod certify;
 mod contact;
 mod error;
+mod evaluation;
+mod evaluator;
 mod flatness;
 mod friction;
 mod gradient;
@@ -75,8 +77,11 @@ mod wrench;
 
 pub use contact::{Contact, TANGENT_PARALLEL_TOLERANCE};
 pub use error::GraspError;
+pub use evaluation::{Bracket, Evaluation};
+pub use evaluator::{Evaluator, evaluate_batch};
 pub use friction::{FrictionModel, MAX_CONE_EDGES, MIN_CONE_EDGES};
 pub use gradient::{Gradient, GradientError, ows_gradient, q1_gradient, qinf_gradient};
+pub use quality::{Method, Metric, QualityError};
 #[cfg(feature = "parallel")]
 pub use threads::thread_pool;
 pub use threads::{MAX_THREADS, ThreadsError, check_threads, with_threads};

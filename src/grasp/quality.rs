@@ -30,8 +30,7 @@
 //! and origins within rounding of the boundary, go on to the exact partial hull.
 //!
 //! ```
-//! use pqhull::grasp::quality::{Evaluator, Method, Metric};
-//! use pqhull::grasp::{Contact, FrictionModel, Grasp};
+//! use pqhull::grasp::{Contact, Evaluator, FrictionModel, Grasp, Method, Metric};
 //!
 //! // Four fingers on the unit cube [−½, ½]³, two pairs of opposite faces.
 //! let contacts = vec![
@@ -44,17 +43,19 @@
 //!     .torque_scale(0.75_f64.sqrt())
 //!     .build()?;
 //!
-//! let mut partial = Evaluator::new(Metric::Q1, Method::Partial);
-//! let mut full = Evaluator::new(Metric::Q1, Method::Full);
+//! let mut partial = Evaluator::new(Metric::Q1, Method::Partial, None)?;
+//! let mut full = Evaluator::new(Metric::Q1, Method::Full, None)?;
 //! let (a, b) = (partial.evaluate(&grasp)?, full.evaluate(&grasp)?);
-//! assert!(a.force_closure && a.value > 0.0);
-//! assert!((a.value - b.value).abs() <= 1e-12 * b.value);
+//! let (a_value, b_value) = (a.value.unwrap(), b.value.unwrap());
+//! assert!(a.force_closure && a_value > 0.0);
+//! assert!((a_value - b_value).abs() <= 1e-12 * b_value);
 //! assert!(a.stats.facets_created < b.stats.facets_created);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use super::Grasp;
 use super::certify::BracketScratch;
+use super::evaluation::{Evaluation, MAX_DECIDING};
 use super::pipeline::{self, Buffers, Expansion};
 use super::snap::{SnappedCones, pyramid_labels, snapped_union};
 use crate::Hull;
@@ -77,16 +78,14 @@ pub(in crate::grasp) use explicit::{holds_the_origin_well, nearest_hull};
 pub use minkowski::MINKOWSKI_MATERIALISE_LIMIT;
 pub use vocabulary::{Method, Metric, NameError};
 
-/// Up to seven wrenches: a facet's six, or the points spanning a nearest face.
-const MAX_DECIDING: usize = 7;
-
 /// Another facet within this fraction of the wrench scale of the value is a tie
-/// ([`Quality::tied`]): the gradients' tolerance, far above the value's accuracy (1e−12).
+/// ([`Evaluation::tied`]): the gradients' tolerance, far above the value's accuracy (1e−12).
 const TIE_BAND: f64 = 1e-9;
 
-/// The result of one evaluation.
+/// The result of one evaluation of Q1 or Q∞ inside the grasp layer (a value that is always a
+/// number); what callers get is its [`Evaluation`].
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Quality {
+pub(in crate::grasp) struct Quality {
     /// Whether the grasp is force closure: `value ≥ FORCE_CLOSURE_EPSILON · scale`, decided on
     /// the certified value (see [`FORCE_CLOSURE_EPSILON`]). A grasp whose value lies below the
     /// band — on the boundary within rounding, or rank-deficient — is not.
@@ -107,25 +106,23 @@ pub struct Quality {
 }
 
 impl Quality {
+    /// The caller's view of this quality: its [`Evaluation`] as `metric` by `method`.
+    pub(in crate::grasp) fn into_evaluation(self, metric: Metric, method: Method) -> Evaluation {
+        let mut evaluation =
+            Evaluation::new(metric, method, self.force_closure, Some(self.value), self.stats)
+                .with_deciding(self.deciding_wrenches().iter().copied())
+                .with_tie(self.tied);
+        evaluation.scale = Some(self.scale);
+        evaluation
+    }
+
     /// The wrenches that decide the value: the vertices of the nearest facet when force closure;
     /// otherwise the wrenches spanning the face that holds the hull's point nearest the origin.
     pub fn deciding_wrenches(&self) -> &[[f64; 6]] {
         &self.deciding[..self.deciding_len]
     }
 
-    /// Whether another facet, on another plane, is as near the origin as the deciding one
-    /// (within 1e−9 of the scale): the value is then a minimum of two smooth functions of the
-    /// grasp, not differentiable ([`q1_gradient`](crate::grasp::q1_gradient) and
-    /// [`qinf_gradient`](crate::grasp::qinf_gradient) say so). Seen on the hull the value came
-    /// from, partial or full (a partial hull's tie is the full hull's: see the module
-    /// `ties`); a near tie with a facet of a partial hull that would still grow is flagged
-    /// too (Qhull's value: from its floating-point planes). Always `false` when the origin is
-    /// not inside (the nearest point of a convex set is unique) and for the ellipsoid's values.
-    pub fn tied(&self) -> bool {
-        self.tied
-    }
-
-    /// This quality, flagged as tied when another facet of `hull` is (see [`tied`](Self::tied));
+    /// This quality, flagged as tied when another facet of `hull` is (see [`Evaluation::tied`]);
     /// `facet` decides the value, `scale` is the wrench scale and `delta` bounds the distance
     /// between `hull`'s points and the caller's wrenches (0 for a hull of the caller's own).
     /// `bracketed`: the scratch of the bracket that certified the value on `hull`, whose
@@ -282,13 +279,14 @@ pub(in crate::grasp) fn check_wrenches(wrenches: &[[f64; 6]]) -> Result<(), Qual
     Ok(())
 }
 
-/// Evaluates one metric by one method over many grasps, reusing its buffers: the wrenches, the
+/// Evaluates Q1 or Q∞ by one method over many grasps, reusing its buffers: the wrenches, the
 /// hull's arena ([`Hull::rebuild_with_strategy`]), the partial strategy's queue, GJK's corral and,
 /// for Q∞, the implicit Minkowski source. In steady state the only allocations left are the
 /// exact-arithmetic caches of facets whose floating-point filter fails (one box each; about 19
 /// per force-closure Q1 grasp at 4 × 32 edges, none for grasps GJK settles: `tests/allocation.rs`).
+/// The engine behind [`Evaluator`](crate::grasp::Evaluator) for these two metrics.
 #[derive(Clone, Debug)]
-pub struct Evaluator {
+pub(in crate::grasp) struct HullEvaluator {
     metric: Metric,
     method: Method,
     cones: SnappedCones,
@@ -300,10 +298,10 @@ pub struct Evaluator {
     minkowski: minkowski::MinkowskiSearch,
 }
 
-impl Evaluator {
-    /// An evaluator for `metric` by `method`.
-    pub fn new(metric: Metric, method: Method) -> Self {
-        Evaluator {
+impl HullEvaluator {
+    /// An evaluator for `metric` (Q1 or Q∞) by `method`.
+    pub(in crate::grasp) fn new(metric: Metric, method: Method) -> Self {
+        HullEvaluator {
             metric,
             method,
             cones: SnappedCones::default(),
@@ -314,16 +312,6 @@ impl Evaluator {
         }
     }
 
-    /// The metric evaluated.
-    pub fn metric(&self) -> Metric {
-        self.metric
-    }
-
-    /// The method used.
-    pub fn method(&self) -> Method {
-        self.method
-    }
-
     /// Evaluates `grasp`: the exact metric on the caller's wrenches ([`Grasp::wrenches`]), found
     /// on snapped ones and certified on the raw ones (see the [module docs](self)).
     ///
@@ -332,11 +320,8 @@ impl Evaluator {
     /// [`QualityError::WrenchTooLarge`] above [`MAX_WRENCH_COORDINATE`];
     /// [`QualityError::MinkowskiTooLarge`] for Q∞ by a full method with too many points;
     /// [`QualityError::Qhull`] when Qhull fails.
-    pub fn evaluate(&mut self, grasp: &Grasp) -> Result<Quality, QualityError> {
+    pub(in crate::grasp) fn evaluate(&mut self, grasp: &Grasp) -> Result<Quality, QualityError> {
         let started = Instant::now();
-        if !matches!(self.metric, Metric::Q1 | Metric::QInf { .. }) {
-            return Err(not_evaluators(self.metric));
-        }
         if !self.method.supports(self.metric) {
             return Err(QualityError::UnsupportedMethod {
                 method: self.method,
@@ -386,7 +371,14 @@ impl Evaluator {
                     minkowski::qhull(&self.cones, with_zero_wrench, &mut self.wrenches, started)?
                 }
             },
-            metric => return Err(not_evaluators(metric)),
+            // `Evaluator` sends only Q1 and Q∞ here; the vocabulary's other metrics have no
+            // hull of their own.
+            metric => {
+                return Err(QualityError::UnsupportedMethod {
+                    method: self.method,
+                    metric,
+                });
+            }
         };
         quality = quality.in_caller_units(unit);
         quality.stats.elapsed = started.elapsed();
@@ -394,34 +386,27 @@ impl Evaluator {
     }
 }
 
-/// The error for a metric that [`Evaluator`] does not compute.
-fn not_evaluators(metric: Metric) -> QualityError {
-    match metric {
-        Metric::Ows => QualityError::OwsNeedsWrenchSpace,
-        metric => QualityError::NotEvaluatorMetric { metric },
-    }
-}
-
-/// Q1 of `grasp` by the partial hull.
+/// Q1 of `grasp` by the partial hull: one grasp's
+/// [`Evaluator::new(Metric::Q1, Method::Partial, None)`](crate::grasp::Evaluator::new).
 ///
 /// # Errors
-/// As [`Evaluator::evaluate`].
-pub fn q1(grasp: &Grasp) -> Result<Quality, QualityError> {
-    Evaluator::new(Metric::Q1, Method::Partial).evaluate(grasp)
+/// As [`Evaluator::evaluate`](crate::grasp::Evaluator::evaluate).
+pub fn q1(grasp: &Grasp) -> Result<Evaluation, QualityError> {
+    let metric = Metric::Q1;
+    let quality = HullEvaluator::new(metric, Method::Partial).evaluate(grasp)?;
+    Ok(quality.into_evaluation(metric, Method::Partial))
 }
 
 /// Q∞ of `grasp` (without the zero wrench) by the partial hull over the implicit Minkowski sum.
 ///
 /// # Errors
-/// As [`Evaluator::evaluate`].
-pub fn q_inf(grasp: &Grasp) -> Result<Quality, QualityError> {
-    Evaluator::new(
-        Metric::QInf {
-            with_zero_wrench: false,
-        },
-        Method::Partial,
-    )
-    .evaluate(grasp)
+/// As [`Evaluator::evaluate`](crate::grasp::Evaluator::evaluate).
+pub fn q_inf(grasp: &Grasp) -> Result<Evaluation, QualityError> {
+    let metric = Metric::QInf {
+        with_zero_wrench: false,
+    };
+    let quality = HullEvaluator::new(metric, Method::Partial).evaluate(grasp)?;
+    Ok(quality.into_evaluation(metric, Method::Partial))
 }
 
 /// Q1 of an explicit wrench set (not snapped: exact on exactly these numbers), by `method`.
@@ -438,19 +423,27 @@ pub fn q_inf(grasp: &Grasp) -> Result<Quality, QualityError> {
 ///     }
 /// }
 /// let q = q1_of_wrenches(&w, Method::Partial)?;
-/// assert!(q.force_closure && (q.value - 1.0 / 6f64.sqrt()).abs() < 1e-15);
+/// assert!(q.force_closure && (q.value.unwrap() - 1.0 / 6f64.sqrt()).abs() < 1e-15);
 /// # Ok::<(), pqhull::grasp::quality::QualityError>(())
 /// ```
 ///
 /// # Errors
 /// [`QualityError::NonFiniteWrench`] for a NaN or infinite coordinate;
 /// [`QualityError::WrenchTooLarge`] above [`MAX_WRENCH_COORDINATE`]; [`QualityError::Qhull`].
-pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Quality, QualityError> {
+pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Evaluation, QualityError> {
+    Ok(q1_quality_of_wrenches(wrenches, method)?.into_evaluation(Metric::Q1, method))
+}
+
+/// [`q1_of_wrenches`] as the grasp layer's own [`Quality`].
+pub(in crate::grasp) fn q1_quality_of_wrenches(
+    wrenches: &[[f64; 6]],
+    method: Method,
+) -> Result<Quality, QualityError> {
     check_wrenches(wrenches)?;
     let unit = WrenchUnit::for_largest(largest_coordinate(wrenches));
     if unit != WrenchUnit(0) {
         let scaled: Vec<[f64; 6]> = wrenches.iter().map(|&w| unit.apply(w)).collect();
-        let quality = q1_of_wrenches(&scaled, method)?;
+        let quality = q1_quality_of_wrenches(&scaled, method)?;
         return Ok(quality.in_caller_units(unit));
     }
     if wrenches.is_empty() {
@@ -472,15 +465,15 @@ pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Quality, 
     Ok(quality)
 }
 
-/// Evaluates every grasp, results in input order: on all cores (rayon's current pool) with the
-/// `parallel` feature (a default), else one after another.
+/// Evaluates every grasp by Q1 or Q∞, results in input order: on all cores (rayon's current
+/// pool) with the `parallel` feature (a default), else one after another.
 ///
-/// Each worker thread keeps one [`Evaluator`] per (metric, method) for the life of the thread,
-/// so its buffers and hull arena are reused across rayon's jobs and across batches: a planner
-/// calling this in a loop allocates, per grasp, only what [`Evaluator`] does. (rayon's
+/// Each worker thread keeps one [`HullEvaluator`] per (metric, method) for the life of the
+/// thread, so its buffers and hull arena are reused across rayon's jobs and across batches: a
+/// planner calling this in a loop allocates, per grasp, only what the evaluator does. (rayon's
 /// `map_init` would make a fresh evaluator for every job it splits off, a cold arena each
 /// time, which cost a quarter of the two-thread speed-up on batches of small grasps.)
-pub fn evaluate_batch(
+pub(in crate::grasp) fn evaluate_hull_batch(
     grasps: &[Grasp],
     metric: Metric,
     method: Method,
@@ -491,8 +484,8 @@ pub fn evaluate_batch(
 }
 
 thread_local! {
-    /// The evaluators of [`evaluate_batch`] on this thread, one per (metric, method) used.
-    static EVALUATORS: std::cell::RefCell<Vec<Evaluator>> = const {
+    /// The evaluators of [`evaluate_hull_batch`] on this thread, one per (metric, method) used.
+    static EVALUATORS: std::cell::RefCell<Vec<HullEvaluator>> = const {
         std::cell::RefCell::new(Vec::new())
     };
 }
@@ -501,13 +494,13 @@ thread_local! {
 fn with_thread_evaluator<T>(
     metric: Metric,
     method: Method,
-    f: impl FnOnce(&mut Evaluator) -> T,
+    f: impl FnOnce(&mut HullEvaluator) -> T,
 ) -> T {
     EVALUATORS.with_borrow_mut(|evaluators| {
         let evaluator = find_or_make(
             evaluators,
             |e| e.metric == metric && e.method == method,
-            || Evaluator::new(metric, method),
+            || HullEvaluator::new(metric, method),
         );
         f(evaluator)
     })
@@ -601,7 +594,7 @@ fn qhull_q1(w: &[[f64; 6]], started: Instant) -> Result<Quality, QualityError> {
         Err(QhullError::Qhull { code, message }) if code == 6154 || message.contains("QH6154") => {
             return Ok(degenerate(w, started));
         }
-        Err(e) => return Err(QualityError::Qhull(e.to_string())),
+        Err(e) => return Err(QualityError::Qhull(e)),
     };
     let stats = Stats {
         points_processed: hull.vertices.len(),

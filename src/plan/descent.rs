@@ -69,8 +69,8 @@ use super::{PlanError, samples, torque_frame};
 use crate::geometry::Rng;
 use crate::geometry::vector::{dot, norm, scale, sub};
 use crate::grasp::json::write_grasp;
-use crate::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
-use crate::grasp::quality::{Evaluator, Method, Metric, Quality};
+use crate::grasp::ows::ObjectWrenchSpace;
+use crate::grasp::{Evaluation, Evaluator, Method, Metric};
 use crate::grasp::{
     Contact, FrictionModel, Gradient, Grasp, GraspError, MAX_CONTACTS, ows_gradient, q1_gradient,
     qinf_gradient,
@@ -283,18 +283,19 @@ impl DescentReport {
 /// One grasp's evaluation: its rank and what its gradient needs.
 enum Evaluated {
     /// Q1 or Q∞ (the climb toward force closure of a Q_OWS run included).
-    Hull(Box<Quality>, Metric),
+    Hull(Box<Evaluation>),
     /// Q_OWS of a force-closure grasp.
-    Ows(crate::grasp::ows::OwsQuality),
+    Ows(Box<Evaluation>),
 }
 
 /// The metric evaluators of a run, and the time and work they took.
 struct Climber<'a> {
     metric: Metric,
     space: Option<&'a ObjectWrenchSpace>,
-    q1: Evaluator,
-    qinf: Option<Evaluator>,
-    ows: OwsEvaluator,
+    q1: Evaluator<'static>,
+    qinf: Option<Evaluator<'static>>,
+    /// Q_OWS, in a run that climbs it.
+    ows: Option<Evaluator<'a>>,
     /// The random probes' directions.
     rng: Rng,
     report: DescentReport,
@@ -323,34 +324,36 @@ impl Climber<'_> {
     }
 
     fn evaluate_untimed(&mut self, grasp: &Grasp) -> Result<((bool, f64), Evaluated), PlanError> {
-        if let (Metric::Ows, Some(space)) = (self.metric, self.space) {
-            let q = self.ows.evaluate(grasp, space)?;
+        if let Some(ows) = self.ows.as_mut() {
+            let q = ows.evaluate(grasp)?;
             self.report.evaluations += 1;
             self.report.facets_created += q.stats.facets_created;
             if let Some(value) = q.value {
-                return Ok(((true, value), Evaluated::Ows(q)));
+                return Ok(((true, value), Evaluated::Ows(Box::new(q))));
             }
         }
-        let (evaluator, metric) = match (self.metric, self.qinf.as_mut()) {
-            (Metric::QInf { .. }, Some(e)) => (e, self.metric),
-            _ => (&mut self.q1, Metric::Q1),
+        let evaluator = match self.qinf.as_mut() {
+            Some(e) => e,
+            None => &mut self.q1,
         };
         let q = evaluator.evaluate(grasp)?;
         self.report.evaluations += 1;
         self.report.facets_created += q.stats.facets_created;
         // A Q_OWS run ranks a grasp it found not force closure below every one it did.
         let closure = q.force_closure && self.metric != Metric::Ows;
-        Ok(((closure, q.value), Evaluated::Hull(Box::new(q), metric)))
+        // Q1 and Q∞ always have a value.
+        let value = q.value.unwrap_or(f64::NEG_INFINITY);
+        Ok(((closure, value), Evaluated::Hull(Box::new(q))))
     }
 
     /// The gradient of the value at `grasp`, or `None` where there is none to follow.
     fn gradient(&mut self, grasp: &Grasp, evaluated: &Evaluated) -> Option<Gradient> {
         let timer = Instant::now();
         let gradient = match evaluated {
-            Evaluated::Hull(q, Metric::QInf { with_zero_wrench }) => {
-                qinf_gradient(grasp, q, *with_zero_wrench).ok()
-            }
-            Evaluated::Hull(q, _) => q1_gradient(grasp, q).ok(),
+            Evaluated::Hull(q) => match q.metric {
+                Metric::QInf { .. } => qinf_gradient(grasp, q).ok(),
+                _ => q1_gradient(grasp, q).ok(),
+            },
             Evaluated::Ows(q) => self.space.and_then(|space| ows_gradient(grasp, space, q)),
         };
         self.report.gradient_time += timer.elapsed();
@@ -390,10 +393,15 @@ pub fn plan_descent(
     let mut climber = Climber {
         metric: config.metric,
         space,
-        q1: Evaluator::new(Metric::Q1, method),
-        qinf: matches!(config.metric, Metric::QInf { .. })
-            .then(|| Evaluator::new(config.metric, method)),
-        ows: OwsEvaluator::new(method),
+        q1: Evaluator::new(Metric::Q1, method, None)?,
+        qinf: match config.metric {
+            Metric::QInf { .. } => Some(Evaluator::new(config.metric, method, None)?),
+            _ => None,
+        },
+        ows: match (config.metric, space) {
+            (Metric::Ows, Some(space)) => Some(Evaluator::new(Metric::Ows, method, Some(space))?),
+            _ => None,
+        },
         rng: Rng::new(config.seed ^ PROBE_SEED),
         report: DescentReport {
             planned: Vec::with_capacity(config.starts),

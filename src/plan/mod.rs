@@ -39,9 +39,8 @@
 
 use crate::geometry::Rng;
 use crate::grasp::json::write_contact;
-use crate::grasp::metrics::{MetricError, Scorer};
 use crate::grasp::ows::ObjectWrenchSpace;
-use crate::grasp::quality::{Method, Metric, QualityError};
+use crate::grasp::{Evaluator, Method, Metric, QualityError};
 use crate::grasp::{Contact, FrictionModel, Grasp, GraspError, MAX_CONTACTS};
 use crate::mesh::{Mesh, SurfaceSampler};
 use serde_json::{Value, json};
@@ -73,7 +72,7 @@ pub struct PlanConfig {
     pub samples: usize,
     /// Friction model of every contact.
     pub friction: FrictionModel,
-    /// The metric to maximise: any of them ([`Scorer`] computes it). Grasps are ranked by value
+    /// The metric to maximise: any of them ([`Evaluator`] computes it). Grasps are ranked by value
     /// among the force-closure ones only.
     pub metric: Metric,
     /// Seed of the contact sampling: the same seed gives the same grasps for every method.
@@ -265,11 +264,8 @@ pub enum PlanError {
     /// A sampled contact or grasp was invalid (cannot happen for a valid mesh; reported, not
     /// hidden).
     Grasp(GraspError),
-    /// A metric failed.
+    /// A metric failed (for instance a zero wrench to resist).
     Quality(QualityError),
-    /// One of [`metrics`](crate::grasp::metrics)' metrics failed (for instance a zero wrench to
-    /// resist).
-    Metric(MetricError),
     /// [`plan_descent`] climbs Q1, Q∞ and Q_OWS, whose gradients it has; not this metric.
     NotClimbable(Metric),
     /// A [`StepRule`] that is not `0 < min ≤ initial ≤ max < ∞` with a finite `grow ≥ 1`.
@@ -319,7 +315,6 @@ impl fmt::Display for PlanError {
             PlanError::Grasp(e @ GraspError::TooManyContacts { .. }) => write!(f, "{e}"),
             PlanError::Grasp(e) => write!(f, "sampled grasp: {e}"),
             PlanError::Quality(e) => write!(f, "quality: {e}"),
-            PlanError::Metric(e) => write!(f, "metric: {e}"),
             PlanError::NotClimbable(metric) => write!(
                 f,
                 "the descent planner climbs q1, qinf, qinf0 and ows, not {metric}: \
@@ -335,21 +330,19 @@ impl fmt::Display for PlanError {
     }
 }
 
-impl std::error::Error for PlanError {}
+impl std::error::Error for PlanError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            PlanError::Grasp(e) => Some(e),
+            PlanError::Quality(e) => Some(e),
+            _ => None,
+        }
+    }
+}
 
 impl From<GraspError> for PlanError {
     fn from(e: GraspError) -> Self {
         PlanError::Grasp(e)
-    }
-}
-
-impl From<MetricError> for PlanError {
-    fn from(e: MetricError) -> Self {
-        match e {
-            MetricError::Quality(e) => PlanError::Quality(e),
-            MetricError::Grasp(e) => PlanError::Grasp(e),
-            e => PlanError::Metric(e),
-        }
     }
 }
 
@@ -481,7 +474,7 @@ pub fn plan_with_progress(
         Metric::Ows => Some(space.ok_or(PlanError::NoWrenchSpace)?),
         _ => None,
     };
-    let mut scorer = Scorer::new(config.metric, method, ows)?;
+    let mut evaluator = Evaluator::new(config.metric, method, ows)?;
     let mut grasps = samples(mesh, space, config.contacts, config.friction, config.seed);
     let mut report = PlanReport {
         best: None,
@@ -494,7 +487,7 @@ pub fn plan_with_progress(
     for sample in 0..config.samples {
         let grasp = grasps.next().expect("an endless sequence")?;
         let timer = Instant::now();
-        let score = scorer.score(&grasp)?;
+        let score = evaluator.evaluate(&grasp)?;
         report.quality_time += timer.elapsed();
         report.facets_created += score.stats.facets_created;
         if score.force_closure {

@@ -3,7 +3,8 @@
 
 use super::scene::{Color, Panel, Scene, scene_page_with_note};
 use crate::grasp::Grasp;
-use crate::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
+use crate::grasp::Evaluator;
+use crate::grasp::ows::ObjectWrenchSpace;
 use crate::grasp::quality::q1;
 use crate::grasp::quality::{Method, Metric};
 use crate::mesh::Mesh;
@@ -76,9 +77,9 @@ fn best_by(
 
 /// Both metrics of `grasp`: (Q1, Q_OWS); `None` where a metric has no value.
 fn both_metrics(grasp: &Grasp, space: &ObjectWrenchSpace) -> (Option<f64>, Option<f64>) {
-    let q = q1(grasp).ok().map(|q| q.value);
-    let ows = OwsEvaluator::new(Method::Partial)
-        .evaluate(grasp, space)
+    let q = q1(grasp).ok().and_then(|q| q.value);
+    let ows = Evaluator::new(Metric::Ows, Method::Partial, Some(space))
+        .and_then(|mut e| e.evaluate(grasp))
         .ok()
         .and_then(|q| q.value);
     (q, ows)

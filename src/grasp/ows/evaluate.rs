@@ -8,9 +8,10 @@ use crate::grasp::certify::{BracketScratch, Disturbances, candidates};
 use crate::grasp::flatness::Flatness;
 use crate::grasp::pipeline::{self, Buffers, Expansion, WrenchSet, build_hull};
 use crate::grasp::quality::ties::on_other_planes;
+use crate::grasp::evaluation::Evaluation;
 use crate::grasp::quality::{
     Explicit, FORCE_CLOSURE_EPSILON, Method, Metric, QualityError, check_wrenches, find_or_make,
-    q1_of_wrenches,
+    q1_quality_of_wrenches,
 };
 use crate::grasp::snap::{SnappedCones, pyramid_labels, snapped_union};
 use crate::hull::{FacetId, Hull, HullError};
@@ -18,9 +19,9 @@ use crate::predicates::Sign;
 use crate::strategy::{OwsInflation, Stats, exact_factor, factor_lower_bound};
 use std::time::Instant;
 
-/// Q_OWS of one grasp.
+/// Q_OWS of one grasp inside the grasp layer; what callers get is its [`Evaluation`].
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct OwsQuality {
+pub(in crate::grasp) struct OwsQuality {
     /// Whether the grasp wrench space holds the origin strictly inside (decided exactly).
     pub force_closure: bool,
     /// Q_OWS (the ellipsoid method's approximation of it); `None` when not force closure.
@@ -38,39 +39,27 @@ pub struct OwsQuality {
     pub stats: Stats,
 }
 
+impl OwsQuality {
+    /// The caller's view: its [`Evaluation`] as `metric` (Q_OWS or wrench resistance) by
+    /// `method`.
+    pub(in crate::grasp) fn into_evaluation(self, metric: Metric, method: Method) -> Evaluation {
+        let mut evaluation =
+            Evaluation::new(metric, method, self.force_closure, self.value, self.stats)
+                .with_tie(self.tied);
+        evaluation.deciding_disturbance = self.deciding_disturbance;
+        evaluation
+    }
+}
+
 /// `(approximate − exact) / exact`: negative when the approximation underestimates.
 pub fn relative_error(approximate: f64, exact: f64) -> f64 {
     (approximate - exact) / exact
 }
 
-/// Evaluates Q_OWS by one method over many grasps, reusing its wrench buffer.
-///
-/// ```
-/// use pqhull::grasp::{FrictionModel, Grasp};
-/// use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
-/// use pqhull::grasp::quality::Method;
-/// use pqhull::mesh::Mesh;
-/// use pqhull::geometry::Rng;
-///
-/// let friction = FrictionModel::try_new(0.5, 8)?;
-/// let bar = Mesh::cuboid([0.5, 0.2, 0.1])?;
-/// let ows = ObjectWrenchSpace::from_mesh(&bar, friction)?;
-/// let mut partial = OwsEvaluator::new(Method::Partial);
-/// let mut brute = OwsEvaluator::new(Method::Full);
-/// let mut rng = Rng::new(7);
-/// for _ in 0..5 {
-///     // A random 4-contact grasp, put in the object's torque frame.
-///     let grasp = ows.frame(&Grasp::random_on_box(&mut rng, [0.5, 0.2, 0.1], 4, friction))?;
-///     let (a, b) = (partial.evaluate(&grasp, &ows)?, brute.evaluate(&grasp, &ows)?);
-///     assert_eq!(a.force_closure, b.force_closure);
-///     if let (Some(a), Some(b)) = (a.value, b.value) {
-///         assert!((a - b).abs() <= 1e-9 * b);
-///     }
-/// }
-/// # Ok::<(), Box<dyn std::error::Error>>(())
-/// ```
+/// Evaluates Q_OWS by one method over many grasps, reusing its wrench buffer: the engine behind
+/// [`Evaluator`](crate::grasp::Evaluator) for Q_OWS and wrench resistance.
 #[derive(Clone, Debug, Default)]
-pub struct OwsEvaluator {
+pub(in crate::grasp) struct OwsEvaluator {
     method: Method,
     wrenches: Vec<[f64; 6]>,
     /// The snapped cone generators behind `wrenches`.
@@ -99,7 +88,7 @@ struct OwsBuffers {
 
 impl OwsEvaluator {
     /// An evaluator using `method`.
-    pub fn new(method: Method) -> Self {
+    pub(in crate::grasp) fn new(method: Method) -> Self {
         OwsEvaluator {
             method,
             wrenches: Vec::new(),
@@ -107,11 +96,6 @@ impl OwsEvaluator {
             pyramids: Vec::new(),
             buffers: OwsBuffers::default(),
         }
-    }
-
-    /// The method used.
-    pub fn method(&self) -> Method {
-        self.method
     }
 
     /// Q_OWS of `grasp` against `space`. The grasp's wrenches are snapped as for Q1 (see
@@ -122,7 +106,7 @@ impl OwsEvaluator {
     /// [`QualityError::TorqueFrameMismatch`] when the grasp's torque reference or scale differ
     /// from the space's; [`QualityError::NonFiniteWrench`]; [`QualityError::Ellipsoid`] when the
     /// ellipsoid method meets disturbances spanning fewer than six dimensions.
-    pub fn evaluate(
+    pub(in crate::grasp) fn evaluate(
         &mut self,
         grasp: &Grasp,
         space: &ObjectWrenchSpace,
@@ -163,12 +147,12 @@ pub fn ows_of_wrenches(
     wrenches: &[[f64; 6]],
     space: &ObjectWrenchSpace,
     method: Method,
-) -> Result<OwsQuality, QualityError> {
+) -> Result<Evaluation, QualityError> {
     let started = Instant::now();
     let mut set = Explicit::raw(wrenches);
     let mut quality = ows_with(&mut set, space, method, &mut OwsBuffers::default(), started)?;
     quality.stats.elapsed = started.elapsed();
-    Ok(quality)
+    Ok(quality.into_evaluation(Metric::Ows, method))
 }
 
 fn not_force_closure(stats: Stats) -> OwsQuality {
@@ -254,7 +238,7 @@ fn ows_inner(
     let q1 = match set.snapped_copy() {
         Some(_) => pipeline::evaluate(set, Expansion::Partial, &mut buffers.q1, started)?,
         // In the wrenches' own unit, as Q1 of an explicit set is evaluated.
-        None => q1_of_wrenches(raw, Method::Partial)?,
+        None => q1_quality_of_wrenches(raw, Method::Partial)?,
     };
     if !q1.force_closure {
         return Ok(not_force_closure(q1.stats));
@@ -507,23 +491,19 @@ fn brute_force(
 fn ellipsoid(wrenches: &[[f64; 6]], space: &ObjectWrenchSpace) -> Result<OwsQuality, QualityError> {
     let ellipsoid = space
         .ellipsoid()
-        .map_err(|e| QualityError::Ellipsoid(e.to_string()))?;
-    let own = q1_of_wrenches(wrenches, Method::Partial)?;
+        .map_err(|e| QualityError::Ellipsoid(e.clone()))?;
+    let own = q1_quality_of_wrenches(wrenches, Method::Partial)?;
     if !own.force_closure {
         return Ok(not_force_closure(own.stats));
     }
     let mapped: Vec<[f64; 6]> = wrenches.iter().map(|w| ellipsoid.map(w)).collect();
-    let q1 = q1_of_wrenches(&mapped, Method::Partial)?;
+    let q1 = q1_quality_of_wrenches(&mapped, Method::Partial)?;
     // `MIN_POSITIVE` (or less) was Q1's stand-in for "strictly inside, within rounding of a
     // facet": not a measurement, whatever Q1's force-closure band says.
     if !(q1.force_closure && q1.value > f64::MIN_POSITIVE && q1.value.is_finite()) {
-        // Displayed after "no enclosing ellipsoid": the sentence continues it.
-        return Err(QualityError::Ellipsoid(format!(
-            "usable for this grasp: it is force closure, but Q1 of its wrenches mapped by the \
-             ellipsoid is {} (the origin within rounding of the mapped hull's boundary), so there \
-             is no approximate value",
-            q1.value
-        )));
+        return Err(QualityError::EllipsoidBoundary {
+            mapped_q1: q1.value,
+        });
     }
     // The work of both hulls: the verdict's and the value's.
     let stats = own.stats + q1.stats;
@@ -537,10 +517,9 @@ fn ellipsoid(wrenches: &[[f64; 6]], space: &ObjectWrenchSpace) -> Result<OwsQual
 }
 
 /// Q_OWS of every grasp against `space`, results in input order (on all cores with the
-/// `parallel` feature, a default); the space is shared, not copied. Each worker thread keeps one [`OwsEvaluator`] per
-/// method for the life of the thread, as
-/// [`quality::evaluate_batch`](crate::grasp::quality::evaluate_batch) does.
-pub fn evaluate_ows_batch(
+/// `parallel` feature, a default); the space is shared, not copied. Each worker thread keeps one
+/// [`OwsEvaluator`] per method for the life of the thread, as the Q1 and Q∞ batch does.
+pub(in crate::grasp) fn evaluate_ows_batch(
     grasps: &[Grasp],
     space: &ObjectWrenchSpace,
     method: Method,

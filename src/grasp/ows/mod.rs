@@ -60,5 +60,6 @@ mod describe;
 mod evaluate;
 mod space;
 
-pub use evaluate::{OwsEvaluator, OwsQuality, evaluate_ows_batch, ows_of_wrenches, relative_error};
+pub(in crate::grasp) use evaluate::{OwsEvaluator, evaluate_ows_batch};
+pub use evaluate::{ows_of_wrenches, relative_error};
 pub use space::{ELLIPSOID_TOLERANCE, MAX_DISTURBANCES, ObjectWrenchSpace, OwsError, SpaceOrigin};

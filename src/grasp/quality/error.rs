@@ -1,11 +1,16 @@
-//! Why a grasp could not be evaluated.
+//! Why a grasp could not be evaluated: the one error of every metric.
 
 use super::{MAX_WRENCH_COORDINATE, MINKOWSKI_MATERIALISE_LIMIT, Method, Metric};
+use crate::geometry::EllipsoidError;
+use crate::grasp::GraspError;
+use crate::grasp::ows::OwsError;
 use crate::hull::HullError;
 use crate::strategy::SourceError;
 use std::fmt;
 
-/// Why a grasp could not be evaluated.
+/// Why a grasp could not be evaluated, by any metric and method: the one error of
+/// [`Evaluator`](crate::grasp::Evaluator) and of every metric function. Wrapped errors are given
+/// by [`source`](std::error::Error::source).
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum QualityError {
@@ -24,18 +29,13 @@ pub enum QualityError {
         points: Option<usize>,
     },
     /// Qhull failed (feature `qhull`).
-    Qhull(String),
+    #[cfg(feature = "qhull")]
+    Qhull(crate::qhull_baseline::QhullError),
     /// [`Method::Qhull`] in a build without the `qhull` feature.
     QhullUnavailable,
-    /// [`Metric::Ows`] given to [`Evaluator`](super::Evaluator): Q_OWS needs the object's wrench space, so it is
-    /// [`OwsEvaluator`](crate::grasp::ows::OwsEvaluator)'s.
+    /// [`Metric::Ows`] without the object's wrench space, or a wrench space given for another
+    /// metric ([`Evaluator::new`](crate::grasp::Evaluator::new)).
     OwsNeedsWrenchSpace,
-    /// A metric of [`Scorer`](crate::grasp::metrics::Scorer)'s (wrench resistance, the volume, the
-    /// grasp-matrix metrics) given to [`Evaluator`](super::Evaluator), which computes Q1 and Q∞.
-    NotEvaluatorMetric {
-        /// The metric asked for.
-        metric: Metric,
-    },
     /// The method does not compute this metric (see [`Method`]).
     UnsupportedMethod {
         /// The method asked for.
@@ -57,7 +57,25 @@ pub enum QualityError {
     OwsValueOverflow,
     /// Q_OWS by the ellipsoid method: no enclosing ellipsoid (the disturbances span fewer than six
     /// dimensions).
-    Ellipsoid(String),
+    Ellipsoid(EllipsoidError),
+    /// Q_OWS by the ellipsoid method: the grasp is force closure, but Q1 of its wrenches mapped
+    /// by the ellipsoid is no positive number (the origin within rounding of the mapped hull's
+    /// boundary), so there is no approximate value.
+    EllipsoidBoundary {
+        /// Q1 of the mapped wrenches.
+        mapped_q1: f64,
+    },
+    /// [`Metric::ConeBracket`]: the circumscribed pyramids' friction coefficient, μ / cos(π/k),
+    /// overflows.
+    CircumscribedFriction(GraspError),
+    /// [`Metric::Resist`]: the wrench to resist is zero, or has a NaN or infinite coordinate.
+    ResistedWrench(OwsError),
+    /// [`Metric::SigmaMin`] or [`Metric::Isotropy`]: the grasp matrix's singular value
+    /// decomposition did not converge (not seen on finite input).
+    SvdNoConvergence,
+    /// [`Metric::Volume`]: the volume is beyond `f64::MAX` (wrench coordinates near the metrics'
+    /// limit of 1e100 in every direction): not representable.
+    VolumeOverflow,
     /// The hull engine refused the wrench set for a reason other than its being flat (which the
     /// metrics answer without a hull): not expected of a grasp's checked wrenches, reported
     /// rather than assumed away.
@@ -71,12 +89,6 @@ pub enum QualityError {
 impl fmt::Display for QualityError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            QualityError::NotEvaluatorMetric { metric } => write!(
-                f,
-                "metric {} is computed by pqhull::grasp::metrics::Scorer, not by Evaluator \
-                 (which computes q1 and qinf)",
-                metric.name()
-            ),
             QualityError::OwsValueOverflow => write!(
                 f,
                 "the multiple of the disturbances the grasp resists is beyond f64::MAX: the \
@@ -102,7 +114,8 @@ impl fmt::Display for QualityError {
                      the full and qhull methods materialise; use the partial method"
                 )
             }
-            QualityError::Qhull(message) => write!(f, "qhull failed: {message}"),
+            #[cfg(feature = "qhull")]
+            QualityError::Qhull(e) => write!(f, "qhull failed: {e}"),
             QualityError::UnsupportedMethod { method, metric } => {
                 let takes: Vec<&str> = [
                     Method::Partial,
@@ -124,7 +137,7 @@ impl fmt::Display for QualityError {
                 )
             }
             QualityError::OwsNeedsWrenchSpace => f.write_str(
-                "Q_OWS needs the object's wrench space: evaluate it with an OwsEvaluator",
+                "Q_OWS needs the object's wrench space, and only Q_OWS takes one",
             ),
             QualityError::QhullUnavailable => f.write_str(
                 "the Qhull method needs pqhull built with the `qhull` feature (which needs libclang)",
@@ -135,7 +148,34 @@ impl fmt::Display for QualityError {
                  space's (reference {:?}, scale {})",
                 grasp.0, grasp.1, space.0, space.1
             ),
-            QualityError::Ellipsoid(message) => write!(f, "no enclosing ellipsoid: {message}"),
+            QualityError::Ellipsoid(e) => write!(f, "no enclosing ellipsoid: {e}"),
+            QualityError::EllipsoidBoundary { mapped_q1 } => write!(
+                f,
+                "no enclosing ellipsoid usable for this grasp: it is force closure, but Q1 of its \
+                 wrenches mapped by the ellipsoid is {mapped_q1} (the origin within rounding of \
+                 the mapped hull's boundary), so there is no approximate value"
+            ),
+            QualityError::CircumscribedFriction(e) => {
+                write!(f, "the circumscribed friction pyramids: {e}")
+            }
+            QualityError::ResistedWrench(OwsError::AllZero) => {
+                write!(
+                    f,
+                    "the wrench to resist is zero: every multiple of it is resisted"
+                )
+            }
+            QualityError::ResistedWrench(OwsError::NonFinite { .. }) => {
+                write!(f, "the wrench to resist has a NaN or infinite coordinate")
+            }
+            QualityError::ResistedWrench(e) => write!(f, "the wrench to resist: {e}"),
+            QualityError::SvdNoConvergence => {
+                f.write_str("grasp matrix: the singular value decomposition did not converge")
+            }
+            QualityError::VolumeOverflow => write!(
+                f,
+                "the grasp wrench space's volume is beyond f64::MAX (1.8e308): use other units \
+                 (positions, torque_scale) or a smaller friction coefficient"
+            ),
             QualityError::Hull(e) => write!(f, "the hull engine refused the wrenches: {e}"),
             QualityError::Source(e) => write!(f, "internal error in Q∞'s Minkowski sum: {e}"),
         }
@@ -147,6 +187,11 @@ impl std::error::Error for QualityError {
         match self {
             QualityError::Hull(e) => Some(e),
             QualityError::Source(e) => Some(e),
+            #[cfg(feature = "qhull")]
+            QualityError::Qhull(e) => Some(e),
+            QualityError::Ellipsoid(e) => Some(e),
+            QualityError::CircumscribedFriction(e) => Some(e),
+            QualityError::ResistedWrench(e) => Some(e),
             _ => None,
         }
     }

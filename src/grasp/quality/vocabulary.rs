@@ -5,41 +5,46 @@
 use std::fmt;
 use std::str::FromStr;
 
-/// A grasp-quality metric: the one vocabulary of the evaluators, the planner and `pqh`.
+/// A grasp-quality metric: the one vocabulary of the evaluator, the planner, `pqh` and Python.
 ///
-/// Q1 and Q∞ are [`Evaluator`](super::Evaluator)'s, Q_OWS is
-/// [`OwsEvaluator`](crate::grasp::ows::OwsEvaluator)'s; [`Scorer`](crate::grasp::metrics::Scorer)
-/// computes every one of them, so a planner ranks grasps by any metric through one call.
+/// [`Evaluator`](crate::grasp::Evaluator) computes every one of them and gives every one the same
+/// result, an [`Evaluation`](crate::grasp::Evaluation), so a planner ranks grasps by any metric
+/// through one call.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
 #[non_exhaustive]
 pub enum Metric {
-    /// Ferrari–Canny Q1 over the union of the contact wrenches ([`Evaluator`](super::Evaluator)).
+    /// Ferrari–Canny Q1 over the union of the contact wrenches.
     #[default]
     Q1,
-    /// Ferrari–Canny Q∞ over the Minkowski sum of the contacts' wrench sets ([`Evaluator`](super::Evaluator)).
+    /// Ferrari–Canny Q∞ over the Minkowski sum of the contacts' wrench sets.
     QInf {
         /// GraspIt!'s variant: the zero wrench joins every contact's set.
         with_zero_wrench: bool,
     },
     /// The object-wrench-space metric Q_OWS: needs the object's
-    /// [`ObjectWrenchSpace`](crate::grasp::ows::ObjectWrenchSpace), so it is evaluated by
-    /// [`OwsEvaluator`](crate::grasp::ows::OwsEvaluator), not by [`Evaluator`](super::Evaluator).
+    /// [`ObjectWrenchSpace`](crate::grasp::ows::ObjectWrenchSpace), given to
+    /// [`Evaluator::new`](crate::grasp::Evaluator::new).
     Ows,
-    /// Wrench resistance: the largest t such that the grasp resists `−t·wrench`
-    /// ([`resist`](crate::grasp::metrics::resist): Q_OWS with this one disturbance).
+    /// Wrench resistance: the largest t such that the grasp resists `−t·wrench` (Q_OWS with
+    /// this one disturbance).
     Resist {
         /// The wrench, in the grasp's torque units (torque divided by the torque scale).
         wrench: [f64; 6],
     },
-    /// The volume of the grasp wrench space ([`gws_volume`](crate::grasp::metrics::gws_volume);
-    /// always from the full hull).
+    /// The volume of the grasp wrench space (always from the full hull: a volume needs every
+    /// facet).
     Volume,
     /// The smallest singular value of the grasp matrix
-    /// ([`GraspMatrix::sigma_min`](crate::grasp::metrics::GraspMatrix::sigma_min)).
+    /// ([`grasp_matrix`](crate::grasp::metrics::grasp_matrix)).
     SigmaMin,
-    /// The isotropy index σ_min / σ_max of the grasp matrix
-    /// ([`GraspMatrix::isotropy`](crate::grasp::metrics::GraspMatrix::isotropy)).
+    /// The isotropy index σ_min / σ_max of the grasp matrix (0 when σ_max is 0).
     Isotropy,
+    /// Q1 of the true circular friction cones, bracketed: the k-edge pyramids inscribed in the
+    /// cones give a lower bound, those circumscribed about them (rim scaled by 1/cos(π/k)) an
+    /// upper bound, both by the method's hulls
+    /// ([`Evaluation::bracket`](crate::grasp::Evaluation::bracket); the value is the inscribed
+    /// pyramids' Q1, as [`Metric::Q1`]).
+    ConeBracket,
 }
 
 impl Metric {
@@ -59,6 +64,7 @@ impl Metric {
             Metric::Volume => "volume",
             Metric::SigmaMin => "sigma-min",
             Metric::Isotropy => "isotropy",
+            Metric::ConeBracket => "cone-bracket",
         }
     }
 }
@@ -66,7 +72,7 @@ impl Metric {
 impl Metric {
     /// The names [`FromStr`] reads: every metric without a parameter (`resist` needs its
     /// wrench: build [`Metric::Resist`] directly).
-    pub const NAMES: [&'static str; 7] = [
+    pub const NAMES: [&'static str; 8] = [
         "q1",
         "qinf",
         "qinf0",
@@ -74,6 +80,7 @@ impl Metric {
         "volume",
         "sigma-min",
         "isotropy",
+        "cone-bracket",
     ];
 }
 
@@ -102,6 +109,7 @@ impl FromStr for Metric {
             "volume" => Metric::Volume,
             "sigma-min" => Metric::SigmaMin,
             "isotropy" => Metric::Isotropy,
+            "cone-bracket" => Metric::ConeBracket,
             "resist" => return Err(NameError::NeedsWrench),
             _ => return Err(NameError::unknown("metric", name, &Metric::NAMES)),
         })
@@ -160,7 +168,7 @@ impl std::error::Error for NameError {}
 
 /// How a metric is computed. Every metric takes [`Partial`](Method::Partial) (the default) and
 /// [`Full`](Method::Full) (for the volume and the grasp-matrix metrics, the method computes only
-/// the force-closure verdict, Q1's: see [`Scorer`](crate::grasp::metrics::Scorer)); the others
+/// the force-closure verdict, Q1's: see [`Evaluator`](crate::grasp::Evaluator)); the others
 /// belong to some metrics only, and the rest give
 /// [`QualityError::UnsupportedMethod`](super::QualityError::UnsupportedMethod).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -173,7 +181,8 @@ pub enum Method {
     /// The full hull with this crate's engine, then the answer from all its facets (for Q_OWS,
     /// every disturbance against every facet: the seed paper's brute force). Exact, the reference.
     Full,
-    /// Q1 and Q∞ (and the verdicts of the volume and grasp-matrix metrics) only: the full hull
+    /// Q1, Q∞ and the cone bracket (and the verdicts of the volume and grasp-matrix metrics)
+    /// only: the full hull
     /// by Qhull, for comparison. Needs the crate's `qhull` feature, else
     /// [`QualityError::QhullUnavailable`](super::QualityError::QhullUnavailable).
     Qhull,
