@@ -29,8 +29,10 @@
 //! disturbances' gauge in place of the unit ball: steps 1 and 2 through the set's methods (no
 //! value: not force closure), step 3 with its own search (`OwsInflation`, or brute force) certified
 //! by [`bracket_on`], and, when that cannot decide, this cascade for Q1's verdict before its
-//! search on the raw wrenches. Its value type (`OwsQuality`: `None` when not force closure) is
-//! not yet [`Quality`], which is why it is not one more [`WrenchSet`] caller of [`evaluate`].
+//! search on the raw wrenches. Its inner value type (`OwsQuality`: `None` when not force
+//! closure) is not [`Quality`], which is why it is not one more [`WrenchSet`] caller of
+//! [`evaluate`]; both become the one [`Evaluation`](super::Evaluation) at the front door
+//! ([`Evaluator`](super::Evaluator)).
 //!
 //! [`Explicit`]: super::quality::Explicit
 

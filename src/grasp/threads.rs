@@ -75,21 +75,20 @@ pub fn thread_pool(threads: usize) -> Result<rayon::ThreadPool, ThreadsError> {
         })
 }
 
-/// Runs `work` — typically [`evaluate_batch`](super::quality::evaluate_batch) or
-/// [`evaluate_ows_batch`](super::ows::evaluate_ows_batch) — on `threads` workers, or on rayon's
+/// Runs `work` — typically [`evaluate_batch`](super::evaluate_batch) — on `threads` workers, or on rayon's
 /// current pool (all cores) for `None`. Without the `parallel` feature the batch functions run
 /// on the calling thread whatever the count (which is still checked).
 ///
 /// ```
-/// use pqhull::grasp::quality::{Method, Metric, evaluate_batch};
-/// use pqhull::grasp::{FrictionModel, Grasp, with_threads};
+/// use pqhull::grasp::{FrictionModel, Grasp, Method, Metric, evaluate_batch, with_threads};
 /// use pqhull::geometry::Rng;
 /// let mut rng = Rng::new(1);
 /// let friction = FrictionModel::try_new(0.5, 8)?;
 /// let grasps: Vec<Grasp> =
 ///     (0..20).map(|_| Grasp::random_on_box(&mut rng, [0.5, 0.2, 0.1], 4, friction)).collect();
-/// let values = |threads| -> Result<Vec<(f64, bool)>, Box<dyn std::error::Error>> {
-///     let batch = with_threads(threads, || evaluate_batch(&grasps, Metric::Q1, Method::Partial))?;
+/// let values = |threads| -> Result<Vec<(Option<f64>, bool)>, Box<dyn std::error::Error>> {
+///     let batch =
+///         with_threads(threads, || evaluate_batch(&grasps, Metric::Q1, Method::Partial, None))??;
 ///     Ok(batch.into_iter().map(|q| q.map(|q| (q.value, q.force_closure))).collect::<Result<_, _>>()?)
 /// };
 /// assert_eq!(values(Some(2))?, values(None)?); // the same values, whatever the pool
