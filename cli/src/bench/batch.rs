@@ -4,8 +4,9 @@
 //! ([`pqhull::grasp::thread_pool`]: 1 to [`MAX_THREADS`](pqhull::grasp::MAX_THREADS) threads).
 
 use super::stats::{median_of, min_or_infinity};
-use pqhull::grasp::quality::{Method, Metric, Quality, evaluate_batch};
-use pqhull::grasp::{Grasp, ThreadsError, thread_pool};
+use pqhull::grasp::{
+    Evaluation, Grasp, Method, Metric, ThreadsError, evaluate_batch, thread_pool,
+};
 use std::time::Instant;
 
 /// A pool of the requested size could not be had: the library's [`ThreadsError`].
@@ -72,7 +73,7 @@ pub struct BatchRow {
 /// Passes per round: enough that one round of sequential work lasts `min_ms` (waking an idle
 /// worker, slow on a virtual machine, would otherwise swamp a batch of small grasps), from 1 to
 /// 1000.
-pub fn passes(sequential: &[Quality], min_ms: f64) -> usize {
+pub fn passes(sequential: &[Evaluation], min_ms: f64) -> usize {
     let sequential_s: f64 = sequential
         .iter()
         .map(|q| q.stats.elapsed.as_secs_f64())
@@ -86,7 +87,7 @@ pub fn passes(sequential: &[Quality], min_ms: f64) -> usize {
 /// one-by-one results the batch ones must equal. No rows when `rounds` is 0.
 pub fn batch(
     set: &[Grasp],
-    sequential: &[Quality],
+    sequential: &[Evaluation],
     pools: &Pools,
     rounds: usize,
     min_ms: f64,
@@ -97,7 +98,7 @@ pub fn batch(
     let passes = passes(sequential, min_ms);
     let count = pools.sizes().len();
     for i in 0..count {
-        pools.install(i, || evaluate_batch(set, Metric::Q1, Method::Partial));
+        pools.install(i, || q1_batch(set));
     }
     let mut seconds = vec![Vec::with_capacity(rounds); count];
     let mut mismatches = vec![0usize; count];
@@ -108,7 +109,7 @@ pub fn batch(
             let results = pools.install(i, || {
                 let mut results = Vec::new();
                 for _ in 0..passes {
-                    results = evaluate_batch(set, Metric::Q1, Method::Partial);
+                    results = q1_batch(set);
                 }
                 results
             });
@@ -118,7 +119,8 @@ pub fn batch(
                 .zip(sequential)
                 .filter(|(r, s)| {
                     r.as_ref().map_or(true, |r| {
-                        r.value.to_bits() != s.value.to_bits() || r.force_closure != s.force_closure
+                        r.value.map(f64::to_bits) != s.value.map(f64::to_bits)
+                            || r.force_closure != s.force_closure
                     })
                 })
                 .count();
@@ -147,18 +149,25 @@ pub fn batch(
         .collect()
 }
 
+/// [`evaluate_batch`] of Q1 by the partial method, which every grasp set is accepted by.
+fn q1_batch(set: &[Grasp]) -> Vec<Result<Evaluation, pqhull::grasp::QualityError>> {
+    evaluate_batch(set, Metric::Q1, Method::Partial, None)
+        .expect("Q1 by the partial method, without a wrench space, is never refused")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::bench::workloads::bar_grasps;
     use pqhull::grasp::FrictionModel;
-    use pqhull::grasp::quality::Evaluator;
+    use pqhull::grasp::Evaluator;
 
     #[test]
     fn batch_results_equal_the_sequential_ones() {
         let set = bar_grasps(5, 4, 4, FrictionModel::try_new(0.5, 4).unwrap());
-        let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial);
-        let sequential: Vec<Quality> = set.iter().map(|g| evaluator.evaluate(g).unwrap()).collect();
+        let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial, None).unwrap();
+        let sequential: Vec<Evaluation> =
+            set.iter().map(|g| evaluator.evaluate(g).unwrap()).collect();
         let pools = Pools::new(&[1]).unwrap();
         let rows = batch(&set, &sequential, &pools, 2, 0.0);
         assert_eq!(rows.len(), 1);

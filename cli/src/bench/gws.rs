@@ -7,8 +7,7 @@ use super::batch::{BatchRow, PoolError, Pools, batch};
 use super::runs::{MethodRun, RunSummary, evaluate_all};
 use super::stats::{mean, median};
 use super::workloads::{BAR_FRICTION, GwsObject, object_grasps};
-use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality};
-use pqhull::grasp::{FrictionModel, GraspError};
+use pqhull::grasp::{Evaluation, FrictionModel, GraspError, Method, Metric};
 use serde_json::{Value, json};
 use std::fmt;
 
@@ -283,7 +282,7 @@ pub fn run(config: &GwsConfig, progress: Progress<'_>) -> Result<GwsReport, GwsE
                 first: first.clone(),
             });
         }
-        let partial_results: Vec<Quality> = partial_results.into_iter().flatten().collect();
+        let partial_results: Vec<Evaluation> = partial_results.into_iter().flatten().collect();
         let disagreements = runs
             .iter()
             .skip(1)
@@ -361,11 +360,7 @@ fn qinf_row(set: &[pqhull::grasp::Grasp], variant: QinfVariant) -> QinfRow {
     let metric = Metric::QInf {
         with_zero_wrench: variant == QinfVariant::ZeroWrench,
     };
-    let mut evaluator = Evaluator::new(metric, Method::Partial);
-    let results: Vec<_> = set
-        .iter()
-        .map(|g| evaluator.evaluate(g).map_err(|e| e.to_string()))
-        .collect();
+    let results = evaluate_all(set, metric, Method::Partial, &mut |_, _, _| {});
     QinfRow {
         variant,
         summary: MethodRun::new(&results).summary(),

@@ -37,8 +37,7 @@ use super::Progress;
 use super::stats::ratio;
 use super::workloads::{BAR_FRICTION, bar_grasps};
 use pqhull::grasp::metrics::gws_volume;
-use pqhull::grasp::quality::{Evaluator, Method, Metric};
-use pqhull::grasp::{FrictionModel, Grasp};
+use pqhull::grasp::{Evaluator, FrictionModel, Grasp, Method, Metric};
 use pqhull::hull::Hull;
 use pqhull::rbox::{self, Family};
 use serde_json::{Value, json};
@@ -703,7 +702,8 @@ pub fn minkowski_sum(grasp: &Grasp) -> Vec<[f64; 6]> {
 fn grasp_for(seed: u64, contacts: usize, edges: usize, full_sum: bool) -> (Grasp, bool) {
     let friction = FrictionModel::try_new(BAR_FRICTION, edges).expect("the suite's cone edges");
     let grasps = bar_grasps(seed, GRASP_CANDIDATES, contacts, friction);
-    let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial);
+    let mut evaluator =
+        Evaluator::new(Metric::Q1, Method::Partial, None).expect("Q1 by the partial method");
     match grasps.iter().position(|g| {
         (!full_sum || sum_spans_6d(g)) && evaluator.evaluate(g).is_ok_and(|q| q.force_closure)
     }) {
@@ -912,16 +912,14 @@ fn grasp_rows(
                         None
                     })
                     .map_err(|e| e.to_string()),
-                Timed::Volume => gws_volume(grasp)
-                    .map(|(v, _)| Some(v))
-                    .map_err(|e| e.to_string()),
+                Timed::Volume => gws_volume(grasp).map(Some).map_err(|e| e.to_string()),
                 Timed::QInfFull => {
                     let metric = Metric::QInf {
                         with_zero_wrench: false,
                     };
-                    Evaluator::new(metric, Method::Full)
-                        .evaluate(grasp)
-                        .map(|q| Some(q.value))
+                    Evaluator::new(metric, Method::Full, None)
+                        .and_then(|mut evaluator| evaluator.evaluate(grasp))
+                        .map(|q| q.value)
                         .map_err(|e| e.to_string())
                 }
             });

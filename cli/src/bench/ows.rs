@@ -6,9 +6,10 @@ use super::Progress;
 use super::stats::{Quantiles, mean, median, micros};
 use super::workloads::surface_grasps;
 use pqhull::grasp::ows::relative_error;
-use pqhull::grasp::ows::{ObjectWrenchSpace, OwsError, OwsEvaluator, OwsQuality};
-use pqhull::grasp::quality::{Evaluator, Method, Metric, QualityError};
-use pqhull::grasp::{FrictionModel, Grasp, GraspError};
+use pqhull::grasp::ows::{ObjectWrenchSpace, OwsError};
+use pqhull::grasp::{
+    Evaluation, Evaluator, FrictionModel, Grasp, GraspError, Method, Metric, QualityError,
+};
 use pqhull::hull::HullError;
 use pqhull::mesh::Mesh;
 use serde_json::{Value, json};
@@ -155,15 +156,16 @@ fn evaluate(
     set: &[Grasp],
     space: &ObjectWrenchSpace,
     progress: Progress<'_>,
-) -> Result<Vec<OwsQuality>, OwsBenchError> {
-    let mut evaluator = OwsEvaluator::new(method);
+) -> Result<Vec<Evaluation>, OwsBenchError> {
+    let mut evaluator =
+        Evaluator::new(Metric::Ows, method, Some(space)).map_err(OwsBenchError::Quality)?;
     let label = method.name();
     progress(label, 0, set.len());
     let results = set
         .iter()
         .enumerate()
         .map(|(i, g)| {
-            let q = evaluator.evaluate(g, space);
+            let q = evaluator.evaluate(g);
             progress(label, i + 1, set.len());
             q
         })
@@ -230,7 +232,7 @@ pub fn run(
     .map_err(OwsBenchError::Grasp)?;
 
     let partial = evaluate(Method::Partial, &grasps, &space, &mut *progress)?;
-    let mut q1 = Evaluator::new(Metric::Q1, Method::Partial);
+    let mut q1 = Evaluator::new(Metric::Q1, Method::Partial, None).map_err(OwsBenchError::Quality)?;
     let mut q1_times = grasps
         .iter()
         .map(|g| q1.evaluate(g).map(|q| micros(q.stats.elapsed)))
@@ -242,7 +244,7 @@ pub fn run(
     let rays = evaluate(Method::PartialRays, rays_set, &space, &mut *progress)?;
     let ellipsoid = evaluate(Method::Ellipsoid, &grasps, &space, &mut *progress)?;
 
-    let disagree = |other: &[OwsQuality]| {
+    let disagree = |other: &[Evaluation]| {
         partial
             .iter()
             .zip(other)
@@ -259,7 +261,7 @@ pub fn run(
         .collect();
 
     // Times over the grasps the partial method found force closure.
-    let closure_times = |results: &[OwsQuality]| -> Vec<f64> {
+    let closure_times = |results: &[Evaluation]| -> Vec<f64> {
         results
             .iter()
             .zip(&partial)
@@ -267,7 +269,7 @@ pub fn run(
             .map(|(q, _)| micros(q.stats.elapsed))
             .collect()
     };
-    let times = |results: &[OwsQuality]| -> Vec<f64> {
+    let times = |results: &[Evaluation]| -> Vec<f64> {
         results.iter().map(|q| micros(q.stats.elapsed)).collect()
     };
     let mut q1_closure: Vec<f64> = q1_times
@@ -288,9 +290,9 @@ pub fn run(
         TimeRow::new("q1-partial-fc", &mut q1_closure),
     ];
     // Partial's medians on each slower method's subset, for like-for-like ratios.
-    let partial_median = |subset: &[OwsQuality]| median(&mut times(&partial[..subset.len()]));
+    let partial_median = |subset: &[Evaluation]| median(&mut times(&partial[..subset.len()]));
     let partial_closure_median =
-        |subset: &[OwsQuality]| median(&mut closure_times(&partial[..subset.len()]));
+        |subset: &[Evaluation]| median(&mut closure_times(&partial[..subset.len()]));
     let m = |i: usize| methods[i].median_us;
     let ratios = OwsRatios {
         brute_over_partial: m(1) / partial_median(&brute),

@@ -2,25 +2,28 @@
 
 use super::Progress;
 use super::stats::{max_or_zero, mean, median_of, micros};
-use pqhull::grasp::Grasp;
-use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality};
+use pqhull::grasp::{Evaluation, Evaluator, Grasp, Method, Metric};
 
 /// Evaluates `set` one grasp after another with one [`Evaluator`] (its buffers reused, as a
-/// planner would); a grasp the method cannot evaluate keeps its error's message. `progress` is
+/// planner would); a grasp the method cannot evaluate keeps its error's message (every grasp
+/// keeps the evaluator's refusal, when the method does not compute the metric). `progress` is
 /// called with the method's name before the first grasp and after each.
 pub fn evaluate_all(
     set: &[Grasp],
     metric: Metric,
     method: Method,
     progress: Progress<'_>,
-) -> Vec<Result<Quality, String>> {
-    let mut evaluator = Evaluator::new(metric, method);
+) -> Vec<Result<Evaluation, String>> {
+    let mut evaluator = Evaluator::new(metric, method, None).map_err(|e| e.to_string());
     let label = method.name();
     progress(label, 0, set.len());
     set.iter()
         .enumerate()
         .map(|(i, g)| {
-            let q = evaluator.evaluate(g).map_err(|e| e.to_string());
+            let q = match &mut evaluator {
+                Ok(evaluator) => evaluator.evaluate(g).map_err(|e| e.to_string()),
+                Err(refused) => Err(refused.clone()),
+            };
             progress(label, i + 1, set.len());
             q
         })
@@ -49,7 +52,7 @@ pub struct MethodRun {
 
 impl MethodRun {
     /// The run of `results` (entry `i` is grasp `i`'s).
-    pub fn new(results: &[Result<Quality, String>]) -> MethodRun {
+    pub fn new(results: &[Result<Evaluation, String>]) -> MethodRun {
         let mut run = MethodRun::default();
         for (i, result) in results.iter().enumerate() {
             match result {
@@ -59,7 +62,7 @@ impl MethodRun {
                     run.points.push(q.stats.points_processed);
                     run.facets.push(q.stats.facets_created);
                     run.closure.push(q.force_closure);
-                    run.values.push(q.value);
+                    run.values.push(q.value.expect("Q1 and Q∞ always have a value"));
                 }
                 Err(e) => run.errors.push(format!("grasp {i}: {e}")),
             }

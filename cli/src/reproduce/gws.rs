@@ -19,8 +19,8 @@ use super::{
 use crate::bench::stats::{mean, micros};
 use crate::bench::workloads::{BAR_FRICTION, BAR_HALF_EXTENTS, bar_grasps};
 use pqhull::geometry::largest_norm;
-use pqhull::grasp::quality::{Evaluator, Method, Metric, is_force_closure};
-use pqhull::grasp::{FrictionModel, Grasp};
+use pqhull::grasp::quality::is_force_closure;
+use pqhull::grasp::{Evaluator, FrictionModel, Grasp, Method, Metric};
 use pqhull::{ClosestToOrigin, Hull, HullError};
 use std::time::Instant;
 
@@ -133,9 +133,12 @@ fn pqhgws(w: &[[f64; 6]]) -> Result<Measurement, String> {
 }
 
 /// The evaluator's Q1 by its method.
-fn evaluated(evaluator: &mut Evaluator, grasp: &Grasp) -> Result<Measurement, String> {
+fn evaluated(evaluator: &mut Evaluator<'_>, grasp: &Grasp) -> Result<Measurement, String> {
     let q = evaluator.evaluate(grasp).map_err(|e| e.to_string())?;
-    let value = if q.force_closure { q.value } else { f64::NAN };
+    let value = match q.value {
+        Some(value) if q.force_closure => value,
+        _ => f64::NAN,
+    };
     Ok(Some((
         q.stats.points_processed as f64,
         q.stats.facets_created as f64,
@@ -153,8 +156,8 @@ fn measure(
     progress: Progress<'_>,
 ) -> Result<Vec<Run>, ReproduceError> {
     let wrenches: Vec<Vec<[f64; 6]>> = set.iter().map(Grasp::wrenches).collect();
-    let mut partial = Evaluator::new(Metric::Q1, Method::Partial);
-    let mut qhull = Evaluator::new(Metric::Q1, Method::Qhull);
+    let q1 = |method| Evaluator::new(Metric::Q1, method, None).expect("Q1 takes every hull method");
+    let (mut partial, mut qhull) = (q1(Method::Partial), q1(Method::Qhull));
     let mut runs = vec![Run::default(); METHODS.len()];
     for (m, run) in runs.iter_mut().enumerate() {
         let name = METHODS[m];

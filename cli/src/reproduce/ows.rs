@@ -18,9 +18,8 @@ use super::{
 use crate::bench::stats::{median, micros};
 use crate::bench::workloads::surface_grasps;
 use crate::object::{DEFAULT_OBJECT_NAME, default_object};
-use pqhull::grasp::FrictionModel;
-use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, relative_error};
-use pqhull::grasp::quality::Method;
+use pqhull::grasp::ows::{ObjectWrenchSpace, relative_error};
+use pqhull::grasp::{Evaluator, FrictionModel, Method, Metric};
 
 /// Contacts per grasp.
 pub const CONTACTS: usize = 4;
@@ -78,11 +77,12 @@ fn measure(
             Method::PartialRays | Method::Full => slow.min(grasps),
             _ => grasps,
         };
-        let mut evaluator = OwsEvaluator::new(method);
+        let mut evaluator = Evaluator::new(Metric::Ows, method, Some(&space))
+            .map_err(|e| fail(format!("{name}: {e}")))?;
         progress(name, 0, n);
         for (i, grasp) in set.iter().take(n).enumerate() {
             let q = evaluator
-                .evaluate(grasp, &space)
+                .evaluate(grasp)
                 .map_err(|e| fail(format!("{name}, grasp {i}: {e}")))?;
             times[m][i] = micros(q.stats.elapsed);
             values[m][i] = q.value.unwrap_or(f64::NAN);

@@ -10,9 +10,8 @@ use super::{
 };
 use crate::bench::stats::{median, micros};
 use crate::object::{DEFAULT_OBJECT_NAME, default_object};
-use pqhull::grasp::FrictionModel;
-use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
-use pqhull::grasp::quality::{Evaluator, Method, Metric};
+use pqhull::grasp::ows::ObjectWrenchSpace;
+use pqhull::grasp::{Evaluator, FrictionModel, Method, Metric};
 use pqhull::mesh::Mesh;
 use pqhull::plan::samples;
 
@@ -67,8 +66,9 @@ fn score(
         space,
     } = object;
     let label = format!("{} by {}", metric.name(), method.name());
-    let mut gws = Evaluator::new(metric, method);
-    let mut ows = OwsEvaluator::new(method);
+    let space_of_metric = (metric == Metric::Ows).then_some(space);
+    let mut evaluator = Evaluator::new(metric, method, space_of_metric)
+        .map_err(|e| fail(format!("{label}: {e}")))?;
     let mut scored = Scored {
         time_us: Vec::with_capacity(n),
         value: Vec::with_capacity(n),
@@ -79,21 +79,14 @@ fn score(
         .enumerate()
     {
         let grasp = grasp.map_err(|e| fail(format!("sample {i}: {e}")))?;
-        let (elapsed, closure, value) = if metric == Metric::Ows {
-            let q = ows
-                .evaluate(&grasp, space)
-                .map_err(|e| fail(format!("{label}, sample {i}: {e}")))?;
-            (
-                q.stats.elapsed,
-                q.force_closure,
-                q.value.unwrap_or(f64::NAN),
-            )
-        } else {
-            let q = gws
-                .evaluate(&grasp)
-                .map_err(|e| fail(format!("{label}, sample {i}: {e}")))?;
-            (q.stats.elapsed, q.force_closure, q.value)
-        };
+        let q = evaluator
+            .evaluate(&grasp)
+            .map_err(|e| fail(format!("{label}, sample {i}: {e}")))?;
+        let (elapsed, closure, value) = (
+            q.stats.elapsed,
+            q.force_closure,
+            q.value.unwrap_or(f64::NAN),
+        );
         scored.time_us.push(micros(elapsed));
         scored.value.push(if closure { value } else { f64::NAN });
         progress(&label, i + 1, n);

@@ -88,7 +88,7 @@ pub fn write_grasp(grasp: &Grasp) -> Value {
 ///     FrictionModel::try_new(0.5, 4)?,
 /// ).build()?;
 /// let q = q1(&grasp)?;
-/// let line = quality_line(3, q.force_closure, Some(q.value), &q.stats);
+/// let line = quality_line(3, q.force_closure, q.value, &q.stats);
 /// assert_eq!(line["index"], 3);
 /// assert_eq!(line["force_closure"], false); // one finger cannot hold anything
 /// assert!(line["stats"]["elapsed_us"].is_f64());
