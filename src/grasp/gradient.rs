@@ -177,8 +177,7 @@ pub fn q1_gradient(grasp: &Grasp, quality: &Evaluation) -> Result<Gradient, Grad
     let face: Vec<[f64; 6]> = support.iter().map(|&j| wrenches[j]).collect();
     let (weights, foot) = nearest_in_affine_hull(&face);
     // The foot of the face found must be the deciding one's, in the face's relative interior.
-    differentiable &=
-        norm(sub6(&foot, &x)) <= TIE * scale && weights.iter().all(|&l| l > TIE);
+    differentiable &= norm(sub6(&foot, &x)) <= TIE * scale && weights.iter().all(|&l| l > TIE);
     // A repeated wrench (contacts listed twice): which copy decides is a tie.
     differentiable &= support
         .iter()
@@ -362,8 +361,7 @@ pub fn qinf_gradient(grasp: &Grasp, quality: &Evaluation) -> Result<Gradient, Gr
     let chosen: Vec<usize> = nearest.support().to_vec();
     let face: Vec<[f64; 6]> = chosen.iter().map(|&s| sums[s]).collect();
     let (weights, foot) = nearest_in_affine_hull(&face);
-    differentiable &=
-        norm(sub6(&foot, &x)) <= TIE * scale && weights.iter().all(|&l| l > TIE);
+    differentiable &= norm(sub6(&foot, &x)) <= TIE * scale && weights.iter().all(|&l| l > TIE);
     // A generic face of the sum is the sum of faces whose dimensions add up to its own; more
     // (three whole pyramids tied along u*, say) is a degenerate direction where a slight move
     // of the inputs breaks the ties one way or the other.

@@ -108,10 +108,15 @@ pub(in crate::grasp) struct Quality {
 impl Quality {
     /// The caller's view of this quality: its [`Evaluation`] as `metric` by `method`.
     pub(in crate::grasp) fn into_evaluation(self, metric: Metric, method: Method) -> Evaluation {
-        let mut evaluation =
-            Evaluation::new(metric, method, self.force_closure, Some(self.value), self.stats)
-                .with_deciding(self.deciding_wrenches().iter().copied())
-                .with_tie(self.tied);
+        let mut evaluation = Evaluation::new(
+            metric,
+            method,
+            self.force_closure,
+            Some(self.value),
+            self.stats,
+        )
+        .with_deciding(self.deciding_wrenches().iter().copied())
+        .with_tie(self.tied);
         evaluation.scale = Some(self.scale);
         evaluation
     }

@@ -70,11 +70,11 @@ use crate::geometry::Rng;
 use crate::geometry::vector::{dot, norm, scale, sub};
 use crate::grasp::json::write_grasp;
 use crate::grasp::ows::ObjectWrenchSpace;
-use crate::grasp::{Evaluation, Evaluator, Method, Metric};
 use crate::grasp::{
     Contact, FrictionModel, Gradient, Grasp, GraspError, MAX_CONTACTS, ows_gradient, q1_gradient,
     qinf_gradient,
 };
+use crate::grasp::{Evaluation, Evaluator, Method, Metric};
 use crate::mesh::{Mesh, SurfaceIndex};
 use serde_json::{Value, json};
 use std::time::{Duration, Instant};
@@ -324,7 +324,8 @@ impl Climber<'_> {
     }
 
     fn evaluate_untimed(&mut self, grasp: &Grasp) -> Result<((bool, f64), Evaluated), PlanError> {
-        if let Some(ows) = self.ows.as_mut() {
+        // `metric` is Q1 during a Q_OWS run's climb to force closure: Q_OWS only when it is not.
+        if let (Metric::Ows, Some(ows)) = (self.metric, self.ows.as_mut()) {
             let q = ows.evaluate(grasp)?;
             self.report.evaluations += 1;
             self.report.facets_created += q.stats.facets_created;
@@ -332,9 +333,9 @@ impl Climber<'_> {
                 return Ok(((true, value), Evaluated::Ows(Box::new(q))));
             }
         }
-        let evaluator = match self.qinf.as_mut() {
-            Some(e) => e,
-            None => &mut self.q1,
+        let evaluator = match (self.metric, self.qinf.as_mut()) {
+            (Metric::QInf { .. }, Some(e)) => e,
+            _ => &mut self.q1,
         };
         let q = evaluator.evaluate(grasp)?;
         self.report.evaluations += 1;

@@ -40,8 +40,8 @@
 use crate::geometry::Rng;
 use crate::grasp::json::write_contact;
 use crate::grasp::ows::ObjectWrenchSpace;
-use crate::grasp::{Evaluator, Method, Metric, QualityError};
 use crate::grasp::{Contact, FrictionModel, Grasp, GraspError, MAX_CONTACTS};
+use crate::grasp::{Evaluator, Method, Metric, QualityError};
 use crate::mesh::{Mesh, SurfaceSampler};
 use serde_json::{Value, json};
 use std::fmt;

@@ -2,8 +2,8 @@
 //! (the seed paper's Fig. 10), as [`scene`](super::scene) panels and a self-contained page.
 
 use super::scene::{Color, Panel, Scene, scene_page_with_note};
-use crate::grasp::Grasp;
 use crate::grasp::Evaluator;
+use crate::grasp::Grasp;
 use crate::grasp::ows::ObjectWrenchSpace;
 use crate::grasp::quality::q1;
 use crate::grasp::quality::{Method, Metric};

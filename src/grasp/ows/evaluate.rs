@@ -5,10 +5,10 @@ use crate::geometry::vector::dot;
 use crate::geometry::{Gjk, SupportIndex};
 use crate::grasp::Grasp;
 use crate::grasp::certify::{BracketScratch, Disturbances, candidates};
+use crate::grasp::evaluation::Evaluation;
 use crate::grasp::flatness::Flatness;
 use crate::grasp::pipeline::{self, Buffers, Expansion, WrenchSet, build_hull};
 use crate::grasp::quality::ties::on_other_planes;
-use crate::grasp::evaluation::Evaluation;
 use crate::grasp::quality::{
     Explicit, FORCE_CLOSURE_EPSILON, Method, Metric, QualityError, check_wrenches, find_or_make,
     q1_quality_of_wrenches,
