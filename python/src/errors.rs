@@ -61,25 +61,43 @@ pub fn grasp(message: impl Into<String>) -> PyErr {
     GraspError::new_err(message.into())
 }
 
-/// A [`QualityError`] from the library's.
-pub fn quality(e: pqhull::grasp::quality::QualityError) -> PyErr {
-    QualityError::new_err(e.to_string())
+/// The Python exception of a library [`QualityError`](pqhull::grasp::QualityError) with
+/// `message`: a [`GraspError`] when the circumscribed cones' grasp could not be built, an
+/// [`InputError`] for a wrench to resist that is zero or not finite, a volume beyond `f64::MAX`
+/// or a grasp matrix whose SVD did not converge (the classes of the metrics' errors before they
+/// became `QualityError`s), a [`QualityError`] otherwise.
+fn of_quality(e: &pqhull::grasp::QualityError, message: String) -> PyErr {
+    use pqhull::grasp::QualityError as E;
+    match e {
+        E::CircumscribedFriction(_) => GraspError::new_err(message),
+        E::ResistedWrench(_) | E::SvdNoConvergence | E::VolumeOverflow => {
+            InputError::new_err(message)
+        }
+        _ => QualityError::new_err(message),
+    }
+}
+
+/// The `pqhull.Error` of a library [`QualityError`](pqhull::grasp::QualityError) (see
+/// [`of_quality`]), with its message; the circumscribed cones' grasp error keeps the grasp
+/// error's own message, as before the library wrapped it.
+pub fn quality(e: pqhull::grasp::QualityError) -> PyErr {
+    let message = match &e {
+        pqhull::grasp::QualityError::CircumscribedFriction(g) => g.to_string(),
+        e => e.to_string(),
+    };
+    of_quality(&e, message)
 }
 
 /// The `pqhull.Error` of a planner's error, with the library's message: a [`GraspError`] or a
 /// [`QualityError`] when a grasp or its evaluation failed, an [`InputError`] for a configuration
-/// the planner refuses (its bounds, a metric it does not climb, ...).
+/// the planner refuses (its bounds, a metric it does not climb, ...); a metric's error has its
+/// class as in [`quality`].
 pub fn plan(e: pqhull::plan::PlanError) -> PyErr {
-    use pqhull::grasp::metrics::MetricError;
     use pqhull::plan::PlanError;
     let message = e.to_string();
     match e {
-        PlanError::Grasp(_) | PlanError::Metric(MetricError::Grasp(_)) => {
-            GraspError::new_err(message)
-        }
-        PlanError::Quality(_) | PlanError::Metric(MetricError::Quality(_)) => {
-            QualityError::new_err(message)
-        }
+        PlanError::Grasp(_) => GraspError::new_err(message),
+        PlanError::Quality(e) => of_quality(&e, message),
         _ => InputError::new_err(message),
     }
 }

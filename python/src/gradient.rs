@@ -6,10 +6,11 @@
 use crate::errors;
 use numpy::ndarray::{Array2, Array3};
 use numpy::{IntoPyArray, PyArray1, PyArray2, PyArray3, ToPyArray};
-use pqhull::grasp::metrics::Score;
-use pqhull::grasp::ows::{ObjectWrenchSpace as Space, OwsEvaluator, evaluate_ows_batch};
-use pqhull::grasp::quality::{Evaluator, Method, Metric, QualityError, evaluate_batch};
-use pqhull::grasp::{Gradient, GradientError, Grasp, ows_gradient, q1_gradient, qinf_gradient};
+use pqhull::grasp::ows::ObjectWrenchSpace as Space;
+use pqhull::grasp::{
+    Evaluation, Evaluator, Gradient, GradientError, Grasp, Method, Metric, QualityError,
+    evaluate_batch, ows_gradient, q1_gradient, qinf_gradient,
+};
 use pyo3::prelude::*;
 use std::time::Instant;
 
@@ -70,56 +71,37 @@ impl Failure {
 }
 
 /// `metric` of one grasp by `method` (`space`: Q_OWS's), and its gradient; run with the GIL
-/// released by the caller. The score's time is the whole call's (the value and its gradient).
-/// The gradient is None exactly when the value is (Q_OWS of a grasp not in force closure).
+/// released by the caller. The evaluation's time is the whole call's (the value and its
+/// gradient). The gradient is None exactly when the value is (Q_OWS of a grasp not in force
+/// closure).
 pub(crate) fn one(
     grasp: &Grasp,
     metric: Metric,
     method: Method,
     space: Option<&Space>,
-) -> Result<(Score, Option<Gradient>), Failure> {
+) -> Result<(Evaluation, Option<Gradient>), Failure> {
     let started = Instant::now();
-    let (mut score, gradient) = match (metric, space) {
-        (Metric::Q1 | Metric::QInf { .. }, _) => {
-            let q = Evaluator::new(metric, method)
-                .evaluate(grasp)
-                .map_err(Failure::Quality)?;
-            let g = hull_gradient(grasp, metric, &q).map_err(Failure::Gradient)?;
-            let score = Score {
-                force_closure: q.force_closure,
-                value: Some(q.value),
-                stats: q.stats,
-            };
-            (score, Some(g))
-        }
-        (Metric::Ows, Some(space)) => {
-            let q = OwsEvaluator::new(method)
-                .evaluate(grasp, space)
-                .map_err(Failure::Quality)?;
-            let g = ows_row_gradient(grasp, space, &q).ok_or(Failure::NoOwsGradient)?;
-            let score = Score {
-                force_closure: q.force_closure,
-                value: q.value,
-                stats: q.stats,
-            };
-            (score, g)
-        }
-        (Metric::Ows, None) => return Err(Failure::Quality(QualityError::OwsNeedsWrenchSpace)),
-        (metric, _) => return Err(Failure::Unsupported(metric)),
+    if !matches!(metric, Metric::Q1 | Metric::QInf { .. } | Metric::Ows) {
+        return Err(Failure::Unsupported(metric));
+    }
+    // Only Q_OWS takes the space (and needs it).
+    let space = space.filter(|_| metric == Metric::Ows);
+    let mut evaluation = Evaluator::new(metric, method, space)
+        .and_then(|mut evaluator| evaluator.evaluate(grasp))
+        .map_err(Failure::Quality)?;
+    let gradient = match space {
+        Some(space) => ows_row_gradient(grasp, space, &evaluation).ok_or(Failure::NoOwsGradient)?,
+        None => Some(hull_gradient(grasp, &evaluation).map_err(Failure::Gradient)?),
     };
-    score.stats.elapsed = started.elapsed();
-    Ok((score, gradient))
+    evaluation.stats.elapsed = started.elapsed();
+    Ok((evaluation, gradient))
 }
 
-/// Q1's or Q∞'s gradient (`metric` says which) of `quality`, the grasp's value.
-fn hull_gradient(
-    grasp: &Grasp,
-    metric: Metric,
-    quality: &pqhull::grasp::quality::Quality,
-) -> Result<Gradient, GradientError> {
-    match metric {
-        Metric::QInf { with_zero_wrench } => qinf_gradient(grasp, quality, with_zero_wrench),
-        _ => q1_gradient(grasp, quality),
+/// Q1's or Q∞'s gradient (the evaluation's metric says which) of `evaluation`, the grasp's value.
+fn hull_gradient(grasp: &Grasp, evaluation: &Evaluation) -> Result<Gradient, GradientError> {
+    match evaluation.metric {
+        Metric::QInf { .. } => qinf_gradient(grasp, evaluation),
+        _ => q1_gradient(grasp, evaluation),
     }
 }
 
@@ -128,11 +110,11 @@ fn hull_gradient(
 fn ows_row_gradient(
     grasp: &Grasp,
     space: &Space,
-    quality: &pqhull::grasp::ows::OwsQuality,
+    evaluation: &Evaluation,
 ) -> Option<Option<Gradient>> {
-    match quality.value {
+    match evaluation.value {
         None => Some(None),
-        Some(_) => ows_gradient(grasp, space, quality).map(Some),
+        Some(_) => ows_gradient(grasp, space, evaluation).map(Some),
     }
 }
 
@@ -151,39 +133,33 @@ pub(crate) fn batch(
     space: Option<&Space>,
 ) -> Vec<Result<Row, String>> {
     use rayon::prelude::*;
-    match (metric, space) {
-        (Metric::Q1 | Metric::QInf { .. }, _) => {
-            let values = evaluate_batch(grasps, metric, method);
-            grasps
-                .par_iter()
-                .zip(values.into_par_iter())
-                .map(|(g, r)| {
-                    let q = r.map_err(|e| e.to_string())?;
-                    let d = hull_gradient(g, metric, &q).map_err(|e| message(&e))?;
-                    Ok((Some(q.value), q.force_closure, Some(d)))
-                })
-                .collect()
-        }
-        (Metric::Ows, Some(space)) => {
-            let values = evaluate_ows_batch(grasps, space, method);
-            grasps
-                .par_iter()
-                .zip(values.into_par_iter())
-                .map(|(g, r)| {
-                    let q = r.map_err(|e| e.to_string())?;
-                    let d = ows_row_gradient(g, space, &q).ok_or(NO_OWS_GRADIENT)?;
-                    Ok((q.value, q.force_closure, d))
-                })
-                .collect()
-        }
+    let space = match (metric, space) {
+        (Metric::Q1 | Metric::QInf { .. }, _) => None,
+        (Metric::Ows, Some(space)) => Some(space),
         (metric, space) => {
             let why = match space {
                 None if metric == Metric::Ows => QualityError::OwsNeedsWrenchSpace.to_string(),
                 _ => format!("gradient: metric {metric} has none"),
             };
-            grasps.iter().map(|_| Err(why.clone())).collect()
+            return grasps.iter().map(|_| Err(why.clone())).collect();
         }
-    }
+    };
+    let values = match evaluate_batch(grasps, metric, method, space) {
+        Ok(values) => values,
+        Err(e) => return grasps.iter().map(|_| Err(e.to_string())).collect(),
+    };
+    grasps
+        .par_iter()
+        .zip(values.into_par_iter())
+        .map(|(g, r)| {
+            let q = r.map_err(|e| e.to_string())?;
+            let d = match space {
+                Some(space) => ows_row_gradient(g, space, &q).ok_or(NO_OWS_GRADIENT)?,
+                None => Some(hull_gradient(g, &q).map_err(|e| message(&e))?),
+            };
+            Ok((q.value, q.force_closure, d))
+        })
+        .collect()
 }
 
 /// One grasp's gradient as Python values: (m, 3) positions, (m, 3) normals, friction and

@@ -9,10 +9,12 @@ use numpy::{
     PyArray1, PyArray2, PyArray3, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3,
     PyUntypedArrayMethods, ToPyArray,
 };
-use pqhull::grasp::metrics::{Score, Scorer, score_batch};
 use pqhull::grasp::ows::ObjectWrenchSpace as Space;
-use pqhull::grasp::quality::{Method, Metric, NameError, QualityError};
-use pqhull::grasp::{Contact, FrictionModel, Gradient, Grasp};
+use pqhull::grasp::quality::NameError;
+use pqhull::grasp::{
+    Contact, Evaluation, Evaluator, FrictionModel, Gradient, Grasp, Method, Metric, QualityError,
+    evaluate_batch,
+};
 use pyo3::prelude::*;
 
 /// One grasp's quality.
@@ -258,9 +260,9 @@ pub(crate) fn one_grasp(
 }
 
 impl Quality {
-    /// The Python value of a [`Score`] (no value for Q_OWS or resistance when not force
+    /// The Python value of an [`Evaluation`] (no value for Q_OWS or resistance when not force
     /// closure).
-    pub(crate) fn of_score(s: &Score) -> Self {
+    pub(crate) fn of_evaluation(s: &Evaluation) -> Self {
         Quality {
             value: s.value,
             force_closure: s.force_closure,
@@ -274,9 +276,9 @@ impl Quality {
         }
     }
 
-    /// A score with its gradient ([`gradient::One`]; None for Q_OWS without a value).
-    fn of_gradient(s: &Score, g: Option<gradient::One>) -> Self {
-        let quality = Quality::of_score(s);
+    /// An evaluation with its gradient ([`gradient::One`]; None for Q_OWS without a value).
+    fn of_gradient(s: &Evaluation, g: Option<gradient::One>) -> Self {
+        let quality = Quality::of_evaluation(s);
         match g {
             None => quality,
             Some(g) => Quality {
@@ -290,7 +292,7 @@ impl Quality {
     }
 }
 
-/// One grasp by any metric ([`Scorer`]), for the single-grasp functions; with `gradient` (Q1,
+/// One grasp by any metric ([`Evaluator`]), for the single-grasp functions; with `gradient` (Q1,
 /// Q∞, Q_OWS by an exact method), the value's gradient too.
 #[allow(clippy::too_many_arguments)] // the Python signature
 pub(crate) fn single(
@@ -327,16 +329,16 @@ pub(crate) fn single(
         None => g,
     };
     if gradient {
-        let (score, d) = py
+        let (evaluation, d) = py
             .detach(|| gradient::one(&g, metric, method, space))
             .map_err(gradient::Failure::into_py)?;
         let d = d.map(|d| gradient::One::new(py, &d));
-        return Ok(Quality::of_gradient(&score, d));
+        return Ok(Quality::of_gradient(&evaluation, d));
     }
-    let score = py
-        .detach(|| Scorer::new(metric, method, space)?.score(&g))
-        .map_err(crate::metrics::error)?;
-    Ok(Quality::of_score(&score))
+    let evaluation = py
+        .detach(|| Evaluator::new(metric, method, space)?.evaluate(&g))
+        .map_err(errors::quality)?;
+    Ok(Quality::of_evaluation(&evaluation))
 }
 
 /// q1(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
@@ -537,8 +539,8 @@ pub fn evaluate(
             "metric \"ows\" needs space= (an ObjectWrenchSpace), and only it takes one",
         ));
     }
-    // A scorer that cannot be made (a zero wrench to resist) is refused before any work.
-    Scorer::new(metric, method, space).map_err(crate::metrics::error)?;
+    // An evaluator that cannot be made (a zero wrench to resist) is refused before any work.
+    Evaluator::new(metric, method, space).map_err(errors::quality)?;
     let frame = frame(cone_edges, torque_reference, torque_scale)?;
     if let Some(t) = threads {
         pqhull::grasp::check_threads(t).map_err(|e| errors::input(e.to_string()))?;
@@ -578,8 +580,8 @@ pub fn evaluate(
             return gradient::batch(&good, metric, method, space);
         }
         // Refusals were checked above, before any work: a failure here is the batch's own.
-        match score_batch(&good, metric, method, space) {
-            Ok(scores) => scores
+        match evaluate_batch(&good, metric, method, space) {
+            Ok(evaluations) => evaluations
                 .into_iter()
                 .map(|r| {
                     r.map(|s| (s.value, s.force_closure, None))

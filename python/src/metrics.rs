@@ -1,20 +1,13 @@
-//! The other metrics from Python (`pqhull::grasp::metrics`), one grasp at a time: the cone
-//! bracket, wrench resistance, the GWS volume and the grasp matrix's singular values.
+//! The other metrics from Python, one grasp at a time: the cone bracket and wrench resistance
+//! (`pqhull::grasp::Evaluator`), the GWS volume and the grasp matrix's singular values
+//! (`pqhull::grasp::metrics`).
 
 use crate::errors;
 use crate::grasps::{Quality, method_of, one_grasp, single};
 use numpy::{PyArray1, PyReadonlyArray1, PyReadonlyArray2, ToPyArray};
-use pqhull::grasp::metrics::{self, MetricError};
-use pqhull::grasp::quality::Metric;
+use pqhull::grasp::metrics;
+use pqhull::grasp::{Evaluator, Metric, QualityError};
 use pyo3::prelude::*;
-
-pub(crate) fn error(e: MetricError) -> PyErr {
-    match e {
-        MetricError::Quality(e) => errors::quality(e),
-        MetricError::Grasp(_) => errors::grasp(e.to_string()),
-        e => errors::input(e.to_string()),
-    }
-}
 
 /// cone_bracket(positions, normals, tangents=None, *, friction, cone_edges, torque_reference=None,
 /// torque_scale=None, method="partial") -> (low, high): Q1 of the true circular friction cones
@@ -47,10 +40,13 @@ pub fn cone_bracket(
         torque_reference,
         torque_scale,
     )?;
-    let b = py
-        .detach(|| metrics::cone_bracket(&g, method))
-        .map_err(error)?;
-    Ok((b.low(), b.high()))
+    let evaluation = py
+        .detach(|| Evaluator::new(Metric::ConeBracket, method, None)?.evaluate(&g))
+        .map_err(errors::quality)?;
+    let bracket = evaluation
+        .bracket
+        .expect("the cone bracket's evaluation has a bracket");
+    Ok((bracket.low, bracket.high))
 }
 
 /// resist(positions, normals, tangents=None, *, wrench, friction, cone_edges,
@@ -124,8 +120,12 @@ pub fn gws_volume(
         torque_reference,
         torque_scale,
     )?;
-    let (volume, _) = py.detach(|| metrics::gws_volume(&g)).map_err(error)?;
-    Ok(volume)
+    py.detach(|| metrics::gws_volume(&g)).map_err(|e| match e {
+        // The hull engine's refusal (non-finite wrenches) is an input error with the engine's
+        // message, as before the library wrapped it.
+        QualityError::Hull(e) => errors::input(e.to_string()),
+        e => errors::quality(e),
+    })
 }
 
 /// grasp_matrix_metrics(positions, normals, tangents=None, *, friction, cone_edges,
@@ -156,10 +156,8 @@ pub fn grasp_matrix_metrics<'py>(
         torque_reference,
         torque_scale,
     )?;
-    let m = metrics::grasp_matrix_metrics(&g).map_err(error)?;
-    Ok((
-        m.singular_values.to_pyarray(py),
-        m.sigma_min(),
-        m.isotropy(),
-    ))
+    let s = metrics::grasp_matrix_singular_values(&g).map_err(errors::quality)?;
+    // Largest first: σ_min is the last, the isotropy σ_min / σ_max (0 when σ_max is 0).
+    let isotropy = if s[0] > 0.0 { s[5] / s[0] } else { 0.0 };
+    Ok((s.to_pyarray(py), s[5], isotropy))
 }

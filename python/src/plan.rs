@@ -5,7 +5,7 @@ use crate::errors;
 use crate::grasps::{method_named, metric_of};
 use crate::ows::{self, ObjectWrenchSpace};
 use numpy::{PyArray1, PyArray3, PyArrayMethods, ToPyArray};
-use pqhull::grasp::quality::{Method, Metric};
+use pqhull::grasp::{Method, Metric};
 use pqhull::plan::{DescentConfig, DescentReport as Report, PlanError, plan_descent as plan};
 use pyo3::prelude::*;
 
