@@ -15,8 +15,7 @@
 #![allow(unsafe_code)]
 
 use pqhull::geometry::Rng;
-use pqhull::grasp::quality::{Evaluator, Method, Metric};
-use pqhull::grasp::{FrictionModel, Grasp};
+use pqhull::grasp::{Evaluator, FrictionModel, Grasp, Method, Metric};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
@@ -129,7 +128,7 @@ fn check_second_pass<G>(
 
 #[test]
 fn q1_partial_allocates_nothing_in_steady_state_but_exact_caches() {
-    let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial);
+    let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial, None).unwrap();
     check_second_pass("Q1, k = 32", &grasps(32, 120), 40, |g| {
         let q = evaluator.evaluate(g).unwrap();
         kind(q.force_closure, q.stats.facets_created)
@@ -141,7 +140,7 @@ fn q_inf_partial_allocates_nothing_in_steady_state_but_exact_caches() {
     let metric = Metric::QInf {
         with_zero_wrench: true,
     };
-    let mut evaluator = Evaluator::new(metric, Method::Partial);
+    let mut evaluator = Evaluator::new(metric, Method::Partial, None).unwrap();
     check_second_pass("Q-inf with zero wrench, k = 8", &grasps(8, 60), 150, |g| {
         let q = evaluator.evaluate(g).unwrap();
         kind(q.force_closure, q.stats.facets_created)
@@ -181,7 +180,7 @@ fn hull_rebuilds_allocate_nothing_in_steady_state() {
 /// `OwsInflation` between grasps, so the force-closure ones allocate only exact caches).
 #[test]
 fn ows_partial_allocates_nothing_in_steady_state_but_exact_caches() {
-    use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
+    use pqhull::grasp::ows::ObjectWrenchSpace;
     use pqhull::mesh::{Mesh, SurfaceSampler};
     let mesh = Mesh::uv_sphere(0.3, 8, 12).unwrap();
     let friction = FrictionModel::try_new(0.5, 8).unwrap();
@@ -194,9 +193,9 @@ fn ows_partial_allocates_nothing_in_steady_state_but_exact_caches() {
             space.frame(&fingers).unwrap()
         })
         .collect();
-    let mut evaluator = OwsEvaluator::new(Method::Partial);
+    let mut evaluator = Evaluator::new(Metric::Ows, Method::Partial, Some(&space)).unwrap();
     check_second_pass("OWS on a sphere", &set, 100, |g| {
-        let q = evaluator.evaluate(g, &space).unwrap();
+        let q = evaluator.evaluate(g).unwrap();
         kind(q.force_closure, q.stats.facets_created)
     });
 }

@@ -5,8 +5,10 @@
 
 use crate::support::grasps::{Shape, random_grasp};
 use pqhull::geometry::Rng;
-use pqhull::grasp::quality::{Evaluator, Method, Metric};
-use pqhull::grasp::{Contact, FrictionModel, Gradient, Grasp, q1_gradient, qinf_gradient};
+use pqhull::grasp::{
+    Contact, Evaluation, Evaluator, FrictionModel, Gradient, Grasp, Method, Metric, q1_gradient,
+    qinf_gradient,
+};
 
 /// The inputs of a grasp, to perturb one at a time.
 #[derive(Clone)]
@@ -39,7 +41,8 @@ impl Inputs {
 }
 
 fn value_of(evaluator: &mut Evaluator, inputs: &Inputs) -> f64 {
-    evaluator.evaluate(&inputs.grasp()).expect("Q1").value
+    let evaluation = evaluator.evaluate(&inputs.grasp()).expect("Q1");
+    evaluation.value.expect("Q1 and Q∞ have a value")
 }
 
 /// A random grasp's inputs: contacts on an ellipsoid or a cylinder (whose normals are generic:
@@ -141,10 +144,10 @@ fn check_against_differences(
     metric: Metric,
     count: usize,
     seed: u64,
-    gradient_of: impl Fn(&Grasp, &pqhull::grasp::quality::Quality) -> Gradient,
+    gradient_of: impl Fn(&Grasp, &Evaluation) -> Gradient,
 ) -> (usize, usize, usize, usize, usize, usize) {
     let mut rng = Rng::new(seed);
-    let mut evaluator = Evaluator::new(metric, Method::Partial);
+    let mut evaluator = Evaluator::new(metric, Method::Partial, None).unwrap();
     let (mut grasps, mut inside, mut flagged, mut checked, mut kinks) = (0, 0, 0, 0, 0);
     let mut flagged_inside = 0;
     while grasps < count {
@@ -160,7 +163,8 @@ fn check_against_differences(
         grasps += 1;
         inside += usize::from(quality.force_closure);
         let what = format!("{metric:?}, grasp {grasps}");
-        let (c, k) = compare_with_differences(&what, &inputs, quality.value, &gradient, |i| {
+        let value = quality.value.expect("Q1 and Q∞ have a value");
+        let (c, k) = compare_with_differences(&what, &inputs, value, &gradient, |i| {
             value_of(&mut evaluator, i)
         });
         checked += c;
@@ -195,7 +199,7 @@ fn qinf_gradient_is_the_finite_difference_of_qinf() {
         with_zero_wrench: false,
     };
     let (grasps, inside, ..) =
-        check_against_differences(plain, 150, 2813, |g, q| qinf_gradient(g, q, false).unwrap());
+        check_against_differences(plain, 150, 2813, |g, q| qinf_gradient(g, q).unwrap());
     assert!(
         inside >= 8 && grasps - inside >= 30,
         "both kinds: {inside} of {grasps}"
@@ -206,7 +210,7 @@ fn qinf_gradient_is_the_finite_difference_of_qinf() {
         with_zero_wrench: true,
     };
     let (grasps, inside, .., flagged_inside) =
-        check_against_differences(zero, 20, 2814, |g, q| qinf_gradient(g, q, true).unwrap());
+        check_against_differences(zero, 20, 2814, |g, q| qinf_gradient(g, q).unwrap());
     assert_eq!(inside, grasps);
     // Generic force-closure grasps are differentiable: a face of the sum with a pyramid's whole
     // rim on it (k points, 2-dimensional with the zero wrench beside it) is not a tie.
@@ -221,7 +225,7 @@ fn qinf_gradient_is_the_finite_difference_of_qinf() {
 /// friction), and repeated contacts.
 #[test]
 fn non_differentiable_grasps_are_flagged() {
-    let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial);
+    let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial, None).unwrap();
     let flagged = |evaluator: &mut Evaluator, grasp: &Grasp| {
         let quality = evaluator.evaluate(grasp).unwrap();
         !q1_gradient(grasp, &quality).unwrap().differentiable
@@ -294,7 +298,7 @@ fn ties_between_mirrored_facets_are_flagged() {
     let mirror_wrench = |w: &[f64; 6]| [-w[0], w[1], w[2], w[3], -w[4], -w[5]];
     let mut rng = Rng::new(41);
     use crate::support::grasps::random_disturbances;
-    use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
+    use pqhull::grasp::ows::ObjectWrenchSpace;
     let (mut tied, mut own_image, mut ows_tied) = (0, 0, 0);
     for _ in 0..60 {
         // Two contacts on the unit sphere (normals inward, a tangent given) and their mirrors.
@@ -317,7 +321,7 @@ fn ties_between_mirrored_facets_are_flagged() {
                 .unwrap()
         };
         let (symmetric, broken) = (grasp_of(0.0), grasp_of(1e-3));
-        let mut partial = Evaluator::new(Metric::Q1, Method::Partial);
+        let mut partial = Evaluator::new(Metric::Q1, Method::Partial, None).unwrap();
         let quality = partial.evaluate(&symmetric).unwrap();
         if !quality.force_closure {
             continue;
@@ -327,7 +331,7 @@ fn ties_between_mirrored_facets_are_flagged() {
             continue;
         }
         tied += 1;
-        let mut full = Evaluator::new(Metric::Q1, Method::Full);
+        let mut full = Evaluator::new(Metric::Q1, Method::Full, None).unwrap();
         for (method, evaluator) in [("partial", &mut partial), ("full", &mut full)] {
             let quality = evaluator.evaluate(&symmetric).unwrap();
             assert!(quality.tied(), "{method}: {quality:?}");
@@ -338,7 +342,8 @@ fn ties_between_mirrored_facets_are_flagged() {
         let qinf = Metric::QInf {
             with_zero_wrench: true,
         };
-        let quality = Evaluator::new(qinf, Method::Partial)
+        let quality = Evaluator::new(qinf, Method::Partial, None)
+            .unwrap()
             .evaluate(&symmetric)
             .unwrap();
         if quality.force_closure {
@@ -352,17 +357,16 @@ fn ties_between_mirrored_facets_are_flagged() {
         let both: Vec<[f64; 6]> = half.iter().flat_map(|d| [*d, mirror_wrench(d)]).collect();
         let space = ObjectWrenchSpace::from_disturbances(both).unwrap();
         for method in [Method::Partial, Method::Full] {
-            let quality = OwsEvaluator::new(method)
-                .evaluate(&symmetric, &space)
-                .unwrap();
+            let mut evaluator = Evaluator::new(Metric::Ows, method, Some(&space)).unwrap();
+            let quality = evaluator.evaluate(&symmetric).unwrap();
             if quality.value.is_none() {
                 continue;
             }
-            ows_tied += usize::from(quality.tied);
+            ows_tied += usize::from(quality.tied());
             let gradient = pqhull::grasp::ows_gradient(&symmetric, &space, &quality).unwrap();
             assert!(!gradient.differentiable, "{method:?}: {quality:?}");
-            let moved = OwsEvaluator::new(method).evaluate(&broken, &space).unwrap();
-            assert!(!moved.tied, "{method:?}, symmetry broken: {moved:?}");
+            let moved = evaluator.evaluate(&broken).unwrap();
+            assert!(!moved.tied(), "{method:?}, symmetry broken: {moved:?}");
         }
     }
     eprintln!(
@@ -378,10 +382,7 @@ fn ties_between_mirrored_facets_are_flagged() {
 
 /// Whether the plane of the deciding wrenches of `quality` is its own image under `mirror`
 /// (a linear isometry): its unit normal, by Gram–Schmidt on the simplex's edges, is fixed.
-fn is_self_mirrored(
-    quality: &pqhull::grasp::quality::Quality,
-    mirror: impl Fn(&[f64; 6]) -> [f64; 6],
-) -> bool {
+fn is_self_mirrored(quality: &Evaluation, mirror: impl Fn(&[f64; 6]) -> [f64; 6]) -> bool {
     let w = quality.deciding_wrenches();
     let dot = |a: &[f64; 6], b: &[f64; 6]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
     let mut basis: Vec<[f64; 6]> = Vec::new();
@@ -423,16 +424,16 @@ fn is_self_mirrored(
 #[test]
 fn ows_gradient_is_the_finite_difference_of_ows() {
     use crate::support::grasps::random_disturbances;
-    use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
+    use pqhull::grasp::ows::ObjectWrenchSpace;
     let mut rng = Rng::new(2815);
-    let mut evaluator = OwsEvaluator::new(Method::Partial);
     let (mut grasps, mut flagged, mut checked, mut kinks) = (0, 0, 0, 0);
     while grasps < 60 {
         let inputs = random_inputs(&mut rng);
         let space =
             ObjectWrenchSpace::from_disturbances(random_disturbances(&mut rng, 12)).unwrap();
         let grasp = inputs.grasp();
-        let quality = evaluator.evaluate(&grasp, &space).unwrap();
+        let mut evaluator = Evaluator::new(Metric::Ows, Method::Partial, Some(&space)).unwrap();
+        let quality = evaluator.evaluate(&grasp).unwrap();
         let Some(value) = quality.value else { continue };
         let gradient = pqhull::grasp::ows_gradient(&grasp, &space, &quality).unwrap();
         if !gradient.differentiable {
@@ -442,7 +443,7 @@ fn ows_gradient_is_the_finite_difference_of_ows() {
         grasps += 1;
         let what = format!("Q_OWS, grasp {grasps}");
         let (c, k) = compare_with_differences(&what, &inputs, value, &gradient, |i| {
-            let q = evaluator.evaluate(&i.grasp(), &space).unwrap();
+            let q = evaluator.evaluate(&i.grasp()).unwrap();
             q.value.expect("still force closure")
         });
         checked += c;

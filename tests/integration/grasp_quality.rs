@@ -3,8 +3,10 @@
 
 use crate::support::grasps::random_bar_grasp;
 use pqhull::geometry::Rng;
-use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, evaluate_batch, q1_of_wrenches};
-use pqhull::grasp::{Contact, FrictionModel, Grasp};
+use pqhull::grasp::quality::q1_of_wrenches;
+use pqhull::grasp::{
+    Contact, Evaluation, Evaluator, FrictionModel, Grasp, Method, Metric, evaluate_batch,
+};
 
 fn axis_wrenches() -> Vec<[f64; 6]> {
     let mut w = Vec::new();
@@ -33,9 +35,9 @@ fn cross_polytope_cube_and_a_missing_direction() {
         let q = q1_of_wrenches(&axis_wrenches(), method).unwrap();
         assert!(q.force_closure, "{method:?}");
         assert!(
-            (q.value - 1.0 / 6f64.sqrt()).abs() < 1e-14,
+            (q.value.unwrap() - 1.0 / 6f64.sqrt()).abs() < 1e-14,
             "{method:?}: {}",
-            q.value
+            q.value.unwrap()
         );
         assert_eq!(q.deciding_wrenches().len(), 6);
 
@@ -44,9 +46,9 @@ fn cross_polytope_cube_and_a_missing_direction() {
             .collect();
         let q = q1_of_wrenches(&cube, method).unwrap();
         assert!(
-            q.force_closure && (q.value - 1.0).abs() < 1e-14,
+            q.force_closure && (q.value.unwrap() - 1.0).abs() < 1e-14,
             "{method:?}: {}",
-            q.value
+            q.value.unwrap()
         );
 
         // Without −e_6 the origin lies on the facet x_6 = 0: zero, not force closure.
@@ -54,7 +56,7 @@ fn cross_polytope_cube_and_a_missing_direction() {
         w.retain(|e| e[5] != -1.0);
         let q = q1_of_wrenches(&w, method).unwrap();
         assert!(!q.force_closure, "{method:?}");
-        assert_eq!(q.value, 0.0, "{method:?}");
+        assert_eq!(q.value.unwrap(), 0.0, "{method:?}");
     }
 }
 
@@ -62,20 +64,24 @@ fn cross_polytope_cube_and_a_missing_direction() {
 /// wrench size (the wrenches here have norm ≈ 1): a plane distance is a dot product whose rounding
 /// is ~1e−16 of the wrenches, not of the value, and coplanar facets triangulated with different
 /// base vertices round differently (seen: 5.1176912800714e−4 vs …8006e−4, 1.5e−15 apart).
-fn agree(a: &Quality, b: &Quality, what: &str) {
+fn agree(a: &Evaluation, b: &Evaluation, what: &str) {
     assert_eq!(a.force_closure, b.force_closure, "{what}: {a:?} vs {b:?}");
-    let scale = a.value.abs().max(b.value.abs()).max(1e-300);
+    let (x, y) = (a.value.unwrap(), b.value.unwrap());
+    let scale = x.abs().max(y.abs()).max(1e-300);
     assert!(
-        (a.value - b.value).abs() <= 1e-12 * scale.max(1e-2),
-        "{what}: {} vs {}",
-        a.value,
-        b.value
+        (x - y).abs() <= 1e-12 * scale.max(1e-2),
+        "{what}: {x} vs {y}"
     );
 }
 
 /// `metric` of `grasp` by the partial and by the full method, fresh evaluators.
-fn partial_and_full(metric: Metric, grasp: &Grasp) -> (Quality, Quality) {
-    let by = |method| Evaluator::new(metric, method).evaluate(grasp).unwrap();
+fn partial_and_full(metric: Metric, grasp: &Grasp) -> (Evaluation, Evaluation) {
+    let by = |method| {
+        Evaluator::new(metric, method, None)
+            .unwrap()
+            .evaluate(grasp)
+            .unwrap()
+    };
     (by(Method::Partial), by(Method::Full))
 }
 
@@ -90,12 +96,15 @@ fn two_antipodal_hard_fingers_are_not_force_closure() {
         .build()
         .unwrap();
     for method in methods() {
-        let q = Evaluator::new(Metric::Q1, method).evaluate(&grasp).unwrap();
+        let q = Evaluator::new(Metric::Q1, method, None)
+            .unwrap()
+            .evaluate(&grasp)
+            .unwrap();
         assert!(!q.force_closure, "{method:?}");
         assert!(
-            q.value.is_finite() && q.value <= 0.0,
+            q.value.unwrap().is_finite() && q.value.unwrap() <= 0.0,
             "{method:?}: {}",
-            q.value
+            q.value.unwrap()
         );
     }
 }
@@ -106,7 +115,8 @@ fn rotation_about_the_reference_point_and_torque_scale() {
     let mut checked = 0;
     while checked < 20 {
         let grasp = random_bar_grasp(&mut rng, 4, 8);
-        let q = Evaluator::new(Metric::Q1, Method::Partial)
+        let q = Evaluator::new(Metric::Q1, Method::Partial, None)
+            .unwrap()
             .evaluate(&grasp)
             .unwrap();
         if !q.force_closure {
@@ -127,14 +137,15 @@ fn rotation_about_the_reference_point_and_torque_scale() {
             .torque_scale(grasp.torque_scale())
             .build()
             .unwrap();
-        let r = Evaluator::new(Metric::Q1, Method::Partial)
+        let r = Evaluator::new(Metric::Q1, Method::Partial, None)
+            .unwrap()
             .evaluate(&rotated)
             .unwrap();
         assert!(
-            (q.value - r.value).abs() <= 1e-6 * q.value,
+            (q.value.unwrap() - r.value.unwrap()).abs() <= 1e-6 * q.value.unwrap(),
             "{} vs {}",
-            q.value,
-            r.value
+            q.value.unwrap(),
+            r.value.unwrap()
         );
 
         // Scaling positions and ρ together leaves every wrench, hence Q1, unchanged (exactly for
@@ -151,10 +162,11 @@ fn rotation_about_the_reference_point_and_torque_scale() {
             .torque_scale(grasp.torque_scale() * 4.0)
             .build()
             .unwrap();
-        let s = Evaluator::new(Metric::Q1, Method::Partial)
+        let s = Evaluator::new(Metric::Q1, Method::Partial, None)
+            .unwrap()
             .evaluate(&scaled)
             .unwrap();
-        assert_eq!(s.value, q.value);
+        assert_eq!(s.value.unwrap(), q.value.unwrap());
 
         // Doubling ρ halves every torque coordinate: Q1 is that of the mapped wrench set.
         let doubled = Grasp::builder(grasp.contacts().to_vec(), grasp.friction())
@@ -167,15 +179,17 @@ fn rotation_about_the_reference_point_and_torque_scale() {
             .iter()
             .map(|x| std::array::from_fn(|c| if c < 3 { x[c] } else { x[c] / 2.0 }))
             .collect();
-        let d = Evaluator::new(Metric::Q1, Method::Partial)
+        let d = Evaluator::new(Metric::Q1, Method::Partial, None)
+            .unwrap()
             .evaluate(&doubled)
             .unwrap();
         let expected = q1_of_wrenches(&mapped, Method::Full).unwrap();
         assert!(
-            (d.value - expected.value).abs() <= 1e-12 * expected.value.abs().max(1e-3),
+            (d.value.unwrap() - expected.value.unwrap()).abs()
+                <= 1e-12 * expected.value.unwrap().abs().max(1e-3),
             "{} vs {}",
-            d.value,
-            expected.value
+            d.value.unwrap(),
+            expected.value.unwrap()
         );
     }
 }
@@ -187,8 +201,8 @@ fn partial_equals_full_on_ten_thousand_random_grasps() {
         .and_then(|s| s.parse().ok())
         .unwrap_or(10_000);
     let mut rng = Rng::new(20261122);
-    let mut partial = Evaluator::new(Metric::Q1, Method::Partial);
-    let mut full = Evaluator::new(Metric::Q1, Method::Full);
+    let mut partial = Evaluator::new(Metric::Q1, Method::Partial, None).unwrap();
+    let mut full = Evaluator::new(Metric::Q1, Method::Full, None).unwrap();
     let mut force_closure = 0;
     let mut by_gjk = 0;
     for case in 0..cases {
@@ -238,7 +252,11 @@ fn q_inf_implicit_equals_materialised() {
             by_gjk += usize::from(!a.force_closure && a.stats.facets_created == 0);
             if with_zero_wrench && !a.force_closure {
                 // The origin, a point of the sum, is on its boundary.
-                assert_eq!((a.value, b.value), (0.0, 0.0), "case {case}");
+                assert_eq!(
+                    (a.value.unwrap(), b.value.unwrap()),
+                    (0.0, 0.0),
+                    "case {case}"
+                );
             }
         }
     }
@@ -250,11 +268,14 @@ fn q_inf_implicit_equals_materialised() {
 fn batch_keeps_input_order() {
     let mut rng = Rng::new(9);
     let grasps: Vec<Grasp> = (0..64).map(|_| random_bar_grasp(&mut rng, 4, 6)).collect();
-    let batch = evaluate_batch(&grasps, Metric::Q1, Method::Partial);
-    let mut one = Evaluator::new(Metric::Q1, Method::Partial);
+    let batch = evaluate_batch(&grasps, Metric::Q1, Method::Partial, None).unwrap();
+    let mut one = Evaluator::new(Metric::Q1, Method::Partial, None).unwrap();
     for (grasp, result) in grasps.iter().zip(&batch) {
         let expected = one.evaluate(grasp).unwrap();
-        assert_eq!(result.as_ref().unwrap().value, expected.value);
+        assert_eq!(
+            result.as_ref().unwrap().value.unwrap(),
+            expected.value.unwrap()
+        );
     }
 }
 
@@ -274,21 +295,23 @@ fn q_inf_of_a_flat_sum_too_large_to_materialise() {
     .build()
     .unwrap();
     let by = |with_zero_wrench: bool, method: Method, grasp: &Grasp| {
-        Evaluator::new(Metric::QInf { with_zero_wrench }, method).evaluate(grasp)
+        Evaluator::new(Metric::QInf { with_zero_wrench }, method, None)
+            .unwrap()
+            .evaluate(grasp)
     };
     for with_zero_wrench in [true, false] {
         let q = by(with_zero_wrench, Method::Partial, &pinch).unwrap();
         assert!(!q.force_closure);
         // The two cones' sum contains the origin's neighbourhood within the flat: distance 0.
-        assert!(q.value.abs() < 1e-9, "{}", q.value);
+        assert!(q.value.unwrap().abs() < 1e-9, "{}", q.value.unwrap());
         // The full method answers it from the slab test too, before materialising anything.
         let flat = by(with_zero_wrench, Method::Full, &pinch).unwrap();
         assert!(!flat.force_closure);
         assert!(
-            (flat.value - q.value).abs() < 1e-9,
+            (flat.value.unwrap() - q.value.unwrap()).abs() < 1e-9,
             "{} vs {}",
-            flat.value,
-            q.value
+            flat.value.unwrap(),
+            q.value.unwrap()
         );
     }
     // A sum that size which is not flat is still refused by the full method (128³ > 2²⁰).
@@ -355,38 +378,41 @@ fn boundary_grasps_agree_with_the_exact_engine_on_the_raw_wrenches() {
     let set: Vec<Grasp> = (0..200)
         .map(|_| Grasp::random_on_box(&mut rng, [0.5, 0.2, 0.1], 4, friction))
         .collect();
-    let mut q1 = Evaluator::new(Metric::Q1, Method::Partial);
+    let mut q1 = Evaluator::new(Metric::Q1, Method::Partial, None).unwrap();
     let mut qinf = Evaluator::new(
         Metric::QInf {
             with_zero_wrench: true,
         },
         Method::Partial,
-    );
+        None,
+    )
+    .unwrap();
     let mut boundary = 0;
     for (i, grasp) in set.iter().enumerate() {
         let wrenches = grasp.wrenches();
         let exact = q1_of_wrenches(&wrenches, Method::Partial).unwrap();
-        let scale = exact.scale;
-        if exact.value.abs() > 1e-12 * scale {
+        let scale = exact.scale.unwrap();
+        if exact.value.unwrap().abs() > 1e-12 * scale {
             continue;
         }
         boundary += 1;
         let a = q1.evaluate(grasp).unwrap();
         assert!(!a.force_closure, "grasp {i}");
         assert!(
-            (a.value - exact.value).abs() <= 1e-14 * scale,
+            (a.value.unwrap() - exact.value.unwrap()).abs() <= 1e-14 * scale,
             "grasp {i}: {:e} vs exact {:e}",
-            a.value,
-            exact.value
+            a.value.unwrap(),
+            exact.value.unwrap()
         );
         let b = qinf.evaluate(grasp).unwrap();
         assert!(!b.force_closure, "grasp {i}");
         let m = grasp.contact_count() as f64;
         assert!(
-            b.value >= -1e-14 * b.scale && b.value <= m * exact.value.max(0.0) + 1e-14 * b.scale,
+            b.value.unwrap() >= -1e-14 * b.scale.unwrap()
+                && b.value.unwrap() <= m * exact.value.unwrap().max(0.0) + 1e-14 * b.scale.unwrap(),
             "grasp {i}: Q∞+0 {:e}, Q1 {:e}",
-            b.value,
-            exact.value
+            b.value.unwrap(),
+            exact.value.unwrap()
         );
     }
     assert!(boundary >= 3, "{boundary} boundary grasps");
@@ -415,7 +441,9 @@ fn huge_wrenches_are_an_error_and_large_ones_are_finite() {
                 with_zero_wrench: true,
             },
         ] {
-            let q = Evaluator::new(metric, Method::Partial).evaluate(&grasp);
+            let q = Evaluator::new(metric, Method::Partial, None)
+                .unwrap()
+                .evaluate(&grasp);
             if !ok {
                 assert!(
                     matches!(q, Err(QualityError::WrenchTooLarge { largest })
@@ -425,18 +453,19 @@ fn huge_wrenches_are_an_error_and_large_ones_are_finite() {
                 continue;
             }
             let q = q.unwrap();
-            assert!(q.value.is_finite(), "μ = {mu:e}: {q:?}");
+            assert!(q.value.unwrap().is_finite(), "μ = {mu:e}: {q:?}");
             if metric != Metric::Q1 {
                 continue; // the full Q∞ hull of 9^4 points takes minutes
             }
             let (a, b) = partial_and_full(metric, &grasp);
-            assert!(b.value.is_finite(), "μ = {mu:e}");
+            assert!(b.value.unwrap().is_finite(), "μ = {mu:e}");
             assert_eq!(a.force_closure, b.force_closure, "μ = {mu:e}");
             assert!(
-                (a.value - b.value).abs() <= 1e-12 * a.value.abs().max(1e-2 * a.scale),
+                (a.value.unwrap() - b.value.unwrap()).abs()
+                    <= 1e-12 * a.value.unwrap().abs().max(1e-2 * a.scale.unwrap()),
                 "μ = {mu:e}: {} vs {}",
-                a.value,
-                b.value
+                a.value.unwrap(),
+                b.value.unwrap()
             );
         }
     }
@@ -487,33 +516,41 @@ fn repeated_contacts_cost_nothing_and_scale_q_inf() {
     let mut by_qhull = 0;
     for case in 0..6 {
         let base = random_bar_grasp(&mut rng, 4, 8);
-        let q1 = Evaluator::new(Metric::Q1, Method::Partial)
+        let q1 = Evaluator::new(Metric::Q1, Method::Partial, None)
+            .unwrap()
             .evaluate(&base)
             .unwrap();
         for r in [2usize, 3] {
             let copies: Vec<usize> = (0..r).flat_map(|_| 0..4).collect();
             let repeated = with_contacts(&base, &copies);
-            let q1_r = Evaluator::new(Metric::Q1, Method::Partial)
+            let q1_r = Evaluator::new(Metric::Q1, Method::Partial, None)
+                .unwrap()
                 .evaluate(&repeated)
                 .unwrap();
-            assert_eq!(q1_r.value, q1.value, "case {case}, r = {r}");
+            assert_eq!(
+                q1_r.value.unwrap(),
+                q1.value.unwrap(),
+                "case {case}, r = {r}"
+            );
             assert_eq!(q1_r.stats.facets_created, q1.stats.facets_created);
             for with_zero_wrench in [false, true] {
                 let metric = Metric::QInf { with_zero_wrench };
-                let once = Evaluator::new(metric, Method::Partial)
+                let once = Evaluator::new(metric, Method::Partial, None)
+                    .unwrap()
                     .evaluate(&base)
                     .unwrap();
-                let many = Evaluator::new(metric, Method::Partial)
+                let many = Evaluator::new(metric, Method::Partial, None)
+                    .unwrap()
                     .evaluate(&repeated)
                     .unwrap();
                 let what = format!("case {case}, r = {r}, zero {with_zero_wrench}");
                 assert_eq!(once.force_closure, many.force_closure, "{what}");
-                let expected = r as f64 * once.value;
+                let expected = r as f64 * once.value.unwrap();
                 assert!(
-                    (many.value - expected).abs() <= 1e-12 * many.scale,
+                    (many.value.unwrap() - expected).abs() <= 1e-12 * many.scale.unwrap(),
                     "{what}: {} vs {r} × {}",
-                    many.value,
-                    once.value
+                    many.value.unwrap(),
+                    once.value.unwrap()
                 );
                 assert!(
                     many.stats.facets_created <= 2 * once.stats.facets_created + 64,
@@ -529,7 +566,8 @@ fn repeated_contacts_cost_nothing_and_scale_q_inf() {
         let mixed = with_contacts(&small, &[0, 1, 0, 2]);
         for with_zero_wrench in [false, true] {
             let metric = Metric::QInf { with_zero_wrench };
-            let got = Evaluator::new(metric, Method::Partial)
+            let got = Evaluator::new(metric, Method::Partial, None)
+                .unwrap()
                 .evaluate(&mixed)
                 .unwrap();
             let points = minkowski_points(&mixed, with_zero_wrench);

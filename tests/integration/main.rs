@@ -9,6 +9,7 @@ mod custom_strategy;
 mod degenerate;
 mod docs_paths;
 mod ellipsoid;
+mod evaluation;
 mod extreme_scales;
 mod far_query;
 mod full_method_exact;

@@ -5,11 +5,31 @@
 
 use crate::support::{BAR_FRICTION, bar_grasps};
 use pqhull::grasp::metrics::{
-    MetricError, cone_bracket, grasp_matrix, grasp_matrix_metrics, gws_volume, resist,
+    circumscribed, grasp_matrix, grasp_matrix_singular_values, gws_volume,
 };
-use pqhull::grasp::quality::{Method, QualityError, q1};
-use pqhull::grasp::{Contact, FrictionModel, Grasp};
+use pqhull::grasp::quality::q1;
+use pqhull::grasp::{
+    Contact, Evaluation, Evaluator, FrictionModel, Grasp, Method, Metric, QualityError,
+};
 use pqhull::{FarthestPoint, Hull};
+
+/// `metric` of `grasp` by `method`, through the front door.
+fn evaluate(metric: Metric, method: Method, grasp: &Grasp) -> Result<Evaluation, QualityError> {
+    Evaluator::new(metric, method, None)?.evaluate(grasp)
+}
+
+/// Wrench resistance of `wrench` by `method` (what `metrics::resist` was).
+fn resist(grasp: &Grasp, wrench: [f64; 6], method: Method) -> Result<Evaluation, QualityError> {
+    evaluate(Metric::Resist { wrench }, method, grasp)
+}
+
+/// The value of a metric that always has one (every metric but Q_OWS and resistance).
+fn value_of(metric: Metric, grasp: &Grasp) -> f64 {
+    evaluate(metric, Method::Partial, grasp)
+        .unwrap()
+        .value
+        .expect("the metric has a value")
+}
 
 fn with_friction(grasp: &Grasp, friction: FrictionModel) -> Grasp {
     Grasp::builder(grasp.contacts().to_vec(), friction)
@@ -31,16 +51,23 @@ fn bracket_contains_the_256_edge_estimate_and_shrinks(count: usize) {
         let friction = FrictionModel::try_new(BAR_FRICTION, k).unwrap();
         let mut widths = Vec::new();
         for (i, (g, estimate)) in grasps.iter().zip(&estimates).enumerate() {
-            let b = cone_bracket(&with_friction(g, friction), Method::Partial).unwrap();
-            let slack = 1e-12 * estimate.value.abs() + 1e-14 * estimate.scale;
+            let inscribed = evaluate(
+                Metric::ConeBracket,
+                Method::Partial,
+                &with_friction(g, friction),
+            )
+            .unwrap();
+            let b = inscribed.bracket.expect("a bracket");
+            let (value, scale) = (estimate.value.unwrap(), estimate.scale.unwrap());
+            let slack = 1e-12 * value.abs() + 1e-14 * scale;
             assert!(
-                b.low() <= estimate.value + slack && estimate.value <= b.high() + slack,
+                b.low <= value + slack && value <= b.high + slack,
                 "k = {k}, grasp {i}: {} ≤ {} ≤ {}",
-                b.low(),
-                estimate.value,
-                b.high()
+                b.low,
+                value,
+                b.high
             );
-            widths.push((b.high() - b.low()) / b.inscribed.scale);
+            widths.push((b.high - b.low) / inscribed.scale.unwrap());
         }
         widths.sort_by(f64::total_cmp);
         let median = widths[widths.len() / 2];
@@ -72,9 +99,13 @@ fn the_cone_bracket_on_hundreds_of_grasps() {
 #[test]
 fn without_friction_the_bracket_is_closed() {
     let g = &bar_grasps(5, 1, 4, FrictionModel::try_new(0.0, 8).unwrap())[0];
-    let b = cone_bracket(g, Method::Partial).unwrap();
-    assert_eq!(b.inscribed.value, b.circumscribed.value);
-    assert!(b.low() < b.inscribed.value && b.inscribed.value < b.high());
+    let cones = evaluate(Metric::ConeBracket, Method::Partial, g).unwrap();
+    // The circumscribed Q1 is no longer returned: Q1 of the grasp with the circumscribed model.
+    let outer = with_friction(g, circumscribed(g.friction()).unwrap());
+    let outer_q1 = evaluate(Metric::Q1, Method::Partial, &outer).unwrap();
+    let (b, inscribed) = (cones.bracket.unwrap(), cones.value.unwrap());
+    assert_eq!(inscribed, outer_q1.value.unwrap());
+    assert!(b.low < inscribed && inscribed < b.high);
 }
 
 /// Brute force: the largest t with −t·w in the hull of `points` (which holds the origin), from
@@ -132,7 +163,7 @@ fn resistance_and_volume_equal_qhull() {
     let mut compared = 0;
     for (i, (g, w)) in resist_cases().into_iter().enumerate() {
         let hull = qhull_full_hull(&g.wrenches()).unwrap();
-        let (volume, _) = gws_volume(&g).unwrap();
+        let volume = gws_volume(&g).unwrap();
         assert!(
             (volume - hull.volume).abs() <= 1e-9 * hull.volume,
             "grasp {i}: {volume} vs {}",
@@ -161,7 +192,7 @@ fn resistance_and_volume_equal_qhull() {
 fn resisting_a_zero_or_non_finite_wrench_is_a_clear_error() {
     let (g, _) = &resist_cases()[0];
     let zero = resist(g, [0.0; 6], Method::Partial).unwrap_err();
-    assert!(matches!(zero, MetricError::Wrench(_)));
+    assert!(matches!(zero, QualityError::ResistedWrench(_)));
     assert!(zero.to_string().contains("zero"), "{zero}");
     let nan = resist(g, [f64::NAN, 0.0, 0.0, 0.0, 0.0, 0.0], Method::Partial).unwrap_err();
     assert!(nan.to_string().contains("NaN"), "{nan}");
@@ -232,14 +263,15 @@ fn singular_values_equal_a_jacobi_svd_of_the_matrix_built_here() {
         }
         assert_eq!(columns, grasp_matrix(g), "grasp {i}: the documented matrix");
         let expected = jacobi_singular_values(&columns);
-        let got = grasp_matrix_metrics(g).unwrap();
-        for (a, b) in got.singular_values.iter().zip(&expected) {
+        let got = grasp_matrix_singular_values(g).unwrap();
+        for (a, b) in got.iter().zip(&expected) {
             assert!(
                 (a - b).abs() <= 1e-12 * expected[0],
                 "grasp {i}: {a} vs {b}"
             );
         }
-        assert!((got.isotropy() - expected[5] / expected[0]).abs() <= 1e-12);
+        let isotropy = value_of(Metric::Isotropy, g);
+        assert!((isotropy - expected[5] / expected[0]).abs() <= 1e-12);
     }
 }
 
@@ -256,20 +288,22 @@ fn degenerate_grasps_give_clear_values() {
     )
     .build()
     .unwrap();
-    let g = grasp_matrix_metrics(&pinch).unwrap();
-    assert!(g.sigma_min() <= 1e-14 * g.sigma_max(), "{g:?}");
-    assert!(g.isotropy() <= 1e-14);
+    let g = grasp_matrix_singular_values(&pinch).unwrap();
+    let sigma_min = value_of(Metric::SigmaMin, &pinch);
+    assert_eq!(sigma_min, g[5]);
+    assert!(sigma_min <= 1e-14 * g[0], "{g:?}");
+    assert!(value_of(Metric::Isotropy, &pinch) <= 1e-14);
     // Flat in exact arithmetic; the computed wrenches' rounding leaves a sliver of volume of its
     // order (the wrench scale is about 1.1, its sixth power about 2).
-    let (volume, _) = gws_volume(&pinch).unwrap();
+    let volume = gws_volume(&pinch).unwrap();
     assert!((0.0..1e-15).contains(&volume), "{volume}");
     // One contact: three singular values, the other three exactly 0.
     let one = Grasp::builder(pinch.contacts()[..1].to_vec(), friction)
         .build()
         .unwrap();
-    let g = grasp_matrix_metrics(&one).unwrap();
-    assert_eq!(g.singular_values[3..], [0.0; 3]);
-    assert_eq!(g.isotropy(), 0.0);
+    let g = grasp_matrix_singular_values(&one).unwrap();
+    assert_eq!(g[3..], [0.0; 3]);
+    assert_eq!(value_of(Metric::Isotropy, &one), 0.0);
     // Not force closure: resistance has no value, as Q_OWS.
     let r = resist(&pinch, [0.0, 0.0, -1.0, 0.0, 0.0, 0.0], Method::Partial).unwrap();
     assert!(!r.force_closure && r.value.is_none());
@@ -289,7 +323,7 @@ fn a_volume_beyond_f64_is_an_error() {
     let grasp = Grasp::builder(contacts.to_vec(), FrictionModel::try_new(1e50, 4).unwrap())
         .build()
         .unwrap();
-    assert_eq!(gws_volume(&grasp), Err(MetricError::VolumeOverflow));
+    assert_eq!(gws_volume(&grasp), Err(QualityError::VolumeOverflow));
 }
 
 /// A wrench so small that the multiple of it the grasp resists is beyond `f64::MAX` is an error,
@@ -304,7 +338,7 @@ fn resisting_a_subnormal_wrench_is_an_error() {
     let tiny = [1e-310, 0.0, 0.0, 0.0, 0.0, 0.0];
     assert_eq!(
         resist(&grasp, tiny, Method::Partial).map(|q| q.value),
-        Err(MetricError::Quality(QualityError::OwsValueOverflow))
+        Err(QualityError::OwsValueOverflow)
     );
     let small = [1e-300, 0.0, 0.0, 0.0, 0.0, 0.0];
     assert!(
@@ -318,29 +352,28 @@ fn resisting_a_subnormal_wrench_is_an_error() {
 
 #[test]
 fn metric_errors_give_their_cause_as_source() {
-    use pqhull::grasp::metrics::Scorer;
-    use pqhull::grasp::quality::Metric;
     use std::error::Error;
     let grasp = &bar_grasps(1, 1, 4, FrictionModel::try_new(BAR_FRICTION, 8).unwrap())[0];
     // A zero wrench to resist: the space's own error is the source.
     let zero = resist(grasp, [0.0; 6], Method::Partial).unwrap_err();
-    assert!(matches!(zero, MetricError::Wrench(_)), "{zero:?}");
+    assert!(matches!(zero, QualityError::ResistedWrench(_)), "{zero:?}");
     let cause = zero.source().expect("a source");
     assert!(
         cause
             .downcast_ref::<pqhull::grasp::ows::OwsError>()
             .is_some()
     );
-    // Q_OWS without a space: the quality error is the source, and says what was wrong.
-    let err = Scorer::new(Metric::Ows, Method::Partial, None).unwrap_err();
-    let source = err.source().expect("a source");
+    // Q_OWS without a space: refused up front, and the error says what was wrong (it is the
+    // quality error itself now, no longer wrapped in a metric error whose source it was).
+    let err = Evaluator::new(Metric::Ows, Method::Partial, None).unwrap_err();
+    assert_eq!(err, QualityError::OwsNeedsWrenchSpace);
     assert_eq!(
-        source.to_string(),
-        QualityError::OwsNeedsWrenchSpace.to_string()
+        err.to_string(),
+        "Q_OWS needs the object's wrench space, and only Q_OWS takes one"
     );
-    assert!(source.downcast_ref::<QualityError>().is_some());
+    assert!(err.source().is_none());
     // The batch call refuses the same way, before any grasp.
-    let batch = pqhull::grasp::metrics::score_batch(
+    let batch = pqhull::grasp::evaluate_batch(
         std::slice::from_ref(grasp),
         Metric::Ows,
         Method::Partial,

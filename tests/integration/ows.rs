@@ -1,9 +1,10 @@
 //! The object wrench space metric: known answers, partial = brute force, the ellipsoid bound.
 
 use pqhull::geometry::Rng;
-use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, evaluate_ows_batch, ows_of_wrenches};
-use pqhull::grasp::quality::{Method, QualityError};
-use pqhull::grasp::{Contact, FrictionModel, Grasp};
+use pqhull::grasp::ows::{ObjectWrenchSpace, ows_of_wrenches};
+use pqhull::grasp::{
+    Contact, Evaluator, FrictionModel, Grasp, Method, Metric, QualityError, evaluate_batch,
+};
 use pqhull::mesh::{Mesh, SurfaceSampler};
 use std::path::PathBuf;
 
@@ -70,8 +71,9 @@ fn cube_grasped_on_four_faces_matches_the_hand_derivation() {
             assert_eq!(q.deciding_disturbance, Some(2), "k = {k}, {method:?}");
         }
         // Through the evaluator (snapped wrenches: relative change below 6e−8).
-        let q = OwsEvaluator::new(Method::Partial)
-            .evaluate(&grasp, &space)
+        let q = Evaluator::new(Metric::Ows, Method::Partial, Some(&space))
+            .unwrap()
+            .evaluate(&grasp)
             .unwrap();
         assert!((q.value.unwrap() - mu / 2.0).abs() < 1e-6);
         // Each disturbance alone gives its own factor.
@@ -154,10 +156,11 @@ fn partial_equals_brute_force(mesh: &Mesh, grasps: usize, seed: u64) -> usize {
         ObjectWrenchSpace::from_mesh(mesh, FrictionModel::try_new(0.4, 4).unwrap()).unwrap();
     let mut rng = Rng::new(seed);
     let sampler = SurfaceSampler::new(mesh);
-    let mut partial = OwsEvaluator::new(Method::Partial);
-    let mut brute = OwsEvaluator::new(Method::Full);
-    let mut rays = OwsEvaluator::new(Method::PartialRays);
-    let mut ellipsoid = OwsEvaluator::new(Method::Ellipsoid);
+    let ows = |method| Evaluator::new(Metric::Ows, method, Some(&space)).unwrap();
+    let mut partial = ows(Method::Partial);
+    let mut brute = ows(Method::Full);
+    let mut rays = ows(Method::PartialRays);
+    let mut ellipsoid = ows(Method::Ellipsoid);
     let mut closure = 0;
     let mut by_gjk = 0;
     let (mut partial_facets, mut full_facets) = (0, 0);
@@ -167,11 +170,11 @@ fn partial_equals_brute_force(mesh: &Mesh, grasps: usize, seed: u64) -> usize {
         let friction = FrictionModel::try_new(rng.uniform_in(0.2, 1.0), k).unwrap();
         let fingers = Grasp::random_on_surface(&mut rng, &sampler, contacts, friction).unwrap();
         let grasp = space.frame(&fingers).unwrap();
-        let a = partial.evaluate(&grasp, &space).unwrap();
-        let b = brute.evaluate(&grasp, &space).unwrap();
+        let a = partial.evaluate(&grasp).unwrap();
+        let b = brute.evaluate(&grasp).unwrap();
         assert_eq!(a.force_closure, b.force_closure, "grasp {g}");
         // Algorithm 2 as published expands the same facets (see OwsInflation's docs).
-        let c = rays.evaluate(&grasp, &space).unwrap();
+        let c = rays.evaluate(&grasp).unwrap();
         assert_eq!(c.force_closure, a.force_closure, "grasp {g}");
         // Every method's value is certified on the caller's wrenches (or computed on them from
         // exact planes): they agree to the metrics' 1e-12, however close to the boundary.
@@ -185,7 +188,7 @@ fn partial_equals_brute_force(mesh: &Mesh, grasps: usize, seed: u64) -> usize {
                     (x - y).abs() <= 1e-12 * y,
                     "grasp {g}: partial {x}, brute {y}"
                 );
-                let e = ellipsoid.evaluate(&grasp, &space).unwrap();
+                let e = ellipsoid.evaluate(&grasp).unwrap();
                 assert!(e.value.unwrap() <= y * (1.0 + 1e-9), "grasp {g}");
                 partial_facets += a.stats.facets_created;
                 full_facets += b.stats.facets_created;
@@ -261,11 +264,11 @@ fn a_flat_sheet_is_never_force_closure() {
     let mut rng = Rng::new(9);
     let sampler = SurfaceSampler::new(&mesh);
     for method in [Method::Partial, Method::PartialRays, Method::Full] {
-        let mut evaluator = OwsEvaluator::new(method);
+        let mut evaluator = Evaluator::new(Metric::Ows, method, Some(&space)).unwrap();
         for _ in 0..50 {
             let fingers = Grasp::random_on_surface(&mut rng, &sampler, 4, friction).unwrap();
             let grasp = space.frame(&fingers).unwrap();
-            let q = evaluator.evaluate(&grasp, &space).unwrap();
+            let q = evaluator.evaluate(&grasp).unwrap();
             assert!(!q.force_closure && q.value.is_none());
         }
     }
@@ -282,16 +285,11 @@ fn torque_frame_must_match_the_space() {
         .torque_reference([0.1, 0.0, 0.0])
         .build()
         .unwrap();
-    let error = OwsEvaluator::new(Method::Partial)
-        .evaluate(&moved, &space)
-        .unwrap_err();
+    let mut evaluator = Evaluator::new(Metric::Ows, Method::Partial, Some(&space)).unwrap();
+    let error = evaluator.evaluate(&moved).unwrap_err();
     assert!(matches!(error, QualityError::TorqueFrameMismatch { .. }));
     assert!(error.to_string().contains("torque frame"));
-    assert!(
-        OwsEvaluator::new(Method::Partial)
-            .evaluate(&space.frame(&moved).unwrap(), &space)
-            .is_ok()
-    );
+    assert!(evaluator.evaluate(&space.frame(&moved).unwrap()).is_ok());
 }
 
 /// Two antipodal hard fingers: rank 5 at most, never force closure.
@@ -312,7 +310,10 @@ fn not_force_closure_has_no_value() {
     let pinch = pinch();
     let space = ObjectWrenchSpace::from_disturbances(vec![[1.0, 0.0, 0.0, 0.0, 0.0, 0.0]]).unwrap();
     for method in [Method::Partial, Method::PartialRays, Method::Full] {
-        let q = OwsEvaluator::new(method).evaluate(&pinch, &space).unwrap();
+        let q = Evaluator::new(Metric::Ows, method, Some(&space))
+            .unwrap()
+            .evaluate(&pinch)
+            .unwrap();
         assert!(!q.force_closure);
         assert_eq!(q.value, None);
     }
@@ -357,7 +358,8 @@ fn hull_reduction_keeps_the_value() {
     assert!(kept <= space.len(), "{kept} of {}", extra.len());
     let full = ObjectWrenchSpace::from_disturbances(extra).unwrap();
     let mut rng = Rng::new(5);
-    let mut evaluator = OwsEvaluator::new(Method::Partial);
+    let mut by_full = Evaluator::new(Metric::Ows, Method::Partial, Some(&full)).unwrap();
+    let mut by_reduced = Evaluator::new(Metric::Ows, Method::Partial, Some(&reduced)).unwrap();
     for _ in 0..50 {
         let grasp = space
             .frame(&Grasp::random_on_box(
@@ -370,8 +372,8 @@ fn hull_reduction_keeps_the_value() {
         let grasp = Grasp::builder(grasp.contacts().to_vec(), friction)
             .build()
             .unwrap();
-        let a = evaluator.evaluate(&grasp, &full).unwrap();
-        let b = evaluator.evaluate(&grasp, &reduced).unwrap();
+        let a = by_full.evaluate(&grasp).unwrap();
+        let b = by_reduced.evaluate(&grasp).unwrap();
         match (a.value, b.value) {
             (Some(x), Some(y)) => assert!((x - y).abs() <= 1e-12 * y, "{x} vs {y}"),
             (x, y) => assert_eq!(x, y),
@@ -392,10 +394,10 @@ fn batch_results_are_in_input_order_and_match_one_by_one() {
             space.frame(&fingers).unwrap()
         })
         .collect();
-    let batch = evaluate_ows_batch(&grasps, &space, Method::Partial);
-    let mut one = OwsEvaluator::new(Method::Partial);
+    let batch = evaluate_batch(&grasps, Metric::Ows, Method::Partial, Some(&space)).unwrap();
+    let mut one = Evaluator::new(Metric::Ows, Method::Partial, Some(&space)).unwrap();
     for (g, result) in grasps.iter().zip(&batch) {
-        let expected = one.evaluate(g, &space).unwrap();
+        let expected = one.evaluate(g).unwrap();
         let got = result.as_ref().unwrap();
         assert_eq!(got.value, expected.value);
         assert_eq!(got.force_closure, expected.force_closure);
@@ -405,10 +407,9 @@ fn batch_results_are_in_input_order_and_match_one_by_one() {
 
 #[test]
 fn one_method_enum_refuses_what_a_metric_does_not_take() {
-    use pqhull::grasp::quality::{Evaluator, Metric};
-    let pinch = pinch();
     let space = ObjectWrenchSpace::from_disturbances(vec![[1.0, 0.0, 0.0, 0.0, 0.0, 0.0]]).unwrap();
-    let refused = OwsEvaluator::new(Method::Qhull).evaluate(&pinch, &space);
+    // Refused up front now, before any grasp (the evaluator used to refuse at `evaluate`).
+    let refused = Evaluator::new(Metric::Ows, Method::Qhull, Some(&space));
     assert_eq!(
         refused.unwrap_err(),
         QualityError::UnsupportedMethod {
@@ -417,18 +418,14 @@ fn one_method_enum_refuses_what_a_metric_does_not_take() {
         }
     );
     for method in [Method::PartialRays, Method::Ellipsoid] {
-        let e = Evaluator::new(Metric::Q1, method)
-            .evaluate(&pinch)
-            .unwrap_err();
+        let e = Evaluator::new(Metric::Q1, method, None).unwrap_err();
         assert!(
             e.to_string().contains("(it takes partial, full, qhull)"),
             "{e}"
         );
         assert!(!method.supports(Metric::Q1) && method.supports(Metric::Ows));
     }
-    let e = Evaluator::new(Metric::Ows, Method::Partial)
-        .evaluate(&pinch)
-        .unwrap_err();
+    let e = Evaluator::new(Metric::Ows, Method::Partial, None).unwrap_err();
     assert_eq!(e, QualityError::OwsNeedsWrenchSpace);
     for metric in [
         Metric::Q1,

@@ -4,9 +4,9 @@
 #![cfg(feature = "qhull")]
 
 use pqhull::geometry::Rng;
-use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, ows_of_wrenches};
-use pqhull::grasp::quality::{Method, q1_of_wrenches};
-use pqhull::grasp::{Contact, FrictionModel, Grasp};
+use pqhull::grasp::ows::{ObjectWrenchSpace, ows_of_wrenches};
+use pqhull::grasp::quality::q1_of_wrenches;
+use pqhull::grasp::{Contact, Evaluator, FrictionModel, Grasp, Method, Metric};
 use pqhull::mesh::Mesh;
 use pqhull::qhull_baseline::{QhullError, qhull_full_hull};
 use std::f64::consts::PI;
@@ -193,8 +193,8 @@ fn cube_q_ows_equals_a_brute_force_from_the_formulas() {
     let friction = FrictionModel::try_new(mu, k).unwrap();
     let space = ObjectWrenchSpace::from_mesh(&cube, friction).unwrap();
     let (c, rho) = space.torque_frame().unwrap();
-    let mut partial = OwsEvaluator::new(Method::Partial);
-    let mut brute = OwsEvaluator::new(Method::Full);
+    let mut partial = Evaluator::new(Metric::Ows, Method::Partial, Some(&space)).unwrap();
+    let mut brute = Evaluator::new(Metric::Ows, Method::Full, Some(&space)).unwrap();
     let mut rng = Rng::new(6);
     let (mut compared, mut not_closure) = (0, 0);
     let mut worst = 0.0f64;
@@ -212,8 +212,8 @@ fn cube_q_ows_equals_a_brute_force_from_the_formulas() {
             wrenches.extend(rim(n, t, mu, k).into_iter().map(|f| wrench(p, f, c, rho)));
         }
         assert_covered(&wrenches, &grasp.wrenches(), 1e-15, &format!("grasp {g}"));
-        let a = partial.evaluate(&grasp, &space).unwrap();
-        let b = brute.evaluate(&grasp, &space).unwrap();
+        let a = partial.evaluate(&grasp).unwrap();
+        let b = brute.evaluate(&grasp).unwrap();
         assert_eq!(a.force_closure, b.force_closure, "grasp {g}");
         let Some(expected) = brute_force_from_eq6(&wrenches, space.disturbances()) else {
             if !a.force_closure {
@@ -275,7 +275,10 @@ fn ellipsoid_method_keeps_the_grasps_own_verdict() {
     let own = q1_of_wrenches(&pinch.wrenches(), Method::Partial).unwrap();
     assert!(!own.force_closure);
     for method in [Method::Partial, Method::Full, Method::Ellipsoid] {
-        let q = OwsEvaluator::new(method).evaluate(&pinch, &space).unwrap();
+        let q = Evaluator::new(Metric::Ows, method, Some(&space))
+            .unwrap()
+            .evaluate(&pinch)
+            .unwrap();
         assert!(!q.force_closure, "{method:?}");
         assert_eq!(q.value, None, "{method:?}");
         let q = ows_of_wrenches(&pinch.wrenches(), &space, method).unwrap();
@@ -288,11 +291,13 @@ fn ellipsoid_method_keeps_the_grasps_own_verdict() {
         let grasp = space
             .frame(&Grasp::random_on_box(&mut rng, [H; 3], 4, friction))
             .unwrap();
-        let exact = OwsEvaluator::new(Method::Partial)
-            .evaluate(&grasp, &space)
+        let exact = Evaluator::new(Metric::Ows, Method::Partial, Some(&space))
+            .unwrap()
+            .evaluate(&grasp)
             .unwrap();
-        let approx = OwsEvaluator::new(Method::Ellipsoid)
-            .evaluate(&grasp, &space)
+        let approx = Evaluator::new(Metric::Ows, Method::Ellipsoid, Some(&space))
+            .unwrap()
+            .evaluate(&grasp)
             .unwrap();
         assert_eq!(approx.force_closure, exact.force_closure);
         if let (Some(a), Some(e)) = (approx.value, exact.value) {

@@ -3,9 +3,9 @@
 //! `tests/metrics.rs` checks against an independent reference), over `plan::samples` — the
 //! planner's sample sequence.
 
-use pqhull::grasp::metrics::{grasp_matrix_metrics, gws_volume, resist};
-use pqhull::grasp::quality::{Method, Metric, QualityError, q1};
-use pqhull::grasp::{FrictionModel, Grasp};
+use pqhull::grasp::metrics::{grasp_matrix_singular_values, gws_volume};
+use pqhull::grasp::quality::q1;
+use pqhull::grasp::{Evaluation, Evaluator, FrictionModel, Grasp, Method, Metric, QualityError};
 use pqhull::mesh::Mesh;
 use pqhull::plan::{
     DescentConfig, MAX_EVALUATIONS, MAX_SCREEN, MAX_STARTS, PlanConfig, PlanError, StepRule, plan,
@@ -27,6 +27,11 @@ fn config(metric: Metric) -> PlanConfig {
         metric,
         seed: 11,
     }
+}
+
+/// Wrench resistance of `wrench` by `method` (what `metrics::resist` was).
+fn resist(grasp: &Grasp, wrench: [f64; 6], method: Method) -> Result<Evaluation, QualityError> {
+    Evaluator::new(Metric::Resist { wrench }, method, None)?.evaluate(grasp)
 }
 
 /// A metric's value of one grasp, by its own call.
@@ -59,19 +64,26 @@ fn best_by(metric: Metric, value: impl Fn(&Grasp) -> Option<f64>) -> (usize, f64
 #[test]
 fn the_plan_keeps_the_best_force_closure_sample_by_every_metric() {
     let cases: [(Metric, Value); 5] = [
-        (Metric::Q1, Box::new(|g| Some(q1(g).unwrap().value))),
+        (
+            Metric::Q1,
+            Box::new(|g| Some(q1(g).unwrap().value.unwrap())),
+        ),
         (
             Metric::Resist { wrench: GRAVITY },
             Box::new(|g| resist(g, GRAVITY, Method::Partial).unwrap().value),
         ),
-        (Metric::Volume, Box::new(|g| Some(gws_volume(g).unwrap().0))),
+        (Metric::Volume, Box::new(|g| Some(gws_volume(g).unwrap()))),
         (
             Metric::SigmaMin,
-            Box::new(|g| Some(grasp_matrix_metrics(g).unwrap().sigma_min())),
+            Box::new(|g| Some(grasp_matrix_singular_values(g).unwrap()[5])),
         ),
         (
             Metric::Isotropy,
-            Box::new(|g| Some(grasp_matrix_metrics(g).unwrap().isotropy())),
+            Box::new(|g| {
+                // σ_min / σ_max, 0 when σ_max is 0 (what `GraspMatrix::isotropy` was).
+                let s = grasp_matrix_singular_values(g).unwrap();
+                Some(if s[0] > 0.0 { s[5] / s[0] } else { 0.0 })
+            }),
         ),
     ];
     let mut chosen = Vec::new();
@@ -110,7 +122,7 @@ fn a_plan_refuses_what_its_metric_cannot_take() {
     let zero = config(Metric::Resist { wrench: [0.0; 6] });
     assert!(matches!(
         plan(&object(), None, &zero, Method::Partial),
-        Err(PlanError::Metric(_))
+        Err(PlanError::Quality(QualityError::ResistedWrench(_)))
     ));
     let by_qhull = config(Metric::Resist { wrench: GRAVITY });
     assert!(matches!(

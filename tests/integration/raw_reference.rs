@@ -34,8 +34,7 @@ use crate::support::raw_reference::{
     near_boundary_family, note_references, random_disturbances, random_grasp, seed, union_scale,
 };
 use pqhull::geometry::Rng;
-use pqhull::grasp::FrictionModel;
-use pqhull::grasp::quality::{Method, Metric};
+use pqhull::grasp::{FrictionModel, Method, Metric};
 
 /// Disturbances per task wrench space.
 const DISTURBANCES: usize = 50;
@@ -206,15 +205,15 @@ fn near_boundary_cylinder_case() {
         match evaluate(Metric::Q1, method, &grasp) {
             Err(e) => report.error(&key, case, &e),
             Ok(q) => {
+                let value = q.value.expect("Q1 has a value");
                 report.note(format!(
-                    "{key}: force_closure {}, value {:e} ({:e}·scale)",
+                    "{key}: force_closure {}, value {value:e} ({:e}·scale)",
                     q.force_closure,
-                    q.value,
-                    q.value / scale
+                    value / scale
                 ));
                 // |Q1| ≤ 1e-14·scale: the reference (~1e-16) is in the band, so the value check
                 // is |got| ≤ 1e-14·scale.
-                report.value(&key, case, q.value, 0.0, scale);
+                report.value(&key, case, value, 0.0, scale);
                 report.verdict(&key, case, q.force_closure, Some(false), "|Q1| < ε·scale");
             }
         }
@@ -234,7 +233,7 @@ fn near_boundary_cylinder_case() {
             report.note(format!(
                 "Qinf+0 Partial: force_closure {}, value {:e}·scale",
                 q.force_closure,
-                q.value / scale
+                q.value.expect("Q∞ has a value") / scale
             ));
             report.verdict(
                 "Qinf+0 Partial",

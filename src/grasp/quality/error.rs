@@ -66,7 +66,10 @@ pub enum QualityError {
         mapped_q1: f64,
     },
     /// [`Metric::ConeBracket`]: the circumscribed pyramids' friction coefficient, μ / cos(π/k),
-    /// overflows.
+    /// is refused (it overflows). Through [`Evaluator`](crate::grasp::Evaluator) the inscribed
+    /// Q1, computed first, refuses such a friction already ([`QualityError::WrenchTooLarge`]:
+    /// μ > 1e100); this variant keeps the circumscribed grasp's construction from being
+    /// assumed infallible.
     CircumscribedFriction(GraspError),
     /// [`Metric::Resist`]: the wrench to resist is zero, or has a NaN or infinite coordinate.
     ResistedWrench(OwsError),

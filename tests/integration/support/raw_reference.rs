@@ -38,8 +38,8 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 use pqhull::geometry::Rng;
-use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, QualityError};
 use pqhull::grasp::{Contact, FrictionModel, Grasp};
+use pqhull::grasp::{Evaluation, Evaluator, Method, Metric, QualityError};
 use pqhull::qhull_baseline::{QhullError, QhullHull, qhull_full_hull};
 use std::collections::BTreeMap;
 use std::f64::consts::PI;
@@ -947,9 +947,9 @@ pub fn guarded<T: Send + 'static>(
 }
 
 /// Evaluates `metric` by `method` (a fresh evaluator: a panic cannot poison a reused one).
-pub fn evaluate(metric: Metric, method: Method, grasp: &Grasp) -> Result<Quality, String> {
+pub fn evaluate(metric: Metric, method: Method, grasp: &Grasp) -> Result<Evaluation, String> {
     let grasp = grasp.clone();
-    guarded(move || Evaluator::new(metric, method).evaluate(&grasp))
+    guarded(move || Evaluator::new(metric, method, None)?.evaluate(&grasp))
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1183,7 +1183,7 @@ pub fn check_q1(
                 &key,
                 case,
                 q.force_closure,
-                q.value,
+                q.value.expect("Q1 has a value"),
                 reference,
                 degenerate,
             ),
@@ -1262,7 +1262,10 @@ pub fn check_qinf(
         match report.time(&key, || evaluate(metric, method, grasp)) {
             Err(e) => report.error(&key, case, &e),
             Ok(q) => match &reference {
-                Some((_, r)) => judge(report, &key, case, q.force_closure, q.value, r, degenerate),
+                Some((_, r)) => {
+                    let value = q.value.expect("Q∞ has a value");
+                    judge(report, &key, case, q.force_closure, value, r, degenerate)
+                }
                 None => {
                     let expected = degenerate.then_some(false);
                     let why = "physically degenerate";
@@ -1327,7 +1330,7 @@ pub fn check_ows(
     q1: &HullReference,
     degenerate: bool,
 ) {
-    use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator};
+    use pqhull::grasp::ows::ObjectWrenchSpace;
     let space = ObjectWrenchSpace::from_disturbances(disturbances.to_vec()).expect("space");
     let reference = report.time("reference OWS", || {
         ows_reference_for(grasp, q1, disturbances, degenerate)
@@ -1336,7 +1339,7 @@ pub fn check_ows(
         let key = format!("OWS {method:?}");
         let result = report.time(&key, || {
             let (grasp, space) = (grasp.clone(), space.clone());
-            guarded(move || OwsEvaluator::new(method).evaluate(&grasp, &space))
+            guarded(move || Evaluator::new(Metric::Ows, method, Some(&space))?.evaluate(&grasp))
         });
         match result {
             Err(e) if method == Method::Ellipsoid => report.soft_error(&key, case, &e),
