@@ -26,8 +26,7 @@
 //! only); about 4 minutes on 2 quiet cores. One group: `... --bench grasp -- '^batch/'`.
 
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};
-use pqhull::grasp::quality::{Evaluator, Method, Metric, evaluate_batch};
-use pqhull::grasp::{FrictionModel, Grasp, q1_gradient};
+use pqhull::grasp::{Evaluator, FrictionModel, Grasp, Method, Metric, evaluate_batch, q1_gradient};
 use pqhull_cli::bench::workloads::{BAR_FRICTION, bar_grasps};
 use std::hint::black_box;
 use std::time::Duration;
@@ -65,7 +64,7 @@ fn compare(
         group.measurement_time(Duration::from_secs(10));
     }
     for &(label, metric, method) in runs {
-        let mut evaluator = Evaluator::new(metric, method);
+        let mut evaluator = Evaluator::new(metric, method, None).expect("a method of the metric");
         group.bench_function(label, |b| {
             b.iter(|| {
                 for grasp in set {
@@ -139,7 +138,8 @@ fn gradient(c: &mut Criterion) {
         let set = grasps(16, k);
         let mut group = c.benchmark_group(format!("gradient/k={k}"));
         group.throughput(Throughput::Elements(set.len() as u64));
-        let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial);
+        let mut evaluator =
+            Evaluator::new(Metric::Q1, Method::Partial, None).expect("Q1 by the partial method");
         group.bench_function("value", |b| {
             b.iter(|| {
                 for grasp in &set {
@@ -175,8 +175,10 @@ fn batch(c: &mut Criterion) {
             .expect("a thread pool");
         group.bench_function(format!("threads={threads}"), |b| {
             b.iter(|| {
-                let results =
-                    pool.install(|| evaluate_batch(black_box(&set), Metric::Q1, Method::Partial));
+                let results = pool.install(|| {
+                    evaluate_batch(black_box(&set), Metric::Q1, Method::Partial, None)
+                        .expect("Q1 by the partial method")
+                });
                 black_box(results.len())
             })
         });

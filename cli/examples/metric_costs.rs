@@ -1,13 +1,13 @@
-//! What each metric of `pqhull::grasp::metrics` costs per grasp, beside Q1 on the same grasps.
+//! What each grasp metric costs per grasp, beside Q1 on the same grasps.
 //!
 //! `cargo run --release --example metric_costs [GRASPS] [EDGES]` (defaults 200 and 8): random
 //! 4-contact grasps on the benchmarks' bar (μ = 0.5, seed 1), each metric timed per grasp with
 //! `Instant` around the library call; medians and means in µs, and the median's ratio to Q1's.
 //! The soft rows give every contact torsion γ = 0.01 (a tenth of the bar's half-thickness).
 
-use pqhull::grasp::metrics::{cone_bracket, grasp_matrix_metrics, gws_volume, resist};
-use pqhull::grasp::quality::{Evaluator, Method, Metric, q1};
-use pqhull::grasp::{FrictionModel, Grasp};
+use pqhull::grasp::metrics::{grasp_matrix_singular_values, gws_volume};
+use pqhull::grasp::quality::q1;
+use pqhull::grasp::{Evaluator, FrictionModel, Grasp, Method, Metric};
 use pqhull_cli::bench::stats::{mean, median};
 use pqhull_cli::bench::workloads::{BAR_FRICTION, bar_grasps};
 use std::time::Instant;
@@ -45,7 +45,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         (
             "cone bracket (two Q1)",
             Box::new(|i| {
-                cone_bracket(&set[i], Method::Partial)
+                Evaluator::new(Metric::ConeBracket, Method::Partial, None)
+                    .and_then(|mut bracket| bracket.evaluate(&set[i]))
                     .map(drop)
                     .map_err(Into::into)
             }),
@@ -53,7 +54,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         (
             "resist gravity (partial)",
             Box::new(|i| {
-                resist(&set[i], gravity, Method::Partial)
+                let resist = Metric::Resist { wrench: gravity };
+                Evaluator::new(resist, Method::Partial, None)
+                    .and_then(|mut resist| resist.evaluate(&set[i]))
                     .map(drop)
                     .map_err(Into::into)
             }),
@@ -64,7 +67,11 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         ),
         (
             "sigma-min, isotropy (SVD)",
-            Box::new(|i| grasp_matrix_metrics(&set[i]).map(drop).map_err(Into::into)),
+            Box::new(|i| {
+                grasp_matrix_singular_values(&set[i])
+                    .map(drop)
+                    .map_err(Into::into)
+            }),
         ),
         (
             "q1 soft (partial)",
@@ -73,8 +80,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         (
             "qinf (partial)",
             Box::new(|i| {
-                Evaluator::new(qinf, Method::Partial)
-                    .evaluate(&set[i])
+                Evaluator::new(qinf, Method::Partial, None)
+                    .and_then(|mut qinf| qinf.evaluate(&set[i]))
                     .map(drop)
                     .map_err(Into::into)
             }),
@@ -82,8 +89,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         (
             "qinf soft (partial)",
             Box::new(|i| {
-                Evaluator::new(qinf, Method::Partial)
-                    .evaluate(&soft[i])
+                Evaluator::new(qinf, Method::Partial, None)
+                    .and_then(|mut qinf| qinf.evaluate(&soft[i]))
                     .map(drop)
                     .map_err(Into::into)
             }),

@@ -11,8 +11,7 @@
 //! Arguments: `force-closure` or `other`, cone edges (32), grasps (200), rounds (30). Prints the
 //! mean time per grasp and the work counters.
 
-use pqhull::grasp::quality::{Evaluator, Method, Metric};
-use pqhull::grasp::{FrictionModel, Grasp};
+use pqhull::grasp::{Evaluator, FrictionModel, Grasp, Method, Metric};
 use pqhull_cli::bench::workloads::bar_grasps;
 use std::time::Instant;
 
@@ -42,7 +41,8 @@ fn main() {
     });
     // The grasps of `pqh bench gws` (seed 1, the 1 x 0.4 x 0.2 bar).
     let grasps: Vec<Grasp> = bar_grasps(1, count, 4, friction);
-    let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial);
+    let mut evaluator =
+        Evaluator::new(Metric::Q1, Method::Partial, None).expect("Q1 by the partial method");
     let chosen: Vec<&Grasp> = grasps
         .iter()
         .filter(|g| {

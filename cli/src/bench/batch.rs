@@ -4,9 +4,7 @@
 //! ([`pqhull::grasp::thread_pool`]: 1 to [`MAX_THREADS`](pqhull::grasp::MAX_THREADS) threads).
 
 use super::stats::{median_of, min_or_infinity};
-use pqhull::grasp::{
-    Evaluation, Grasp, Method, Metric, ThreadsError, evaluate_batch, thread_pool,
-};
+use pqhull::grasp::{Evaluation, Grasp, Method, Metric, ThreadsError, evaluate_batch, thread_pool};
 use std::time::Instant;
 
 /// A pool of the requested size could not be had: the library's [`ThreadsError`].
@@ -159,8 +157,8 @@ fn q1_batch(set: &[Grasp]) -> Vec<Result<Evaluation, pqhull::grasp::QualityError
 mod tests {
     use super::*;
     use crate::bench::workloads::bar_grasps;
-    use pqhull::grasp::FrictionModel;
     use pqhull::grasp::Evaluator;
+    use pqhull::grasp::FrictionModel;
 
     #[test]
     fn batch_results_equal_the_sequential_ones() {

@@ -232,7 +232,8 @@ pub fn run(
     .map_err(OwsBenchError::Grasp)?;
 
     let partial = evaluate(Method::Partial, &grasps, &space, &mut *progress)?;
-    let mut q1 = Evaluator::new(Metric::Q1, Method::Partial, None).map_err(OwsBenchError::Quality)?;
+    let mut q1 =
+        Evaluator::new(Metric::Q1, Method::Partial, None).map_err(OwsBenchError::Quality)?;
     let mut q1_times = grasps
         .iter()
         .map(|g| q1.evaluate(g).map(|q| micros(q.stats.elapsed)))

@@ -62,7 +62,8 @@ impl MethodRun {
                     run.points.push(q.stats.points_processed);
                     run.facets.push(q.stats.facets_created);
                     run.closure.push(q.force_closure);
-                    run.values.push(q.value.expect("Q1 and Q∞ always have a value"));
+                    run.values
+                        .push(q.value.expect("Q1 and Q∞ always have a value"));
                 }
                 Err(e) => run.errors.push(format!("grasp {i}: {e}")),
             }

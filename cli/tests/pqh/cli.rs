@@ -617,12 +617,11 @@ fn bench_gws_tables_and_switches() {
 #[test]
 fn grasp_floats_are_read_exactly() {
     use pqhull::geometry::Rng;
-    use pqhull::grasp::quality::{Evaluator, Method, Metric};
-    use pqhull::grasp::{Contact, FrictionModel, Grasp};
+    use pqhull::grasp::{Contact, Evaluator, FrictionModel, Grasp, Method, Metric};
     let mut rng = Rng::new(0x5eed);
     let mut lines = String::new();
     let mut expected = Vec::new();
-    let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial);
+    let mut evaluator = Evaluator::new(Metric::Q1, Method::Partial, None).unwrap();
     for _ in 0..12 {
         let mut contacts = Vec::new();
         let mut written = Vec::new();
@@ -645,7 +644,7 @@ fn grasp_floats_are_read_exactly() {
             .torque_scale(rho)
             .build()
             .unwrap();
-        expected.push(evaluator.evaluate(&grasp).unwrap().value);
+        expected.push(evaluator.evaluate(&grasp).unwrap().value.unwrap());
         lines.push_str(&format!(
             "{{\"contacts\":[{}],\"friction\":{mu:?},\"cone_edges\":8,\"torque_reference\":{c:?},\
              \"torque_scale\":{rho:?}}}\n",

@@ -5,13 +5,12 @@ use crate::error::CliError;
 use crate::limits::{FULL_QINF_POINTS, MAX_THREADS};
 use crate::methods::{MethodArg, MetricArg, method_for};
 use clap::Args;
-use pqhull::Stats;
-use pqhull::grasp::ThreadsError;
 use pqhull::grasp::json::{error_line, parse_grasp, quality_line, split_grasps};
-use pqhull::grasp::metrics::{ConeBracket, Score, Scorer, cone_bracket};
-use pqhull::grasp::ows::{ObjectWrenchSpace, OwsEvaluator, OwsQuality};
-use pqhull::grasp::quality::{Evaluator, Method, Metric, Quality, QualityError};
-use pqhull::grasp::{FrictionModel, Gradient, Grasp, ows_gradient, q1_gradient, qinf_gradient};
+use pqhull::grasp::ows::ObjectWrenchSpace;
+use pqhull::grasp::{
+    Evaluation, Evaluator, FrictionModel, Gradient, Grasp, Method, Metric, QualityError,
+    ThreadsError, ows_gradient, q1_gradient, qinf_gradient,
+};
 use pqhull::mesh::Mesh;
 use serde_json::Value;
 use std::io::{Read, Write};
@@ -102,12 +101,9 @@ fn split(text: &str) -> Vec<Result<Value, String>> {
         .collect()
 }
 
-/// The output line of grasp `index` from its verdict, value and work.
-fn line_of<T>(fields: impl Fn(&T) -> (bool, Option<f64>, Stats)) -> impl Fn(usize, &T) -> Value {
-    move |index, q| {
-        let (force_closure, quality, stats) = fields(q);
-        quality_line(index, force_closure, quality, &stats)
-    }
+/// The output line of grasp `index` from its evaluation: verdict, value and work.
+fn evaluation_line(index: usize, e: &Evaluation) -> Value {
+    quality_line(index, e.force_closure, e.value, &e.stats)
 }
 
 /// Evaluates every parsed grasp on `threads` workers (one evaluator each, with a progress bar)
@@ -281,53 +277,63 @@ fn run_ows(
         return evaluate_lines(
             &framed,
             args.threads,
-            || OwsEvaluator::new(method),
+            || Evaluator::new(Metric::Ows, method, Some(&space)),
             |evaluator, g| {
-                let quality = evaluator.evaluate(g, &space)?;
+                let quality = evaluator.as_mut().map_err(|e| e.clone())?.evaluate(g)?;
                 Ok::<_, QualityError>((quality, ows_gradient(g, &space, &quality)))
             },
-            |index, (q, gradient): &(OwsQuality, Option<Gradient>)| {
-                let mut line = quality_line(index, q.force_closure, q.value, &q.stats);
+            |index, (q, gradient): &(Evaluation, Option<Gradient>)| {
+                let mut line = evaluation_line(index, q);
                 // No value (not force closure): no gradient either, as `quality` is null.
                 line["gradient"] = gradient.as_ref().map_or(Value::Null, gradient_json);
                 line
             },
         );
     }
-    score_lines(&framed, args.threads, Metric::Ows, method, Some(&space))
+    score_lines(
+        &framed,
+        args.threads,
+        Metric::Ows,
+        method,
+        Some(&space),
+        evaluation_line,
+    )
 }
 
-/// The lines of `metric` by `method` ([`Scorer`]; `space` for Q_OWS). A scorer that cannot be
-/// made (a zero wrench to resist) is a usage error, before any work.
+/// The lines of `metric` by `method` ([`Evaluator`]; `space` for Q_OWS), each made by `line`.
+/// An evaluator that cannot be made (a zero wrench to resist) is a usage error, before any work.
 fn score_lines(
     entries: &[Result<Grasp, String>],
     threads: Option<usize>,
     metric: Metric,
     method: Method,
     space: Option<&ObjectWrenchSpace>,
+    line: impl Fn(usize, &Evaluation) -> Value,
 ) -> Result<Vec<Value>, CliError> {
-    Scorer::new(metric, method, space)
+    Evaluator::new(metric, method, space)
         .map_err(|e| CliError::Usage(format!("--metric {}: {e}", metric.name())))?;
     evaluate_lines(
         entries,
         threads,
-        || Scorer::new(metric, method, space),
-        |scorer, g| scorer.as_mut().map_err(|e| e.clone())?.score(g),
-        line_of(|s: &Score| (s.force_closure, s.value, s.stats)),
+        || Evaluator::new(metric, method, space),
+        |evaluator, g| evaluator.as_mut().map_err(|e| e.clone())?.evaluate(g),
+        line,
     )
 }
 
-/// `--cone-bracket`: Q1's line with `"bracket": [low, high]`.
-fn bracket_line(index: usize, b: &ConeBracket) -> Value {
-    let q = &b.inscribed;
-    let mut line = quality_line(index, q.force_closure, Some(q.value), &q.stats);
-    line["bracket"] = serde_json::json!([b.low(), b.high()]);
+/// `--cone-bracket`: Q1's line (the inscribed pyramids' Q1) with `"bracket": [low, high]`.
+fn bracket_line(index: usize, e: &Evaluation) -> Value {
+    let mut line = evaluation_line(index, e);
+    let bracket = e
+        .bracket
+        .expect("the cone bracket's evaluation has a bracket");
+    line["bracket"] = serde_json::json!([bracket.low, bracket.high]);
     line
 }
 
 /// `--gradient`: Q1's line with `"gradient": {positions, normals, friction, differentiable}`.
-fn gradient_line(index: usize, (q, g): &(Quality, Gradient)) -> Value {
-    let mut line = quality_line(index, q.force_closure, Some(q.value), &q.stats);
+fn gradient_line(index: usize, (q, g): &(Evaluation, Gradient)) -> Value {
+    let mut line = evaluation_line(index, q);
     line["gradient"] = gradient_json(g);
     line
 }
@@ -396,13 +402,15 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
             evaluate_lines(
                 &entries,
                 args.threads,
-                || Evaluator::new(metric, method),
+                || Evaluator::new(metric, method, None),
                 |evaluator, g| {
-                    let quality = evaluator.evaluate(g).map_err(|e| e.to_string())?;
+                    let quality = evaluator
+                        .as_mut()
+                        .map_err(|e| e.to_string())?
+                        .evaluate(g)
+                        .map_err(|e| e.to_string())?;
                     let gradient = match metric {
-                        Metric::QInf { with_zero_wrench } => {
-                            qinf_gradient(g, &quality, with_zero_wrench)
-                        }
+                        Metric::QInf { .. } => qinf_gradient(g, &quality),
                         _ => q1_gradient(g, &quality),
                     };
                     Ok::<_, String>((quality, gradient.map_err(|e| e.to_string())?))
@@ -410,18 +418,26 @@ pub fn run(args: &GraspArgs) -> Result<(), CliError> {
                 gradient_line,
             )?
         }
-        Metric::Q1 if args.cone_bracket => evaluate_lines(
+        Metric::Q1 if args.cone_bracket => score_lines(
             &entries,
             args.threads,
-            || (),
-            |(), g| cone_bracket(g, method),
+            Metric::ConeBracket,
+            method,
+            None,
             bracket_line,
         )?,
         metric => {
             if matches!(metric, Metric::QInf { .. }) && method != Method::Partial && !args.force {
                 refuse_large_minkowski_sums(&entries, args.zero_wrench)?;
             }
-            score_lines(&entries, args.threads, metric, method, None)?
+            score_lines(
+                &entries,
+                args.threads,
+                metric,
+                method,
+                None,
+                evaluation_line,
+            )?
         }
     };
     let stdout = std::io::stdout();

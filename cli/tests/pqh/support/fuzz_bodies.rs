@@ -10,10 +10,11 @@
 #![allow(dead_code)]
 
 use pqhull::grasp::json::{parse_grasp, split_grasps};
-use pqhull::grasp::metrics::Scorer;
 use pqhull::grasp::ows::ObjectWrenchSpace;
-use pqhull::grasp::quality::{Evaluator, Method, Metric};
-use pqhull::grasp::{FrictionModel, Grasp, MAX_CONE_EDGES, MAX_CONTACTS, MIN_CONE_EDGES};
+use pqhull::grasp::{
+    Evaluation, Evaluator, FrictionModel, Grasp, MAX_CONE_EDGES, MAX_CONTACTS, MIN_CONE_EDGES,
+    Method, Metric, QualityError,
+};
 use pqhull::mesh::Mesh;
 use pqhull::predicates::Sign;
 use pqhull::{ClosestToOrigin, FarthestPoint, Hull, HullError};
@@ -172,23 +173,38 @@ pub fn grasp_json(data: &[u8]) {
     }
 }
 
+/// `grasp` by `metric` and `method` through the one front door.
+fn evaluate(grasp: &Grasp, metric: Metric, method: Method) -> Result<Evaluation, QualityError> {
+    Evaluator::new(metric, method, None).and_then(|mut evaluator| evaluator.evaluate(grasp))
+}
+
+/// The value and the scale of a Q1 or Q∞ evaluation, which always has both.
+fn value_and_scale(q: &Evaluation) -> (f64, f64) {
+    (
+        q.value.expect("Q1 and Q∞ have a value"),
+        q.scale.expect("Q1 and Q∞ have a scale"),
+    )
+}
+
 fn evaluate_grasp(grasp: &Grasp) {
-    let partial = Evaluator::new(Metric::Q1, Method::Partial).evaluate(grasp);
-    let full = Evaluator::new(Metric::Q1, Method::Full).evaluate(grasp);
+    let partial = evaluate(grasp, Metric::Q1, Method::Partial);
+    let full = evaluate(grasp, Metric::Q1, Method::Full);
     match (&partial, &full) {
         (Ok(p), Ok(f)) => {
             for q in [p, f] {
-                assert!(!q.value.is_nan(), "NaN quality: {q:?}");
-                assert!(!q.force_closure || q.value > 0.0, "{q:?}");
+                let (value, _) = value_and_scale(q);
+                assert!(!value.is_nan(), "NaN quality: {q:?}");
+                assert!(!q.force_closure || value > 0.0, "{q:?}");
             }
+            let ((p_value, p_scale), (f_value, f_scale)) = (value_and_scale(p), value_and_scale(f));
             // Both are within 1e-12 relative or 1e-14 · scale of the exact value.
-            let tolerance = 1e-9 * p.scale.max(f.scale) + 1e-9 * p.value.abs();
+            let tolerance = 1e-9 * p_scale.max(f_scale) + 1e-9 * p_value.abs();
             assert!(
-                (p.value - f.value).abs() <= tolerance,
+                (p_value - f_value).abs() <= tolerance,
                 "partial {} and full {} disagree (scale {})",
-                p.value,
-                f.value,
-                p.scale
+                p_value,
+                f_value,
+                p_scale
             );
         }
         (Err(p), Err(f)) => assert_eq!(p, f, "the methods fail differently"),
@@ -200,7 +216,7 @@ fn evaluate_grasp(grasp: &Grasp) {
 /// at most this many points get a volume (both hull the raw points with the exact engine).
 const FULL_POINTS: usize = 64;
 
-/// Every other metric through [`Scorer`]: an error or a finite value (never NaN, never ±∞, which
+/// Every other metric through [`Evaluator`]: an error or a finite value (never NaN, never ±∞, which
 /// JSON would print as null), never a panic; Q∞
 /// by the partial and the full method agree on small sums.
 fn every_metric(grasp: &Grasp, wrenches: usize) {
@@ -220,8 +236,7 @@ fn every_metric(grasp: &Grasp, wrenches: usize) {
         if metric == Metric::Volume && wrenches > FULL_POINTS {
             continue;
         }
-        let score = Scorer::new(metric, Method::Partial, None).and_then(|mut s| s.score(grasp));
-        if let Ok(score) = score {
+        if let Ok(score) = evaluate(grasp, metric, Method::Partial) {
             assert!(
                 score.value.is_none_or(f64::is_finite),
                 "{}: {score:?} for {}",
@@ -234,13 +249,15 @@ fn every_metric(grasp: &Grasp, wrenches: usize) {
         .minkowski_points(false)
         .is_some_and(|n| n <= FULL_POINTS)
     {
-        let partial = Evaluator::new(qinf, Method::Partial).evaluate(grasp);
-        let full = Evaluator::new(qinf, Method::Full).evaluate(grasp);
+        let partial = evaluate(grasp, qinf, Method::Partial);
+        let full = evaluate(grasp, qinf, Method::Full);
         match (&partial, &full) {
             (Ok(p), Ok(f)) => {
                 assert_eq!(p.force_closure, f.force_closure, "{p:?} vs {f:?}");
-                let tolerance = 1e-9 * p.scale.max(f.scale) + 1e-9 * p.value.abs();
-                assert!((p.value - f.value).abs() <= tolerance, "{p:?} vs {f:?}");
+                let ((p_value, p_scale), (f_value, f_scale)) =
+                    (value_and_scale(p), value_and_scale(f));
+                let tolerance = 1e-9 * p_scale.max(f_scale) + 1e-9 * p_value.abs();
+                assert!((p_value - f_value).abs() <= tolerance, "{p:?} vs {f:?}");
             }
             (Err(p), Err(f)) => assert_eq!(p, f, "the Q∞ methods fail differently"),
             _ => panic!("one Q∞ method failed: partial {partial:?}, full {full:?}"),
