@@ -104,6 +104,15 @@ pub(in crate::predicates) fn orientation<const D: usize>(
         }
         return Sign::Zero;
     }
+    // From 4-D on, the certified floating-point filter first (192 multiply-adds in 6-D for the
+    // plane, against a full determinant in wide integers): it decides every determinant above
+    // its error bound, and the exact path below the rest. (It answers `None` unless every
+    // coordinate is in [−1, 1], as the hull's scaled points are, and for non-finite input.)
+    if D >= 4
+        && let Some(sign) = super::filter::FacetPlane::new(vertices).filter_sign(p)
+    {
+        return sign;
+    }
     if D == 2 || D == 3 {
         let mut all: Vec<&[f64]> = vertices.iter().map(|v| &v[..]).collect();
         all.push(&p[..]);
