@@ -56,10 +56,17 @@ pub(in crate::predicates) fn cofactor_minors<T: MinorScalar, const D: usize, con
     std::array::from_fn(|j| minor[full & !(1 << j)])
 }
 
-/// [`cofactor_minors`] with the table size chosen from `D`.
+/// [`cofactor_minors`] with the table size chosen from `D`; for D = 6, the same minors written
+/// out ([`minors6`](super::minors6::minors6)).
 pub(in crate::predicates) fn minors_of<T: MinorScalar, const D: usize>(
     rows: &[[T; D]; D],
 ) -> [T; D] {
+    if D == 6 {
+        // The copies in and out are of a constant size and vanish once inlined.
+        let six: [[T; 6]; 6] = std::array::from_fn(|i| std::array::from_fn(|j| rows[i][j]));
+        let minors = super::minors6::minors6(&six);
+        return std::array::from_fn(|j| minors[j]);
+    }
     if D <= 6 {
         cofactor_minors::<T, D, 64>(rows)
     } else {

@@ -69,6 +69,7 @@ mod exact;
 mod filter;
 mod grid;
 mod minors;
+mod minors6;
 #[cfg(test)]
 mod tests;
 mod wide;
