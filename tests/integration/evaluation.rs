@@ -5,15 +5,14 @@
 //! the errors new to `QualityError` give their wrapped error as `source`; a wrench space is
 //! taken by Q_OWS and refused for every other metric.
 
-use crate::support::grasps::random_disturbances;
+use crate::support::grasps::{random_disturbances, with_friction_model};
 use crate::support::{BAR_FRICTION, bar_grasps};
 use pqhull::geometry::{EllipsoidError, Rng};
 use pqhull::grasp::metrics::circumscribed;
 use pqhull::grasp::ows::{ObjectWrenchSpace, OwsError};
 use pqhull::grasp::quality::q1;
 use pqhull::grasp::{
-    Evaluation, Evaluator, FrictionModel, Grasp, GraspError, Method, Metric, QualityError,
-    evaluate_batch,
+    Evaluation, Evaluator, FrictionModel, GraspError, Method, Metric, QualityError, evaluate_batch,
 };
 use std::error::Error;
 
@@ -38,14 +37,6 @@ fn vocabulary() -> Vec<Metric> {
         wrench: [0.0, 0.0, -1.0, 0.1, 0.0, 0.0],
     });
     metrics
-}
-
-fn with_friction(grasp: &Grasp, friction: FrictionModel) -> Grasp {
-    Grasp::builder(grasp.contacts().to_vec(), friction)
-        .torque_reference(grasp.torque_reference())
-        .torque_scale(grasp.torque_scale())
-        .build()
-        .unwrap()
 }
 
 /// The accuracy promised for a Q1 value: 1e−12 relative, or 1e−14 of the wrench scale near 0.
@@ -74,7 +65,9 @@ fn the_cone_bracket_is_q1_of_the_inscribed_and_the_circumscribed_pyramids() {
             let what = format!("{method:?}, grasp {i}");
             let evaluation = cones.evaluate(grasp).unwrap();
             let inscribed = q1.evaluate(grasp).unwrap();
-            let outer = q1.evaluate(&with_friction(grasp, outer_friction)).unwrap();
+            let outer = q1
+                .evaluate(&with_friction_model(grasp, outer_friction))
+                .unwrap();
             assert_eq!(
                 (evaluation.metric, evaluation.method),
                 (Metric::ConeBracket, method),

@@ -3,6 +3,7 @@
 //! force ray/facet intersection on the full hull; the grasp matrix's singular values equal a
 //! Jacobi SVD written here; degenerate inputs give a clear value or a clear error.
 
+use crate::support::grasps::with_friction_model;
 use crate::support::{BAR_FRICTION, bar_grasps};
 use pqhull::grasp::metrics::{
     circumscribed, grasp_matrix, grasp_matrix_singular_values, gws_volume,
@@ -31,14 +32,6 @@ fn value_of(metric: Metric, grasp: &Grasp) -> f64 {
         .expect("the metric has a value")
 }
 
-fn with_friction(grasp: &Grasp, friction: FrictionModel) -> Grasp {
-    Grasp::builder(grasp.contacts().to_vec(), friction)
-        .torque_reference(grasp.torque_reference())
-        .torque_scale(grasp.torque_scale())
-        .build()
-        .unwrap()
-}
-
 /// Over `count` bar grasps and k = 4 … 64: every bracket contains the grasp's Q1 with 256-edge
 /// pyramids (which contain the k-edge ones: k divides 256, the tangents are the same, and they are
 /// inside the cones), and the median width, over the wrench scale, follows 1 − cos(π/k).
@@ -54,7 +47,7 @@ fn bracket_contains_the_256_edge_estimate_and_shrinks(count: usize) {
             let inscribed = evaluate(
                 Metric::ConeBracket,
                 Method::Partial,
-                &with_friction(g, friction),
+                &with_friction_model(g, friction),
             )
             .unwrap();
             let b = inscribed.bracket.expect("a bracket");
@@ -101,7 +94,7 @@ fn without_friction_the_bracket_is_closed() {
     let g = &bar_grasps(5, 1, 4, FrictionModel::try_new(0.0, 8).unwrap())[0];
     let cones = evaluate(Metric::ConeBracket, Method::Partial, g).unwrap();
     // The circumscribed Q1 is no longer returned: Q1 of the grasp with the circumscribed model.
-    let outer = with_friction(g, circumscribed(g.friction()).unwrap());
+    let outer = with_friction_model(g, circumscribed(g.friction()).unwrap());
     let outer_q1 = evaluate(Metric::Q1, Method::Partial, &outer).unwrap();
     let (b, inscribed) = (cones.bracket.unwrap(), cones.value.unwrap());
     assert_eq!(inscribed, outer_q1.value.unwrap());

@@ -163,7 +163,12 @@ pub fn random_disturbances(rng: &mut Rng, count: usize) -> Vec<[f64; 6]> {
 /// The same grasp with another friction coefficient.
 pub fn with_friction(grasp: &Grasp, mu: f64) -> Grasp {
     let fm = FrictionModel::try_new(mu, grasp.friction().cone_edges()).expect("μ ≥ 0");
-    Grasp::builder(grasp.contacts().to_vec(), fm)
+    with_friction_model(grasp, fm)
+}
+
+/// The same grasp with another friction model.
+pub fn with_friction_model(grasp: &Grasp, friction: FrictionModel) -> Grasp {
+    Grasp::builder(grasp.contacts().to_vec(), friction)
         .torque_reference(grasp.torque_reference())
         .torque_scale(grasp.torque_scale())
         .build()
