@@ -5,6 +5,26 @@ use super::{Contact, FrictionModel, Grasp, GraspError};
 use crate::geometry::Rng;
 use crate::mesh::SurfaceSampler;
 
+/// A grasp of `contacts` fingers drawn one after another by `finger`, with the torque reference
+/// at the origin (the object's centre) and torque scale `rho`: the tail of the random objects'
+/// generators.
+///
+/// # Panics
+/// If `contacts` is 0 (the generators document it).
+fn centred_grasp(
+    rng: &mut Rng,
+    contacts: usize,
+    friction: FrictionModel,
+    rho: f64,
+    mut finger: impl FnMut(&mut Rng) -> Contact,
+) -> Grasp {
+    let fingers = (0..contacts).map(|_| finger(rng)).collect();
+    Grasp::builder(fingers, friction)
+        .torque_scale(rho)
+        .build()
+        .expect("a random grasp needs at least one contact")
+}
+
 impl Grasp {
     /// A random grasp with `contacts` fingers on the box [−h₀, h₀] × [−h₁, h₁] × [−h₂, h₂]: each
     /// on a uniformly chosen face, at a uniform point of it, pushing along the face's inward
@@ -30,22 +50,16 @@ impl Grasp {
         friction: FrictionModel,
     ) -> Grasp {
         check_half_extents("random_on_box", half);
-        let fingers = (0..contacts)
-            .map(|_| {
-                let axis = rng.index(3);
-                let sign = if rng.uniform() < 0.5 { -1.0 } else { 1.0 };
-                let mut p: [f64; 3] = std::array::from_fn(|c| rng.uniform_in(-half[c], half[c]));
-                p[axis] = sign * half[axis];
-                let mut n = [0.0; 3];
-                n[axis] = -sign;
-                Contact::try_new(p, n, None).expect("an axis is a valid normal")
-            })
-            .collect();
         let rho = half.iter().map(|h| h * h).sum::<f64>().sqrt();
-        Grasp::builder(fingers, friction)
-            .torque_scale(rho)
-            .build()
-            .expect("random_on_box: at least one contact")
+        centred_grasp(rng, contacts, friction, rho, |rng| {
+            let axis = rng.index(3);
+            let sign = if rng.uniform() < 0.5 { -1.0 } else { 1.0 };
+            let mut p: [f64; 3] = std::array::from_fn(|c| rng.uniform_in(-half[c], half[c]));
+            p[axis] = sign * half[axis];
+            let mut n = [0.0; 3];
+            n[axis] = -sign;
+            Contact::try_new(p, n, None).expect("an axis is a valid normal")
+        })
     }
 
     /// A random grasp with `contacts` fingers on the ellipsoid x²/a² + y²/b² + z²/c² = 1 with
@@ -79,21 +93,15 @@ impl Grasp {
         friction: FrictionModel,
     ) -> Grasp {
         check_half_extents("random_on_ellipsoid", semi);
-        let fingers = (0..contacts)
-            .map(|_| {
-                let u = rng.unit_vector(3);
-                let p: [f64; 3] = std::array::from_fn(|c| semi[c] * u[c]);
-                let g: [f64; 3] = std::array::from_fn(|c| -p[c] / (semi[c] * semi[c]));
-                let norm = g.iter().map(|x| x * x).sum::<f64>().sqrt();
-                let n = g.map(|x| x / norm);
-                Contact::try_new(p, n, None).expect("a unit normal off a point of the surface")
-            })
-            .collect();
         let rho = semi.iter().fold(0.0, |m: f64, &h| m.max(h));
-        Grasp::builder(fingers, friction)
-            .torque_scale(rho)
-            .build()
-            .expect("random_on_ellipsoid: at least one contact")
+        centred_grasp(rng, contacts, friction, rho, |rng| {
+            let u = rng.unit_vector(3);
+            let p: [f64; 3] = std::array::from_fn(|c| semi[c] * u[c]);
+            let g: [f64; 3] = std::array::from_fn(|c| -p[c] / (semi[c] * semi[c]));
+            let norm = g.iter().map(|x| x * x).sum::<f64>().sqrt();
+            let n = g.map(|x| x / norm);
+            Contact::try_new(p, n, None).expect("a unit normal off a point of the surface")
+        })
     }
 
     /// A random grasp with `contacts` fingers (at most 6) on distinct faces of the box
