@@ -8,16 +8,17 @@
 //! perf report --no-children
 //! ```
 //!
-//! Arguments: `force-closure` or `other`, cone edges (32), grasps (200), rounds (30). Prints the
-//! mean time per grasp and the work counters.
+//! Arguments: `force-closure` or `other`, cone edges (32), grasps (200), rounds (30), object
+//! (`bar` or `ellipsoid`, as `pqh bench gws --object`; default `bar`). Prints the mean time per
+//! grasp and the work counters.
 
 use pqhull::grasp::{Evaluator, FrictionModel, Grasp, Method, Metric};
-use pqhull_cli::bench::workloads::bar_grasps;
+use pqhull_cli::bench::workloads::{GwsObject, object_grasps};
 use std::time::Instant;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let usage = "usage: profile_q1 force-closure|other [edges] [grasps] [rounds]";
+    let usage = "usage: profile_q1 force-closure|other [edges] [grasps] [rounds] [bar|ellipsoid]";
     let want_closure = match args.first().map(String::as_str) {
         Some("force-closure") => true,
         Some("other") => false,
@@ -39,8 +40,16 @@ fn main() {
         eprintln!("{usage}: {e}");
         std::process::exit(2);
     });
-    // The grasps of `pqh bench gws` (seed 1, the 1 x 0.4 x 0.2 bar).
-    let grasps: Vec<Grasp> = bar_grasps(1, count, 4, friction);
+    let object = match args.get(4).map(String::as_str) {
+        None | Some("bar") => GwsObject::Bar,
+        Some("ellipsoid") => GwsObject::Ellipsoid,
+        Some(other) => {
+            eprintln!("{usage}: not an object: {other}");
+            std::process::exit(2);
+        }
+    };
+    // The grasps of `pqh bench gws` (seed 1).
+    let grasps: Vec<Grasp> = object_grasps(object, 1, count, 4, friction);
     let mut evaluator =
         Evaluator::new(Metric::Q1, Method::Partial, None).expect("Q1 by the partial method");
     let chosen: Vec<&Grasp> = grasps

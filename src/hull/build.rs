@@ -486,15 +486,15 @@ impl<const D: usize> Hull<D> {
         if self.flat_of.is_empty() {
             return flats;
         }
-        let flat = |v: u32| self.flat_of.get(v as usize).copied().unwrap_or(NO_FLAT);
+        // Each vertex's flat read once (the counts below read each up to D times).
+        let ids = vertices.map(|v| self.flat_of.get(v as usize).copied().unwrap_or(NO_FLAT));
         let mut found = 0;
-        for (i, &v) in vertices.iter().enumerate() {
-            let f = flat(v);
+        for (i, &f) in ids.iter().enumerate() {
             // Count each flat once, at its first vertex.
-            if f == NO_FLAT || vertices[..i].iter().any(|&u| flat(u) == f) {
+            if f == NO_FLAT || ids[..i].contains(&f) {
                 continue;
             }
-            let members = vertices[i..].iter().filter(|&&u| flat(u) == f).count();
+            let members = ids[i..].iter().filter(|&&g| g == f).count();
             if members > self.flat_dim && found < MAX_FLATS {
                 flats[found] = f;
                 found += 1;

@@ -14,8 +14,9 @@ pub(in crate::hull) struct Scratch<const D: usize> {
     pub(in crate::hull) created: Vec<FacetId>,
     /// (visible facet, index of the horizon ridge in it).
     horizon: Vec<(FacetId, usize)>,
-    /// Ridges of the cone to pair up: (sorted vertex key, new facet, its neighbour slot).
-    ridges: Vec<([u32; D], FacetId, usize)>,
+    /// Ridges of the cone to pair up: (order-independent hash of the ridge's vertices, new facet,
+    /// its neighbour slot).
+    ridges: Vec<(u64, FacetId, u32)>,
     /// Open-addressing table of indices into `ridges`, for pairing.
     table: Vec<u32>,
     /// Points of removed outside sets awaiting reassignment.
@@ -36,14 +37,33 @@ pub(in crate::hull) struct Scratch<const D: usize> {
 /// few rings in 6-D, a hundredth of a large hull's arena.
 pub(in crate::hull) const RING_FACETS: usize = 1024;
 
-/// A multiplicative hash of a sorted ridge key (FxHash's constant), good enough for the small
-/// per-expansion table and much cheaper than SipHash.
-fn ridge_hash<const D: usize>(key: &[u32; D]) -> usize {
-    let mut h: u64 = 0;
-    for &v in key {
-        h = (h.rotate_left(5) ^ u64::from(v)).wrapping_mul(0x517c_c1b7_2722_0a95);
+/// One vertex's share of a ridge's hash: a ridge hashes to the wrapping sum of its vertices'
+/// shares, so that the D − 1 ridges of a new facet cost one share each (the facet's sum less the
+/// vertex opposite), with no sort. A sum of plain multiples would collide on vertex sets of
+/// equal sum; the xor-shift and second multiply (SplitMix64's finaliser) spread each index over
+/// all 64 bits. Collisions are harmless: a hit is confirmed on the vertices before linking.
+#[inline]
+fn vertex_share(v: u32) -> u64 {
+    let mut z = u64::from(v).wrapping_add(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^ (z >> 31)
+}
+
+/// Whether the ridge of facet `a` opposite its vertex `ja` is the ridge of facet `b` opposite
+/// `jb`: every other vertex of `a` is a vertex of `b` other than `jb` (both have D distinct
+/// vertices, so the D − 1 sets are then equal).
+#[inline]
+fn same_ridge<const D: usize>(a: &[u32; D], ja: usize, b: &[u32; D], jb: usize) -> bool {
+    // Counted without branches (the hash has almost always matched): each vertex of `a` but
+    // `ja` equals at most one of `b` (distinct vertices), so D − 1 matches mean equal ridges.
+    let mut matches = 0;
+    for (m, &x) in a.iter().enumerate() {
+        for (n, &y) in b.iter().enumerate() {
+            matches += usize::from((m != ja) & (n != jb) & (x == y));
+        }
     }
-    (h >> 16) as usize
+    matches == D - 1
 }
 
 impl<const D: usize> Hull<D> {
@@ -273,18 +293,14 @@ impl<const D: usize> Hull<D> {
                 .position(|&n| n == visible)
                 .expect("horizon neighbour links back to the visible facet");
             self.facets[outer.index()].neighbors[back] = new;
+            // The ridge opposite vertex j ≠ i contains p; it is keyed by its other D − 2 vertices.
+            let shares = vertices.map(vertex_share);
+            let total = (0..D)
+                .filter(|&m| m != i)
+                .fold(0u64, |h, m| h.wrapping_add(shares[m]));
             for j in (0..D).filter(|&j| j != i) {
-                // The ridge opposite vertex j contains p; key it by its other D − 2 vertices.
-                let mut key = [u32::MAX; D];
-                let mut k = 0;
-                for (m, &v) in vertices.iter().enumerate() {
-                    if m != i && m != j {
-                        key[k] = v;
-                        k += 1;
-                    }
-                }
-                key[..k].sort_unstable();
-                self.scratch.ridges.push((key, new, j));
+                let key = total.wrapping_sub(shares[j]);
+                self.scratch.ridges.push((key, new, j as u32));
             }
         }
         self.pair_ridges();
@@ -301,7 +317,7 @@ impl<const D: usize> Hull<D> {
         scratch.table.resize(capacity, EMPTY);
         for r in 0..scratch.ridges.len() {
             let (key, a, ja) = scratch.ridges[r];
-            let mut slot = ridge_hash(&key) & mask;
+            let mut slot = (key >> 32) as usize & mask;
             loop {
                 let other = scratch.table[slot];
                 if other == EMPTY {
@@ -309,10 +325,17 @@ impl<const D: usize> Hull<D> {
                     break;
                 }
                 let (other_key, b, jb) = scratch.ridges[other as usize];
-                if other_key == key {
+                if other_key == key
+                    && same_ridge(
+                        &self.facets[a.index()].vertices,
+                        ja as usize,
+                        &self.facets[b.index()].vertices,
+                        jb as usize,
+                    )
+                {
                     // Each cone ridge is shared by exactly two new facets, so the slot is done.
-                    self.facets[a.index()].neighbors[ja] = b;
-                    self.facets[b.index()].neighbors[jb] = a;
+                    self.facets[a.index()].neighbors[ja as usize] = b;
+                    self.facets[b.index()].neighbors[jb as usize] = a;
                     break;
                 }
                 slot = (slot + 1) & mask;
@@ -340,12 +363,21 @@ impl<const D: usize> Hull<D> {
         // facet spanning it, so testing the others would repeat the same determinant.
         let mut candidates = std::mem::take(&mut self.scratch.candidates);
         candidates.clear();
-        candidates.extend(self.scratch.created.iter().map(|&id| (self.region(id), id)));
-        candidates.sort_unstable();
-        candidates.dedup_by_key(|(region, _)| *region);
         let mut representatives = std::mem::take(&mut self.scratch.representatives);
         representatives.clear();
-        representatives.extend(candidates.iter().map(|&(_, id)| id));
+        let created = &self.scratch.created;
+        if created
+            .iter()
+            .all(|id| self.facets[id.index()].plane == NO_SLOT)
+        {
+            // Each facet alone in its region (no shared plane): nothing to merge, no sort.
+            representatives.extend_from_slice(created);
+        } else {
+            candidates.extend(created.iter().map(|&id| (self.region(id), id)));
+            candidates.sort_unstable();
+            candidates.dedup_by_key(|(region, _)| *region);
+            representatives.extend(candidates.iter().map(|&(_, id)| id));
+        }
         for &q in &orphans {
             self.assign(q, &representatives);
         }
