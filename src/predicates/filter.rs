@@ -180,7 +180,7 @@ impl<const D: usize> FacetPlane<D> {
     /// The value is the same for every call; the bound is the per-point `Σ_j err_j·|p_j − v0_j|`
     /// only when the value is within the plane's coarse bound (the same sum over the whole box,
     /// a constant of the plane), which decides most tests with half the arithmetic.
-    #[inline]
+    #[inline(always)]
     pub fn evaluate(&self, p: &[f64; D]) -> (f64, f64) {
         let mut value = 0.0;
         let mut in_range = true;
@@ -189,16 +189,23 @@ impl<const D: usize> FacetPlane<D> {
             in_range &= x.abs() <= 1.0;
         }
         if !in_range {
-            return (value, f64::INFINITY);
+            (value, f64::INFINITY)
+        } else if value.abs() > self.coarse {
+            (value, self.coarse)
+        } else {
+            (value, self.point_bound(p))
         }
-        if value.abs() > self.coarse {
-            return (value, self.coarse);
-        }
+    }
+
+    /// [`evaluate`](Self::evaluate)'s per-point bound (out of line: the coarse bound decides
+    /// most tests).
+    #[inline(never)]
+    fn point_bound(&self, p: &[f64; D]) -> f64 {
         let mut bound = 0.0;
         for ((&x, &b), &e) in p.iter().zip(&self.base).zip(&self.error) {
             bound += e * (x - b).abs();
         }
-        (value, bound * BOUND_INFLATION + self.slack)
+        bound * BOUND_INFLATION + self.slack
     }
 
     /// The floating-point value of `det[v1 − v0; …; v(D−1) − v0; p − v0]` alone (the first half of
