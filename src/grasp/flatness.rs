@@ -61,6 +61,16 @@ impl Default for Flatness {
     }
 }
 
+/// What [`Flatness::gram`] found.
+enum Gram {
+    /// No point, or all at the origin.
+    Empty,
+    /// A coordinate is not finite.
+    NotFinite,
+    /// The Gram matrix of `count` points, scaled by `unit`.
+    Scaled { unit: f64, count: usize },
+}
+
 /// A fresh workspace: there is nothing in one worth copying.
 impl Clone for Flatness {
     fn clone(&self) -> Self {
@@ -75,25 +85,58 @@ impl std::fmt::Debug for Flatness {
 }
 
 impl Flatness {
+    /// Whether a slab `{x : |u·x| ≤ limit}` through the origin (`u` a unit vector) holds every
+    /// point of `points`: [`slab`](Self::slab)`(points) <= limit`, the same answer, but without
+    /// the eigensolver for a set that is certainly far from flat (a force-closure grasp's, the
+    /// common case): a Cholesky factorisation of the Gram matrix less a shift proves that every
+    /// slab holding the points is more than twice `limit` wide.
+    pub(in crate::grasp) fn within(
+        &mut self,
+        points: impl Iterator<Item = [f64; 6]> + Clone,
+        limit: f64,
+    ) -> bool {
+        match self.gram(points.clone()) {
+            Gram::Empty => return 0.0 <= limit,
+            Gram::NotFinite => return false,
+            Gram::Scaled { unit, count } if self.far_from_flat(limit * unit, count) => {
+                return false;
+            }
+            Gram::Scaled { .. } => {}
+        }
+        self.thinnest(points) <= limit
+    }
+
     /// A rigorous half-width `τ` of a slab `{x : |u·x| ≤ τ}` (`u` a unit vector) holding every
     /// point of `points`: the thinnest through the origin, up to the eigensolver's accuracy.
     /// `+∞` when the eigensolver fails or a point is not finite; 0 for no points.
-    pub(in crate::grasp) fn slab(&mut self, points: impl Iterator<Item = [f64; 6]> + Clone) -> f64 {
-        // The Gram matrix of the points divided by their largest coordinate (a power of two):
-        // the eigenvector is the same, and tiny or huge wrenches neither underflow nor overflow.
+    #[cfg(test)]
+    fn slab(&mut self, points: impl Iterator<Item = [f64; 6]> + Clone) -> f64 {
+        match self.gram(points.clone()) {
+            Gram::Empty => 0.0,
+            Gram::NotFinite => f64::INFINITY,
+            Gram::Scaled { .. } => self.thinnest(points),
+        }
+    }
+
+    /// Fills `gram` with the Gram matrix `Σ w wᵀ` of the points divided by their largest
+    /// coordinate rounded up to a power of two (`unit` is its inverse): the eigenvectors are the
+    /// same, and tiny or huge wrenches neither underflow nor overflow.
+    fn gram(&mut self, points: impl Iterator<Item = [f64; 6]> + Clone) -> Gram {
         let mut largest = 0.0f64;
         for x in points.clone().flatten() {
             if !x.is_finite() {
-                return f64::INFINITY;
+                return Gram::NotFinite;
             }
             largest = largest.max(x.abs());
         }
         if largest == 0.0 {
-            return 0.0;
+            return Gram::Empty;
         }
         let unit = 2f64.powi(-largest.log2().ceil() as i32);
         self.gram.fill(0.0);
-        for w in points.clone() {
+        let mut count = 0usize;
+        for w in points {
+            count += 1;
             let w = w.map(|x| x * unit);
             for (a, &x) in w.iter().enumerate() {
                 for (b, &y) in w.iter().enumerate().take(a + 1) {
@@ -106,6 +149,51 @@ impl Flatness {
                 self.gram[(b, a)] = self.gram[(a, b)];
             }
         }
+        Gram::Scaled { unit, count }
+    }
+
+    /// Whether the `count` points behind `gram` certainly lie in no slab through the origin of
+    /// half-width `2·limit` (in the scaled units), proved by a Cholesky factorisation of
+    /// `gram − t·I` that succeeds.
+    ///
+    /// Why that proves it: success means `gram − t·I + E` is positive definite, with Cholesky's
+    /// backward error `‖E‖₂ ≤ γ₇·tr` (`tr` the trace, which bounds `‖|L||Lᵀ|‖`); the computed
+    /// Gram matrix is within `γ_N·tr` of the exact one (`N = count` products summed per entry).
+    /// So the exact smallest eigenvalue is at least `t − (γ₇ + γ_N)·tr ≥ 4N·limit²`, and for every
+    /// unit `u`, `max_w (u·w)² ≥ Σ_w (u·w)² / N ≥ 4·limit²`. A 6 × 6 factorisation written out:
+    /// faer's needs a workspace and dispatch that cost more than the dozen dot products here.
+    fn far_from_flat(&self, limit: f64, count: usize) -> bool {
+        let n = count as f64;
+        let trace: f64 = (0..6).map(|a| self.gram[(a, a)]).sum();
+        let u = f64::EPSILON / 2.0;
+        // (γ₇ + γ_N) with room for the shift's own rounding and the trace's.
+        let rounding = 2.0 * (n + 16.0) * u * trace;
+        let shift = 4.0 * n * limit * limit + rounding;
+        if !(shift.is_finite() && shift < trace) {
+            return false;
+        }
+        let mut l = [[0.0f64; 6]; 6];
+        for j in 0..6 {
+            let (done, rest) = l.split_at_mut(j + 1);
+            let row = &mut done[j];
+            let d = self.gram[(j, j)] - shift - row[..j].iter().map(|x| x * x).sum::<f64>();
+            // NaN fails too.
+            if d.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
+                return false;
+            }
+            let pivot = d.sqrt();
+            row[j] = pivot;
+            for (offset, below) in rest.iter_mut().enumerate() {
+                let i = j + 1 + offset;
+                let dot: f64 = below[..j].iter().zip(&row[..j]).map(|(a, b)| a * b).sum();
+                below[j] = (self.gram[(i, j)] - dot) / pivot;
+            }
+        }
+        true
+    }
+
+    /// The eigensolver's slab for the Gram matrix in `gram`, measured on `points`.
+    fn thinnest(&mut self, points: impl Iterator<Item = [f64; 6]>) -> f64 {
         let stack = MemStack::new(&mut self.memory);
         if self_adjoint_evd(
             self.gram.as_ref(),
@@ -181,6 +269,61 @@ mod tests {
         // normal of that hyperplane, (0, 0, 0, 0, s, −c).
         for w in &thin {
             assert!((s * w[4] - c * w[5]).abs() <= 1e-15);
+        }
+    }
+
+    #[test]
+    fn within_answers_as_the_slab_does_and_skips_the_eigensolver_only_far_from_flat() {
+        let mut flatness = Flatness::default();
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        for case in 0..40 {
+            // Full-rank sets, then sets squeezed toward the hyperplane w5 = 0 by 1e−3 … 1e−17.
+            let squeeze = if case < 10 {
+                1.0
+            } else {
+                10f64.powi(-(case % 15) - 3)
+            };
+            let points: Vec<[f64; 6]> = (0..24)
+                .map(|_| {
+                    let mut w: [f64; 6] = std::array::from_fn(|_| next());
+                    w[5] *= squeeze;
+                    w
+                })
+                .collect();
+            let tau = flatness.slab(points.iter().copied());
+            for limit in [
+                tau * 0.5,
+                tau * 0.999,
+                tau,
+                tau * 1.001,
+                tau * 2.0,
+                1e-15,
+                0.3,
+            ] {
+                assert_eq!(
+                    flatness.within(points.iter().copied(), limit),
+                    tau <= limit,
+                    "case {case}, τ = {tau:e}, limit = {limit:e}"
+                );
+            }
+            // The certificate fires for the full-rank sets at the metrics' threshold, never for
+            // a set within twice the limit of a slab.
+            let Gram::Scaled { unit, count } = flatness.gram(points.iter().copied()) else {
+                panic!("finite points")
+            };
+            if case < 10 {
+                assert!(flatness.far_from_flat(FLAT * unit, count), "case {case}");
+            }
+            assert!(
+                !flatness.far_from_flat(tau * unit / 2.0, count),
+                "case {case}"
+            );
         }
     }
 

@@ -151,7 +151,7 @@ impl WrenchSet for Explicit<'_> {
     }
 
     fn is_flat(&mut self, flatness: &mut Flatness) -> bool {
-        flatness.slab(self.raw.iter().copied()) <= FLAT * self.scale
+        flatness.within(self.raw.iter().copied(), FLAT * self.scale)
     }
 
     fn flat_value(&mut self, _: &mut Gjk<6>, started: Instant) -> Result<Quality, QualityError> {

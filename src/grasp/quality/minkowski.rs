@@ -701,8 +701,8 @@ pub(super) fn qhull(
 /// its scale of a hyperplane: never force closure, answered by [`flat_sum`] (see
 /// [`flatness`](crate::grasp::flatness)).
 fn flat_contacts(raw_sets: &[Vec<[f64; 6]>], scale: f64, flatness: &mut Flatness) -> bool {
-    let tau = flatness.slab(raw_sets.iter().flatten().copied());
-    raw_sets.len() as f64 * tau <= FLAT * scale
+    let limit = FLAT * scale / raw_sets.len().max(1) as f64;
+    flatness.within(raw_sets.iter().flatten().copied(), limit)
 }
 
 /// −(distance from the origin) of a sum spanning fewer than six dimensions, never force closure:
