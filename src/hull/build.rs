@@ -719,6 +719,39 @@ mod tests {
     }
 
     #[test]
+    fn colliding_ridge_keys_are_caught_and_the_cone_linked_right() {
+        let mut rng = Rng::new(5);
+        for _ in 0..10 {
+            let p = points(&mut rng);
+            let mut plain = Hull::empty();
+            plain
+                .rebuild_with_strategy(&p, FarthestPoint::new())
+                .unwrap();
+            let mut colliding = Hull::empty();
+            colliding.scratch.colliding_shares = true;
+            colliding
+                .rebuild_with_strategy(&p, FarthestPoint::new())
+                .unwrap();
+            assert!(
+                colliding.scratch.colliding_shares,
+                "kept across the rebuild"
+            );
+            assert!(
+                colliding.scratch.confirming_passes > 0,
+                "the collisions were caught"
+            );
+            assert_eq!(plain.scratch.confirming_passes, 0);
+            colliding.check().unwrap();
+            assert_eq!(colliding.vertex_indices(), plain.vertex_indices());
+            assert_eq!(colliding.facet_count(), plain.facet_count());
+            assert_eq!(
+                colliding.stats().facets_created,
+                plain.stats().facets_created
+            );
+        }
+    }
+
+    #[test]
     fn a_chosen_start_gives_the_same_hull_and_a_bad_one_is_ignored() {
         let mut rng = Rng::new(3);
         let mut other_work = 0;

@@ -31,6 +31,13 @@ pub(in crate::hull) struct Scratch<const D: usize> {
     /// [`Hull::initialise`](super::Hull).
     pub(in crate::hull) keys: Vec<(u64, u32)>,
     pub(in crate::hull) first_copy: Vec<u32>,
+    /// Tests only: ridge keys that collide all the time, so that the confirming pairing pass
+    /// runs.
+    #[cfg(test)]
+    pub(in crate::hull) colliding_shares: bool,
+    /// Tests only: how many pairings fell back to the confirming pass.
+    #[cfg(test)]
+    pub(in crate::hull) confirming_passes: usize,
 }
 
 /// The most facets [`StrategyHooks::claim_beyond`](crate::hull::StrategyHooks::claim_beyond) searches around a facet before it scans them all: a
@@ -41,7 +48,8 @@ pub(in crate::hull) const RING_FACETS: usize = 1024;
 /// shares, so that the D − 1 ridges of a new facet cost one share each (the facet's sum less the
 /// vertex opposite), with no sort. A sum of plain multiples would collide on vertex sets of
 /// equal sum; the xor-shift and second multiply (SplitMix64's finaliser) spread each index over
-/// all 64 bits. Collisions are harmless: a hit is confirmed on the vertices before linking.
+/// all 64 bits. A collision is caught (a key met a third time) and the pairing redone with every
+/// hit confirmed on the vertices: see [`Hull::pair_ridges_by`].
 #[inline]
 fn vertex_share(v: u32) -> u64 {
     let mut z = u64::from(v).wrapping_add(0x9e37_79b9_7f4a_7c15);
@@ -49,6 +57,18 @@ fn vertex_share(v: u32) -> u64 {
     z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
     z ^ (z >> 31)
 }
+
+/// Whether a pairing pass confirms each key match on the facets' vertices.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Confirm {
+    /// Never: a key met a third time (a hash collision) fails the pass instead.
+    OnCollision,
+    /// At every key match (the pass after a failed one).
+    Always,
+}
+
+/// The flag an unconfirmed pairing pass sets on a ridge's neighbour slot once it is paired.
+const PAIRED: u32 = 1 << 31;
 
 /// Whether the ridge of facet `a` opposite its vertex `ja` is the ridge of facet `b` opposite
 /// `jb`: every other vertex of `a` is a vertex of `b` other than `jb` (both have D distinct
@@ -294,6 +314,12 @@ impl<const D: usize> Hull<D> {
                 .expect("horizon neighbour links back to the visible facet");
             self.facets[outer.index()].neighbors[back] = new;
             // The ridge opposite vertex j ≠ i contains p; it is keyed by its other D − 2 vertices.
+            #[cfg(test)]
+            let shares = vertices.map(|v| match self.scratch.colliding_shares {
+                true => u64::from(v % 3), // collisions on every other ridge, for the tests
+                false => vertex_share(v),
+            });
+            #[cfg(not(test))]
             let shares = vertices.map(vertex_share);
             let total = (0..D)
                 .filter(|&m| m != i)
@@ -309,12 +335,35 @@ impl<const D: usize> Hull<D> {
     /// Links the new facets across the ridges they share, through an open-addressing hash table
     /// (a sort of the keys cost a quarter of the full hull's time in 5-D and 6-D).
     fn pair_ridges(&mut self) {
+        if !self.pair_ridges_by(Confirm::OnCollision) {
+            for ridge in &mut self.scratch.ridges {
+                ridge.2 &= !PAIRED;
+            }
+            #[cfg(test)]
+            {
+                self.scratch.confirming_passes += 1;
+            }
+            self.pair_ridges_by(Confirm::Always);
+        }
+    }
+
+    /// One pairing pass; `false` (links possibly wrong, to be redone by a confirming pass) when
+    /// an unconfirmed pass meets a key a third time or leaves a ridge unpaired.
+    ///
+    /// Why an unconfirmed pass that returns `true` is right: every cone ridge occurs in exactly
+    /// two new facets (the horizon is a closed manifold), so its two entries share a key. Two
+    /// different ridges with one key therefore put at least four entries on one probe path, and
+    /// the third of them meets a slot already paired (slots are never emptied, so every entry
+    /// with that key walks past the first one's slot). A pass that meets no paired slot and
+    /// pairs every entry has paired each ridge with the only other entry of its key: its own.
+    fn pair_ridges_by(&mut self, confirm: Confirm) -> bool {
         const EMPTY: u32 = u32::MAX;
         let scratch = &mut self.scratch;
         let capacity = (2 * scratch.ridges.len()).next_power_of_two().max(2);
         let mask = capacity - 1;
         scratch.table.clear();
         scratch.table.resize(capacity, EMPTY);
+        let mut paired = 0;
         for r in 0..scratch.ridges.len() {
             let (key, a, ja) = scratch.ridges[r];
             let mut slot = (key >> 32) as usize & mask;
@@ -325,22 +374,32 @@ impl<const D: usize> Hull<D> {
                     break;
                 }
                 let (other_key, b, jb) = scratch.ridges[other as usize];
-                if other_key == key
-                    && same_ridge(
-                        &self.facets[a.index()].vertices,
-                        ja as usize,
-                        &self.facets[b.index()].vertices,
-                        jb as usize,
-                    )
-                {
-                    // Each cone ridge is shared by exactly two new facets, so the slot is done.
-                    self.facets[a.index()].neighbors[ja as usize] = b;
-                    self.facets[b.index()].neighbors[jb as usize] = a;
-                    break;
+                if other_key == key {
+                    let matched = match confirm {
+                        Confirm::OnCollision if jb & PAIRED != 0 => return false,
+                        Confirm::OnCollision => true,
+                        Confirm::Always => same_ridge(
+                            &self.facets[a.index()].vertices,
+                            ja as usize,
+                            &self.facets[b.index()].vertices,
+                            (jb & !PAIRED) as usize,
+                        ),
+                    };
+                    if matched {
+                        let jb = jb & !PAIRED;
+                        self.facets[a.index()].neighbors[ja as usize] = b;
+                        self.facets[b.index()].neighbors[jb as usize] = a;
+                        if confirm == Confirm::OnCollision {
+                            scratch.ridges[other as usize].2 |= PAIRED;
+                        }
+                        paired += 2;
+                        break;
+                    }
                 }
                 slot = (slot + 1) & mask;
             }
         }
+        paired == scratch.ridges.len()
     }
 
     /// Tombstones the visible facets and reassigns their outside points to the new facets.
