@@ -7,7 +7,9 @@ use super::facet::{Facet, FacetId};
 use super::planes::NO_SLOT;
 use super::{Hull, HullError, NO_FLAT};
 use crate::geometry::vector::{dot, norm, sub};
-use crate::predicates::{ExactGrid, FacetPlane, Sign, affinely_independent_subset, orientation};
+use crate::predicates::{
+    ExactGrid, FacetPlane, Sign, affinely_independent_subset, in_box, orientation,
+};
 use std::time::Instant;
 
 /// The smallest dimension the engine builds hulls in ([`HullError::DimensionOutOfRange`] below).
@@ -387,12 +389,19 @@ impl<const D: usize> Hull<D> {
             }
             return self.push_outside(p, best);
         }
+        // The box test once for all candidates (internal points are in it, but for the rare
+        // input that could not be scaled into it).
+        let boxed = in_box(&point);
         for &id in candidates {
             let facet = &self.facets[id.index()];
             if self.on_its_flat(facet, p) {
                 continue; // exactly on the plane
             }
-            let (value, bound) = facet.filter.evaluate(&point);
+            let (value, bound) = if boxed {
+                facet.filter.evaluate_in_box(&point)
+            } else {
+                facet.filter.evaluate(&point)
+            };
             if value > bound {
                 let distance = value * facet.inv_norm;
                 if best.is_none_or(|(_, d, _)| distance > d) {

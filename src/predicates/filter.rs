@@ -61,6 +61,13 @@ fn coarse_bound<const D: usize>(error: &[f64; D], base: &[f64; D], slack: f64) -
     (sum * BOUND_INFLATION) * BOUND_INFLATION + 2.0 * slack
 }
 
+/// Whether every coordinate of `p` is in `[−1, 1]` (false for NaN): the points for which
+/// [`FacetPlane::evaluate_in_box`] may be called.
+#[inline]
+pub(crate) fn in_box<const D: usize>(p: &[f64; D]) -> bool {
+    p.iter().all(|x| x.abs() <= 1.0)
+}
+
 /// The hyperplane through D points, cached for fast exact side tests.
 ///
 /// Stores the base vertex `v0`, the cofactors `C_j` of the last row of
@@ -191,6 +198,25 @@ impl<const D: usize> FacetPlane<D> {
         if !in_range {
             (value, f64::INFINITY)
         } else if value.abs() > self.coarse {
+            (value, self.coarse)
+        } else {
+            (value, self.point_bound(p))
+        }
+    }
+
+    /// [`evaluate`](Self::evaluate) for a point the caller has checked to lie in `[−1, 1]^D`
+    /// (`in_box`), without checking it again: for loops that test one point against many planes.
+    ///
+    /// # Panics
+    /// In debug builds, if `p` is not in the box (in release builds the bound would not hold).
+    #[inline(always)]
+    pub(crate) fn evaluate_in_box(&self, p: &[f64; D]) -> (f64, f64) {
+        debug_assert!(in_box(p), "evaluate_in_box: {p:?} is outside [−1, 1]^D");
+        let mut value = 0.0;
+        for ((&x, &b), &c) in p.iter().zip(&self.base).zip(&self.cofactors) {
+            value += c * (x - b);
+        }
+        if value.abs() > self.coarse {
             (value, self.coarse)
         } else {
             (value, self.point_bound(p))

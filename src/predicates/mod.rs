@@ -77,6 +77,7 @@ mod wide;
 pub use exact::exact_cofactor_direction;
 pub(crate) use exact::lowest_bit_exponent;
 pub use filter::FacetPlane;
+pub(crate) use filter::in_box;
 pub use grid::ExactGrid;
 pub use wide::times_power_of_two;
 
