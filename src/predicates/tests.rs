@@ -84,8 +84,17 @@ fn check<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> Sign {
         );
         // The same value, and as certified a bound, without the box test.
         let (unchecked, unchecked_bound) = plane.evaluate_in_box(p);
-        assert_eq!(unchecked.to_bits(), value.to_bits(), "evaluate_in_box: {}", ctx());
-        assert!(err <= rational(unchecked_bound), "evaluate_in_box bound: {}", ctx());
+        assert_eq!(
+            unchecked.to_bits(),
+            value.to_bits(),
+            "evaluate_in_box: {}",
+            ctx()
+        );
+        assert!(
+            err <= rational(unchecked_bound),
+            "evaluate_in_box bound: {}",
+            ctx()
+        );
     } else {
         assert_eq!(bound, f64::INFINITY, "bound must be infinite: {}", ctx());
     }
