@@ -184,23 +184,15 @@ impl<const D: usize> FacetPlane<D> {
     /// The bound is finite only if every coordinate of `p` and of the vertices is in `[−1, 1]`;
     /// otherwise (including NaN or infinite `p`) it is `+∞`.
     ///
-    /// The value is the same for every call; the bound is the per-point `Σ_j err_j·|p_j − v0_j|`
-    /// only when the value is within the plane's coarse bound (the same sum over the whole box,
-    /// a constant of the plane), which decides most tests with half the arithmetic.
+    /// The value is [`value`](Self::value); the bound is the per-point `Σ_j err_j·|p_j − v0_j|`
+    /// only when the value is within the plane's coarse bound (the same sum taken over the whole
+    /// box, a constant of the plane), so a value beyond it costs no per-point sum.
     #[inline(always)]
     pub fn evaluate(&self, p: &[f64; D]) -> (f64, f64) {
-        let mut value = 0.0;
-        let mut in_range = true;
-        for ((&x, &b), &c) in p.iter().zip(&self.base).zip(&self.cofactors) {
-            value += c * (x - b);
-            in_range &= x.abs() <= 1.0;
-        }
-        if !in_range {
-            (value, f64::INFINITY)
-        } else if value.abs() > self.coarse {
-            (value, self.coarse)
+        if in_box(p) {
+            self.evaluate_in_box(p)
         } else {
-            (value, self.point_bound(p))
+            (self.value(p), f64::INFINITY)
         }
     }
 
@@ -212,10 +204,7 @@ impl<const D: usize> FacetPlane<D> {
     #[inline(always)]
     pub(crate) fn evaluate_in_box(&self, p: &[f64; D]) -> (f64, f64) {
         debug_assert!(in_box(p), "evaluate_in_box: {p:?} is outside [−1, 1]^D");
-        let mut value = 0.0;
-        for ((&x, &b), &c) in p.iter().zip(&self.base).zip(&self.cofactors) {
-            value += c * (x - b);
-        }
+        let value = self.value(p);
         if value.abs() > self.coarse {
             (value, self.coarse)
         } else {
