@@ -326,27 +326,35 @@ impl<const D: usize> FacetPlane<D> {
         if !p.iter().all(|x| x.is_finite()) {
             return false;
         }
-        // Computed here, on the slow path, rather than cached per facet: it costs D² bit scans.
-        let g = grid_exponent(vertices.iter().flatten().chain(p.iter()));
-        if g == i32::MAX {
-            return true; // every entry is zero
-        }
-        let Some(units) = g
-            .checked_mul(D as i32)
-            .filter(|u| (-1000..=1000).contains(u))
-        else {
-            return false;
-        };
         let permanent: f64 = p
             .iter()
             .zip(&self.base)
             .zip(&self.permanents)
             .map(|((&x, &b), &q)| q * (x - b).abs())
             .sum();
-        // Units of 2^(g·D): scale in two steps so that neither factor overflows.
-        let half = -units / 2;
-        let in_units = permanent * 2f64.powi(half) * 2f64.powi(-units - half);
-        in_units < TWO_52 / 2.0
+        // Whether the permanent is below 2^51 units of 2^(g·D), in two steps so that neither
+        // factor overflows; `false` when g·D is out of range (underflow would then be possible).
+        let fits = |g: i32| {
+            if g == i32::MAX {
+                return true; // every entry is zero
+            }
+            let Some(units) = g
+                .checked_mul(D as i32)
+                .filter(|u| (-1000..=1000).contains(u))
+            else {
+                return false;
+            };
+            let half = -units / 2;
+            permanent * 2f64.powi(half) * 2f64.powi(-units - half) < TWO_52 / 2.0
+        };
+        // The grid of all the entries is no coarser than `p`'s alone, so a permanent too large
+        // in `p`'s units is too large in theirs: a rejection in D bit scans, which is every
+        // slow test on raw floating-point data (their lowest bits lie near 2^-53 of the largest).
+        if !fits(grid_exponent(p.iter())) {
+            return false;
+        }
+        // Computed here, on the slow path, rather than cached per facet: it costs D² bit scans.
+        fits(grid_exponent(vertices.iter().flatten().chain(p.iter())))
     }
 
     /// Per-component error coefficients: `|Ĉ_j − C_j| ≤ cofactor_errors()[j]` for the computed

@@ -307,28 +307,52 @@ impl<const D: usize> ExactPlane<D> {
         })
     }
 
-    /// The differences `p − v0` in column units and the limbs their side-test sum needs, or
-    /// `None` when a coordinate is off the column grid, too large, or the sum too wide.
-    fn differences(&self, p: &[f64; D]) -> Option<([i128; D], usize)> {
+    /// The differences `p − v0` in units of `2^(exponents[j] − shift)` per column `j`, the
+    /// `shift` (0 when `p` is on this plane's column grid, else the most bits a coordinate of
+    /// `p` has below its column's unit), and the limbs their side-test sum needs; `None` when a
+    /// difference or the sum is too wide.
+    ///
+    /// Why a shift: the columns were scaled by the *vertices'* lowest bits, and a tested point
+    /// (raw data: any `f64`) often has a bit below them. Every column then scales by the same
+    /// further `2^shift`, which multiplies the sum by a positive power of two: its sign is
+    /// unchanged, and [`distance`](Self::distance) takes the power back out. Without it such a
+    /// point cost a whole exact determinant instead of D products.
+    fn differences(&self, p: &[f64; D]) -> Option<([i128; D], u32, usize)> {
+        let mut shift = 0u32;
+        for (&coordinate, &exponent) in p.iter().zip(&self.exponents) {
+            let (m, e) = decompose(coordinate);
+            if m != 0 && e < exponent {
+                shift = shift.max(u32::try_from(exponent - e).ok()?);
+            }
+        }
         let mut differences = [0i128; D];
         let mut largest = 0u128;
         for (j, &coordinate) in p.iter().enumerate() {
-            let x = column_integer(coordinate, self.exponents[j])? - self.base[j];
+            // The base vertex in the finer units: exact, or `None` if it no longer fits.
+            let base = if shift == 0 {
+                self.base[j]
+            } else if shift < 127 {
+                self.base[j].checked_mul(1i128 << shift)?
+            } else {
+                return None;
+            };
+            let unit = self.exponents[j].checked_sub(i32::try_from(shift).ok()?)?;
+            let x = column_integer(coordinate, unit)?.checked_sub(base)?;
             differences[j] = x;
             largest = largest.max(x.unsigned_abs());
         }
         let len = limbs_for(self.cofactor_bits + (128 - largest.leading_zeros()) + 3)?;
-        Some((differences, len))
+        Some((differences, shift, len))
     }
 
-    /// `Σ_j C_j·(p_j − v0_j)` and the limbs it is exact in.
-    fn sum(&self, p: &[f64; D]) -> Option<(Wide, usize)> {
-        let (differences, len) = self.differences(p)?;
+    /// `Σ_j C_j·(p_j − v0_j)` times `2^shift`, `shift`, and the limbs the sum is exact in.
+    fn sum(&self, p: &[f64; D]) -> Option<(Wide, u32, usize)> {
+        let (differences, shift, len) = self.differences(p)?;
         let mut sum = Wide::ZERO;
         for (d, c) in differences.iter().zip(&self.cofactors) {
             sum.add_product(*d, false, c, len);
         }
-        Some((sum, len))
+        Some((sum, shift, len))
     }
 
     /// The direction of the exact cofactor vector (the facet's outward normal), rounded to `f64`.
@@ -340,26 +364,28 @@ impl<const D: usize> ExactPlane<D> {
     }
 
     /// Exact sign of `det[v1 − v0; …; v(D−1) − v0; p − v0] = Σ_j C_j·(p_j − v0_j)`, or `None` when
-    /// a coordinate of `p` is off this plane's column grid or too large for `i128`.
+    /// a coordinate difference of `p`, in the finest units its coordinates need, does not fit in
+    /// `i128` (or the sum in [`LIMBS`]).
     ///
     /// # Panics
     /// If a coordinate of `p` is not finite.
     pub(in crate::predicates) fn side(&self, p: &[f64; D]) -> Option<Sign> {
-        let (sum, len) = self.sum(p)?;
+        let (sum, _, len) = self.sum(p)?;
         Some(sum.sign(len))
     }
 
     /// `det[v1 − v0; …; v(D−1) − v0; p − v0] / |C|` — the signed distance of `p` beyond the
     /// plane — from the exact determinant and the exact cofactors, each rounded once (a few ulps
-    /// in all), or `None` when a coordinate of `p` is off this plane's column grid or too large.
+    /// in all), or `None` when a difference or the sum is too wide (as for [`side`](Self::side)).
     ///
     /// # Panics
     /// If a coordinate of `p` is not finite.
     pub(in crate::predicates) fn distance(&self, p: &[f64; D]) -> Option<f64> {
-        let (sum, len) = self.sum(p)?;
-        // With S = Σ e_c, the determinant is 2^S·sum and cofactor j is C'_j·2^(S − e_j): the
-        // common 2^S cancels, leaving sum / |(C'_j·2^(−e_j))_j|.
+        let (sum, shift, len) = self.sum(p)?;
+        // With S = Σ e_c, the determinant is 2^(S − shift)·sum and cofactor j is
+        // C'_j·2^(S − e_j): the common 2^S cancels, leaving 2^(−shift)·sum / |(C'_j·2^(−e_j))_j|.
         let (value, exponent) = sum.to_f64_parts(len);
+        let exponent = exponent - i32::try_from(shift).ok()?;
         if value == 0.0 {
             return Some(0.0);
         }
@@ -575,6 +601,48 @@ mod tests {
                 }
             }
             assert!(wide_cases > 250, "D = {D}: only {wide_cases} cases fit");
+        }
+        run::<2>();
+        run::<4>();
+        run::<6>();
+        run::<8>();
+    }
+
+    /// A point with bits below the vertices' column grid (raw data tested against a facet of
+    /// coarser vertices) is decided by the cached plane in finer units, not refused: the sign
+    /// and the distance agree with `BigInt`'s on points on, near and off the plane.
+    #[test]
+    fn points_off_the_column_grid_are_decided() {
+        fn run<const D: usize>() {
+            let mut rng = Rng::new(303 + D as u64);
+            let mut decided = 0;
+            for case in 0..200 {
+                // Vertices on the integer grid of a few bits, so every column unit is ≥ 1/2.
+                let vertices: [[f64; D]; D] = std::array::from_fn(|_| {
+                    std::array::from_fn(|_| (rng.below(9) as f64 - 4.0) / 2.0)
+                });
+                let Some(plane) = ExactPlane::new(&vertices) else {
+                    continue;
+                };
+                // On the plane (the vertices' midpoint), then moved by 2^-k in one coordinate:
+                // below every column's unit for k ≥ 2.
+                let k = 2 + rng.below(60) as i32;
+                let mut p: [f64; D] =
+                    std::array::from_fn(|c| 0.5 * (vertices[0][c] + vertices[1][c]));
+                p[case % D] += 2f64.powi(-k) * if case % 3 == 0 { -1.0 } else { 1.0 };
+                let sign = plane.side(&p).expect("an off-grid point within range is decided");
+                assert_eq!(sign, orientation_big(&vertices, &p), "D = {D}, case {case}");
+                if sign != Sign::Zero {
+                    let want = crate::predicates::exact::distance_big(&vertices, &p);
+                    let got = plane.distance(&p).expect("decided above");
+                    assert!(
+                        (got - want).abs() <= 4.0 * f64::EPSILON * want.abs(),
+                        "D = {D}, case {case}: {got:e} vs {want:e}"
+                    );
+                    decided += 1;
+                }
+            }
+            assert!(decided > 50, "D = {D}: only {decided} off-grid points off the plane");
         }
         run::<2>();
         run::<4>();

@@ -1,0 +1,89 @@
+//! A profiling target: one of `pqh bench hull`'s grasp rows alone, run over and over, so that
+//! `perf record` sees only that call (the bench also runs Qhull and, untimed, `Hull::check`).
+//!
+//! ```sh
+//! cargo build --release --example profile_hull
+//! perf record -e cpu-clock -g ./target/release/examples/profile_hull minkowski-hull 8 5
+//! perf report --no-children
+//! ```
+//!
+//! Arguments: the row (`wrenches-hull`, `wrenches-volume`: 4 contacts; `minkowski-hull`,
+//! `minkowski-qinf`: the materialised sum of 3 contacts, Q∞ by the full method), cone edges (8),
+//! rounds (5). The grasp is the suite's (`pqhull_cli::bench::hull::grasp_for`, seed 1). Prints
+//! the best and mean time per call and the hull's facets.
+
+use pqhull::grasp::metrics::gws_volume;
+use pqhull::grasp::{Evaluator, Method, Metric};
+use pqhull::hull::Hull;
+use pqhull_cli::bench::hull::{grasp_for, minkowski_sum};
+use std::time::Instant;
+
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let usage = "usage: profile_hull wrenches-hull|wrenches-volume|minkowski-hull|minkowski-qinf \
+                 [edges] [rounds]";
+    let row = args.first().map(String::as_str).unwrap_or("");
+    let number = |i: usize, default: usize| -> usize {
+        args.get(i).map_or(default, |s| {
+            s.parse().unwrap_or_else(|_| {
+                eprintln!("{usage}: not a number: {s}");
+                std::process::exit(2);
+            })
+        })
+    };
+    let (edges, rounds) = (number(1, 8), number(2, 5).max(1));
+    let (contacts, full_sum) = match row {
+        "wrenches-hull" | "wrenches-volume" => (4, false),
+        "minkowski-hull" | "minkowski-qinf" => (3, true),
+        _ => {
+            eprintln!("{usage}");
+            std::process::exit(2);
+        }
+    };
+    let (grasp, _) = grasp_for(1, contacts, edges, full_sum);
+    let points = if full_sum {
+        minkowski_sum(&grasp)
+    } else {
+        grasp.wrenches()
+    };
+    let mut evaluator = Evaluator::new(
+        Metric::QInf {
+            with_zero_wrench: false,
+        },
+        Method::Full,
+        None,
+    )
+    .expect("Q∞ by the full method");
+    let (mut best, mut total, mut facets) = (f64::INFINITY, 0.0, 0usize);
+    for _ in 0..rounds {
+        let started = Instant::now();
+        facets = match row {
+            "wrenches-hull" | "minkowski-hull" => Hull::try_new(&points)
+                .map(|h| {
+                    eprintln!("{:?}, {} final facets", h.stats(), h.facet_count());
+                    h.facet_count()
+                })
+                .unwrap_or(0),
+            "wrenches-volume" => {
+                std::hint::black_box(gws_volume(&grasp).ok());
+                0
+            }
+            _ => evaluator
+                .evaluate(&grasp)
+                .map(|q| {
+                    eprintln!("{:?}", q.stats);
+                    q.stats.facets_created
+                })
+                .unwrap_or(0),
+        };
+        let ms = started.elapsed().as_secs_f64() * 1e3;
+        best = best.min(ms);
+        total += ms;
+    }
+    println!(
+        "{row} {contacts}x{edges} ({} points): best {best:.3} ms, mean {:.3} ms over {rounds}; \
+         {facets} facets (created, for minkowski-qinf)",
+        points.len(),
+        total / rounds as f64
+    );
+}
