@@ -630,7 +630,9 @@ mod tests {
                 let mut p: [f64; D] =
                     std::array::from_fn(|c| 0.5 * (vertices[0][c] + vertices[1][c]));
                 p[case % D] += 2f64.powi(-k) * if case % 3 == 0 { -1.0 } else { 1.0 };
-                let sign = plane.side(&p).expect("an off-grid point within range is decided");
+                let sign = plane
+                    .side(&p)
+                    .expect("an off-grid point within range is decided");
                 assert_eq!(sign, orientation_big(&vertices, &p), "D = {D}, case {case}");
                 if sign != Sign::Zero {
                     let want = crate::predicates::exact::distance_big(&vertices, &p);
@@ -642,7 +644,10 @@ mod tests {
                     decided += 1;
                 }
             }
-            assert!(decided > 50, "D = {D}: only {decided} off-grid points off the plane");
+            assert!(
+                decided > 50,
+                "D = {D}: only {decided} off-grid points off the plane"
+            );
         }
         run::<2>();
         run::<4>();
