@@ -131,7 +131,8 @@ pub(in crate::grasp) struct Buffers {
 
 /// The hull of `points` grown by `strategy`, in `hull`'s arena. `flats`, when given, names the
 /// contact of every point: each contact's points must lie *exactly* in one 2-D affine plane, as
-/// snapped friction pyramids do (see [`Hull::rebuild_with_flats`]).
+/// snapped friction pyramids do (see [`Hull::rebuild_with_flats`]). `keep_coplanar`: see
+/// `Hull::keep_coplanar_facets` (only for a hull read for its facets' planes alone).
 ///
 /// # Errors
 /// As [`Hull::rebuild_with_strategy`].
@@ -140,8 +141,10 @@ pub(in crate::grasp) fn build_hull<'h, S: Strategy<6>>(
     points: &[[f64; 6]],
     flats: Option<&[u32]>,
     strategy: S,
+    keep_coplanar: bool,
 ) -> Result<(&'h Hull<6>, S::Output), HullError> {
     let h = hull.get_or_insert_with(Hull::empty);
+    h.keep_coplanar_facets(keep_coplanar);
     let output = match flats {
         Some(contact_of) => h.rebuild_with_trusted_flats(points, contact_of, 2, strategy)?,
         None => h.rebuild_with_strategy(points, strategy)?,

@@ -56,6 +56,7 @@ impl<const D: usize> Hull<D> {
             partition_farthest: false,
             start: None,
             trace: None,
+            keep_coplanar: false,
         }
     }
 

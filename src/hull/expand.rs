@@ -246,6 +246,7 @@ impl<const D: usize> Hull<D> {
     fn collect_visible(&mut self, start: FacetId, p: u32) {
         self.epoch = self.epoch.wrapping_add(1);
         let epoch = self.epoch;
+        let keep_coplanar = self.keep_coplanar;
         let scratch = &mut self.scratch;
         scratch.removed.clear();
         scratch.horizon.clear();
@@ -272,7 +273,13 @@ impl<const D: usize> Hull<D> {
                     } else {
                         self.side_of_index(n, p)
                     };
-                    let visible = sign != Sign::Negative;
+                    // A facet whose plane holds `p` goes with the visible ones unless kept
+                    // (`Hull::keep_coplanar_facets`).
+                    let visible = if keep_coplanar {
+                        sign == Sign::Positive
+                    } else {
+                        sign != Sign::Negative
+                    };
                     let neighbor = &mut self.facets[n.index()];
                     neighbor.mark = epoch;
                     neighbor.visible = visible;
@@ -303,8 +310,17 @@ impl<const D: usize> Hull<D> {
             vertices[i] = p;
             let mut neighbors = [FacetId::NONE; D];
             neighbors[i] = outer;
-            // With `p` on the removed facet's plane, the new facet lies in that hyperplane.
-            let region = old.touching.then_some(visible);
+            // With `p` on the removed facet's plane, the new facet lies in that hyperplane; with
+            // `p` on the plane of a kept neighbour (tested in `collect_visible`, so marked in
+            // this epoch), in that one.
+            let kept = &self.facets[outer.index()];
+            let region = if old.touching {
+                Some(visible)
+            } else if kept.touching && kept.mark == self.epoch {
+                Some(outer)
+            } else {
+                None
+            };
             let new = self.push_facet(vertices, neighbors, region);
             self.scratch.created.push(new);
             let back = self.facets[outer.index()]
@@ -443,5 +459,165 @@ impl<const D: usize> Hull<D> {
         self.scratch.orphans = orphans;
         self.scratch.candidates = candidates;
         self.scratch.representatives = representatives;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::geometry::Rng;
+    use crate::{FarthestPoint, Hull};
+
+    /// The hull of `points` with coplanar facets kept (`Hull::keep_coplanar_facets`), checked.
+    fn kept<const D: usize>(points: &[[f64; D]]) -> Hull<D> {
+        let mut hull = Hull::empty();
+        hull.keep_coplanar_facets(true);
+        hull.rebuild_with_strategy(points, FarthestPoint::new())
+            .unwrap();
+        hull.check().unwrap();
+        hull
+    }
+
+    /// Every facet of `hull` lies in one of `planes` (unit normal, offset), every point of
+    /// `extreme` is a vertex, and the volume is `volume`: the truth of an input whose hull the
+    /// test knows.
+    fn assert_is<const D: usize>(
+        hull: &Hull<D>,
+        planes: &[([f64; D], f64)],
+        extreme: &[usize],
+        volume: f64,
+        what: &str,
+    ) {
+        for (id, facet) in hull.facets() {
+            let (n, c) = (facet.normal(), facet.offset());
+            assert!(
+                planes.iter().any(|(m, d)| {
+                    (c - d).abs() <= 1e-12 && n.iter().zip(m).all(|(a, b)| (a - b).abs() <= 1e-12)
+                }),
+                "{what}: facet {} in no face's plane: {n:?}, {c}",
+                id.index()
+            );
+        }
+        let vertices = hull.vertex_indices();
+        for i in extreme {
+            assert!(
+                vertices.contains(i),
+                "{what}: extreme point {i} is no vertex"
+            );
+        }
+        assert!(
+            (hull.volume() - volume).abs() <= 1e-12 * volume,
+            "{what}: volume {} instead of {volume}",
+            hull.volume()
+        );
+    }
+
+    /// The cube [−1, 1]^D's facet planes.
+    fn cube_planes<const D: usize>() -> Vec<([f64; D], f64)> {
+        (0..2 * D)
+            .map(|i| {
+                let mut n = [0.0; D];
+                n[i / 2] = if i % 2 == 0 { 1.0 } else { -1.0 };
+                (n, 1.0)
+            })
+            .collect()
+    }
+
+    /// Cube corners, points on the cube's faces and inside it: every face holds many points
+    /// exactly, the case the kept facets are for; the hull is the cube whatever stays.
+    fn cube_case<const D: usize>(seed: u64) {
+        let mut rng = Rng::new(seed);
+        let mut points: Vec<[f64; D]> = (0..1usize << D)
+            .map(|i| std::array::from_fn(|c| if i >> c & 1 == 1 { 1.0 } else { -1.0 }))
+            .collect();
+        let corners: Vec<usize> = (0..points.len()).collect();
+        for k in 0..300 {
+            let mut p: [f64; D] = std::array::from_fn(|_| rng.uniform_in(-1.0, 1.0));
+            if k % 2 == 0 {
+                // On a face: one coordinate at ±1.
+                p[k % D] = if k % 4 == 0 { 1.0 } else { -1.0 };
+            }
+            points.push(p);
+        }
+        // Corners last as well as first, so that face points come in before some corners.
+        points.rotate_left(1 << (D - 1));
+        let corners: Vec<usize> = corners
+            .iter()
+            .map(|&i| (i + points.len() - (1 << (D - 1))) % points.len())
+            .collect();
+        let hull = kept(&points);
+        assert_is(
+            &hull,
+            &cube_planes::<D>(),
+            &corners,
+            2f64.powi(D as i32),
+            &format!("cube, D = {D}"),
+        );
+    }
+
+    #[test]
+    fn kept_coplanar_facets_give_the_cube() {
+        cube_case::<3>(1);
+        cube_case::<4>(2);
+        cube_case::<5>(3);
+        cube_case::<6>(4);
+    }
+
+    /// The Minkowski sum of three polygons in the coordinate planes (x0, x1), (x2, x3), (x4, x5)
+    /// of 6-D, every point a sum of one vertex of each, on a dyadic grid so that the sums are
+    /// exact: the product of the polygons, whose facets are an edge of one times the other two
+    /// (2k² points each), and whose volume is the product of their areas.
+    #[test]
+    fn kept_coplanar_facets_give_a_product_of_polygons() {
+        for k in [4usize, 6, 8] {
+            // A regular k-gon's vertices rounded to multiples of 2^-20, each polygon turned.
+            let polygon = |turn: f64| -> Vec<[f64; 2]> {
+                (0..k)
+                    .map(|j| {
+                        let a = turn + std::f64::consts::TAU * j as f64 / k as f64;
+                        [a.cos(), a.sin()].map(|x| (x * 1048576.0).round() / 1048576.0)
+                    })
+                    .collect()
+            };
+            let polygons = [polygon(0.1), polygon(0.7), polygon(1.9)];
+            let mut points = Vec::new();
+            for a in &polygons[0] {
+                for b in &polygons[1] {
+                    for c in &polygons[2] {
+                        points.push([a[0], a[1], b[0], b[1], c[0], c[1]]);
+                    }
+                }
+            }
+            // Each polygon's area (shoelace) and its edges' outward planes in its two axes.
+            let mut volume = 1.0;
+            let mut planes = Vec::new();
+            for (i, poly) in polygons.iter().enumerate() {
+                let mut area = 0.0;
+                for j in 0..k {
+                    let (p, q) = (poly[j], poly[(j + 1) % k]);
+                    area += 0.5 * (p[0] * q[1] - p[1] * q[0]);
+                    let (ex, ey) = (q[0] - p[0], q[1] - p[1]);
+                    let length = (ex * ex + ey * ey).sqrt();
+                    let mut n = [0.0; 6];
+                    n[2 * i] = ey / length;
+                    n[2 * i + 1] = -ex / length;
+                    planes.push((n, n[2 * i] * p[0] + n[2 * i + 1] * p[1]));
+                }
+                volume *= area;
+            }
+            let hull = kept(&points);
+            let all: Vec<usize> = (0..points.len()).collect();
+            assert_is(&hull, &planes, &all, volume, &format!("product, k = {k}"));
+            // And far fewer facets created than when coplanar facets go.
+            let mut plain = Hull::empty();
+            plain
+                .rebuild_with_strategy(&points, FarthestPoint::new())
+                .unwrap();
+            assert!(
+                hull.stats().facets_created < plain.stats().facets_created,
+                "k = {k}: {} facets created kept, {} removed",
+                hull.stats().facets_created,
+                plain.stats().facets_created
+            );
+        }
     }
 }

@@ -98,6 +98,9 @@ pub struct Hull<const D: usize> {
     /// The run being recorded, if any ([`Hull::try_with_strategy_traced`]); `None` costs each
     /// trace hook one branch.
     trace: Option<Box<Trace<D>>>,
+    /// Whether a facet whose plane holds the new point exactly stays (see
+    /// [`keep_coplanar_facets`](Self::keep_coplanar_facets)); `false` for every public build.
+    keep_coplanar: bool,
 }
 
 impl<const D: usize> Hull<D> {
@@ -255,6 +258,25 @@ impl<const D: usize> Hull<D> {
             start[..=D].copy_from_slice(simplex);
             start
         });
+    }
+
+    /// Whether the following builds keep a facet whose hyperplane holds the new point exactly,
+    /// instead of removing it with the visible ones (the default, and what every public build
+    /// does).
+    ///
+    /// Why: a coplanar facet removed and coned again from the new point is what keeps points
+    /// that are not extreme out of the vertices (a point inside a flat face stops being a vertex
+    /// when a later point on that face is added). But on input with large exactly coplanar
+    /// regions — the snapped Minkowski sum of Q∞ by the full method, a product of polygons
+    /// whose every facet holds 2k² points — every point on a region's plane then removes and
+    /// cones again the whole region: 1.74 million facets created for 512 points at 3 contacts ×
+    /// 8 edges, against 52 thousand when the region stays (`cli/examples/profile_hull.rs`).
+    /// Kept, the hull is the same polytope and every facet lies in one of its facets'
+    /// hyperplanes (`Hull::check` holds), but a vertex may be a point on a face that is not
+    /// extreme: for callers that read only facets' planes (a distance, a nearest facet), never
+    /// the vertex set.
+    pub(crate) fn keep_coplanar_facets(&mut self, keep: bool) {
+        self.keep_coplanar = keep;
     }
 
     /// Makes every live facet's normal precise (see [`Facet::normal_is_precise`]): an exact

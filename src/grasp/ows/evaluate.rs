@@ -373,7 +373,7 @@ fn partial<S: crate::Strategy<6, Output = crate::strategy::OwsResult<6>>>(
     hull: &mut Option<Hull<6>>,
     ties: Option<&SupportIndex<6>>,
 ) -> Result<Option<OwsQuality>, QualityError> {
-    match build_hull(hull, wrenches, pyramids, strategy) {
+    match build_hull(hull, wrenches, pyramids, strategy, false) {
         Ok((h, result)) => Ok(Some(OwsQuality {
             // The strategy has a value exactly when the origin is strictly inside the hull.
             force_closure: result.value.is_some(),
@@ -401,7 +401,7 @@ fn brute_force(
     space: &ObjectWrenchSpace,
     hull: &mut Option<Hull<6>>,
 ) -> Result<Option<OwsQuality>, QualityError> {
-    let hull = match build_hull(hull, wrenches, pyramids, crate::FarthestPoint::new()) {
+    let hull = match build_hull(hull, wrenches, pyramids, crate::FarthestPoint::new(), false) {
         Ok((hull, ())) => hull,
         Err(HullError::AffinelyDependent { .. } | HullError::TooFewPoints { .. }) => {
             return Ok(None);

@@ -94,9 +94,12 @@ pub(in crate::grasp) fn nearest_hull<'h>(
     nearest: &mut ClosestToOrigin<6>,
     expansion: Expansion,
 ) -> Result<Built<'h>, HullError> {
+    // The full hull is read for its nearest facet alone: its coplanar facets may stay
+    // (`Hull::keep_coplanar_facets`), which on a snapped Minkowski sum saves most of the build.
+    // The partial hull keeps the default.
     let built = match expansion {
-        Expansion::Partial => build_hull(hull, points, flats, nearest),
-        Expansion::Full => build_hull(hull, points, flats, Complete::new(nearest)),
+        Expansion::Partial => build_hull(hull, points, flats, nearest, false),
+        Expansion::Full => build_hull(hull, points, flats, Complete::new(nearest), true),
     };
     match built {
         Ok(built) => Ok(Some(built)),
