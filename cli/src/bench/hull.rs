@@ -697,7 +697,7 @@ pub fn minkowski_sum(grasp: &Grasp) -> Vec<[f64; 6]> {
 
 /// The first of [`GRASP_CANDIDATES`] random bar grasps of `contacts` fingers and `edges` cone
 /// edges whose Q1 (partial method) is force closure — and, with `full_sum`, whose plain
-/// Minkowski sum spans 6-D ([`sum_spans_6d`]) — and `true`; the first grasp and `false` when
+/// Minkowski sum spans 6-D (`sum_spans_6d`, private) — and `true`; the first grasp and `false` when
 /// none is. Public for the profiling example (`cli/examples/profile_hull.rs`).
 pub fn grasp_for(seed: u64, contacts: usize, edges: usize, full_sum: bool) -> (Grasp, bool) {
     let friction = FrictionModel::try_new(BAR_FRICTION, edges).expect("the suite's cone edges");
