@@ -27,9 +27,9 @@ pub(in crate::hull) struct Scratch<const D: usize> {
     stack: Vec<FacetId>,
     /// The facets around one facet, breadth first, for [`StrategyHooks::claim_beyond`](crate::hull::StrategyHooks::claim_beyond).
     ring: Vec<FacetId>,
-    /// (hash of the coordinates, input index), sorted, and each input's first copy: see
-    /// [`Hull::initialise`](super::Hull).
-    pub(in crate::hull) keys: Vec<(u64, u32)>,
+    /// Open-addressing table of first copies by coordinate hash, and each input's first copy:
+    /// see [`Hull::initialise`](super::Hull).
+    pub(in crate::hull) copies: Vec<u32>,
     pub(in crate::hull) first_copy: Vec<u32>,
     /// Tests only: ridge keys that collide all the time, so that the confirming pairing pass
     /// runs.

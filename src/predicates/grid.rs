@@ -51,7 +51,20 @@ impl<const D: usize> ExactGrid<D> {
         let first = points.first()?;
         let (mut low, mut high) = (*first, *first);
         let mut exponent = i32::MAX;
-        for p in points {
+        for (i, p) in points.iter().enumerate() {
+            // Later points only lower the exponent and widen the spans, so a bound already too
+            // large stays so: raw floating-point input (lowest bits near 2^−53) is turned away
+            // after the first block instead of a pass over every coordinate.
+            if i % 64 == 63 && exponent != i32::MAX {
+                let so_far = ExactGrid {
+                    exponent,
+                    low,
+                    high,
+                };
+                if !so_far.holds() {
+                    return None;
+                }
+            }
             for (j, &x) in p.iter().enumerate() {
                 if x.is_nan() || x.abs() > 1.0 {
                     return None;
