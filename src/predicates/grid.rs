@@ -21,7 +21,7 @@ const TWO_52: f64 = 4_503_599_627_370_496.0;
 /// coarser unit and bounded by the same permanent). Coordinates in `[−1, 1]` give `g ≤ 0`, and
 /// `g·D ≥ −1000` keeps every unit a normal number (no underflow).
 ///
-/// Checking this costs one pass over the input; in exchange, every side test on such input is a
+/// Checking this costs one pass over the input (less when the bound fails early: see [`of`](Self::of)); in exchange, every side test on such input is a
 /// D-term dot product and a sign, with no error bound and no fallback, which is where exactly
 /// degenerate input (points on facet planes, whose determinants vanish) spent its time.
 ///
