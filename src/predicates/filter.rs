@@ -290,27 +290,35 @@ impl<const D: usize> FacetPlane<D> {
         } else if -value > bound {
             Sign::Negative
         } else {
-            let vertices = vertices();
-            if self.value_is_exact(&vertices, p) {
-                return exact::sign_of(value);
-            }
-            if D >= 4 && p.iter().all(|x| x.is_finite()) {
-                let refined = self.refined();
-                let dd = refined
-                    .dd
-                    .get_or_init(|| DdPlane::new(&vertices, &self.permanents));
-                if let Some(sign) = dd
-                    .as_ref()
-                    .and_then(|plane| plane.sign(&self.base, p, self.slack))
-                {
-                    return sign;
-                }
-                if let Some(sign) = self.exact_plane(&vertices).and_then(|plane| plane.side(p)) {
-                    return sign;
-                }
-            }
-            exact::orientation(&vertices, p)
+            self.side_beyond_filter(value, p, &vertices())
         }
+    }
+
+    /// The stages after the filter (see [`side`](Self::side)), out of line: compiled once per
+    /// dimension rather than into every caller's loop, so that the callers' hot paths stay
+    /// small and their inlining does not change with the stages (a build whose inlining of
+    /// the wide-integer expansion changed ran the raw wrench hulls a quarter slower).
+    #[inline(never)]
+    fn side_beyond_filter(&self, value: f64, p: &[f64; D], vertices: &[[f64; D]; D]) -> Sign {
+        if self.value_is_exact(vertices, p) {
+            return exact::sign_of(value);
+        }
+        if D >= 4 && p.iter().all(|x| x.is_finite()) {
+            let refined = self.refined();
+            let dd = refined
+                .dd
+                .get_or_init(|| DdPlane::new(vertices, &self.permanents));
+            if let Some(sign) = dd
+                .as_ref()
+                .and_then(|plane| plane.sign(&self.base, p, self.slack))
+            {
+                return sign;
+            }
+            if let Some(sign) = self.exact_plane(vertices).and_then(|plane| plane.side(p)) {
+                return sign;
+            }
+        }
+        exact::orientation(vertices, p)
     }
 
     /// Whether `evaluate(p)`'s value is exactly the determinant: true when every coordinate lies on

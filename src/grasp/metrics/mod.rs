@@ -33,7 +33,7 @@
 use super::quality::QualityError;
 use super::{FrictionModel, Grasp, GraspError};
 use crate::geometry::vector::cross;
-use crate::hull::{Hull, HullError, Stats};
+use crate::hull::{FarthestPoint, Hull, HullError, Stats, Step, Strategy};
 use std::f64::consts::PI;
 use std::time::Instant;
 
@@ -64,11 +64,40 @@ pub fn gws_volume(grasp: &Grasp) -> Result<f64, QualityError> {
     Ok(volume_and_work(grasp)?.0)
 }
 
+/// The full hull (`FarthestPoint`) without the final refinement of thin facets' normals:
+/// [`Hull::volume`] reads each facet's cofactors at the interior point, never its normal, so the
+/// volume is the same to the bit, and on raw wrench sets, where half the facets are thin, the
+/// refinement was a fifth of the build (docs/benchmarks.md, "Off-grid points on the exact
+/// plane").
+struct VolumeHull(FarthestPoint);
+
+impl Strategy<6> for VolumeHull {
+    type Output = ();
+
+    fn start(&mut self, hull: &Hull<6>) {
+        Strategy::<6>::start(&mut self.0, hull);
+    }
+
+    fn step(&mut self, hull: &mut Hull<6>) -> Step {
+        self.0.step(hull)
+    }
+
+    fn finish(self, _hull: &Hull<6>) {}
+
+    fn refines_all_normals(&self) -> bool {
+        false
+    }
+
+    fn partitions_to_farthest(&self) -> bool {
+        Strategy::<6>::partitions_to_farthest(&self.0)
+    }
+}
+
 /// [`gws_volume`] and the full hull's work.
 pub(in crate::grasp) fn volume_and_work(grasp: &Grasp) -> Result<(f64, Stats), QualityError> {
     let started = Instant::now();
-    match Hull::try_new(&grasp.wrenches()) {
-        Ok(hull) => {
+    match Hull::try_with_strategy(&grasp.wrenches(), VolumeHull(FarthestPoint::new())) {
+        Ok((hull, ())) => {
             let volume = hull.volume();
             if volume == f64::INFINITY {
                 return Err(QualityError::VolumeOverflow);
