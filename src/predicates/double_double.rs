@@ -133,6 +133,14 @@ impl MinorScalar for Dd {
         let term = mul(entry, minor);
         add(acc, if negative { term.neg() } else { term })
     }
+    /// The term alone: [`add`] of zero and a normalised double-double (which [`mul`] returns)
+    /// is that double-double (up to the sign of a zero), so this is `accumulate(ZERO, …)` with
+    /// no rounding skipped — the error model is unchanged — at two thirds of its cost.
+    #[inline(always)]
+    fn first(entry: Self, minor: Self, negative: bool) -> Self {
+        let term = mul(entry, minor);
+        if negative { term.neg() } else { term }
+    }
 }
 
 /// A facet's hyperplane in double-double: the cofactors of the last row of

@@ -22,6 +22,13 @@ pub(in crate::predicates) trait MinorScalar: Copy {
     const ZERO: Self;
     /// `acc − entry·minor` if `negative`, else `acc + entry·minor`.
     fn accumulate(acc: Self, entry: Self, minor: Self, negative: bool) -> Self;
+    /// [`accumulate`](Self::accumulate) onto [`ZERO`](Self::ZERO): the first term of an
+    /// expansion. A scalar whose addition of zero is exact but not free (double-double's
+    /// costs a third of an accumulation) returns the term itself.
+    #[inline(always)]
+    fn first(entry: Self, minor: Self, negative: bool) -> Self {
+        Self::accumulate(Self::ZERO, entry, minor, negative)
+    }
 }
 
 /// The (D−1)×(D−1) minors of `rows[1..D]` omitting each column j: `minor[S]` is the determinant
@@ -43,8 +50,11 @@ pub(in crate::predicates) fn cofactor_minors<T: MinorScalar, const D: usize, con
         let row = &rows[k];
         // Sign of column position t in S is (−1)^((k−1)+t).
         let mut negative = (k - 1) % 2 == 1;
-        let mut m = T::ZERO;
         let mut bits = mask;
+        let j = bits.trailing_zeros() as usize;
+        bits &= bits - 1;
+        let mut m = T::first(row[j], minor[mask & !(1 << j)], negative);
+        negative = !negative;
         while bits != 0 {
             let j = bits.trailing_zeros() as usize;
             bits &= bits - 1;
