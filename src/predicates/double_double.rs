@@ -262,6 +262,28 @@ impl<const D: usize> DdPlane<D> {
 mod tests {
     use super::*;
 
+    /// `first` is `accumulate` onto zero, to the last bit of both parts (the minors' claim that
+    /// skipping the addition changes no number), on terms of every magnitude and sign.
+    #[test]
+    fn the_first_term_is_the_accumulation_onto_zero() {
+        let mut rng = crate::geometry::Rng::new(17);
+        for case in 0..20_000 {
+            let dd = |rng: &mut crate::geometry::Rng| {
+                let hi = rng.uniform_in(-1.0, 1.0) * 2f64.powi(rng.below(120) as i32 - 60);
+                two_sum(hi, hi * rng.uniform_in(-1.0, 1.0) * 2f64.powi(-60))
+            };
+            let (entry, minor) = (dd(&mut rng), dd(&mut rng));
+            let negative = case % 2 == 0;
+            let skipped = Dd::first(entry, minor, negative);
+            let added = Dd::accumulate(Dd::ZERO, entry, minor, negative);
+            assert_eq!(
+                (skipped.hi.to_bits(), skipped.lo.to_bits()),
+                (added.hi.to_bits(), added.lo.to_bits()),
+                "case {case}: {entry:?} × {minor:?}"
+            );
+        }
+    }
+
     #[test]
     fn two_prod_and_two_sum_are_exact() {
         // (1 + 2^-30)² = 1 + 2^-29 + 2^-60: the last term is the error of the rounded product.

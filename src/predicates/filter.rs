@@ -358,11 +358,12 @@ impl<const D: usize> FacetPlane<D> {
         // The grid of all the entries is no coarser than `p`'s alone, so a permanent too large
         // in `p`'s units is too large in theirs: a rejection in D bit scans, which is every
         // slow test on raw floating-point data (their lowest bits lie near 2^-53 of the largest).
-        if !fits(grid_exponent(p.iter())) {
+        let own = grid_exponent(p.iter());
+        if !fits(own) {
             return false;
         }
         // Computed here, on the slow path, rather than cached per facet: it costs D² bit scans.
-        fits(grid_exponent(vertices.iter().flatten().chain(p.iter())))
+        fits(own.min(grid_exponent(vertices.iter().flatten())))
     }
 
     /// Per-component error coefficients: `|Ĉ_j − C_j| ≤ cofactor_errors()[j]` for the computed
