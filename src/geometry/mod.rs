@@ -16,6 +16,7 @@
 
 pub mod ellipsoid;
 mod gjk;
+pub mod gram;
 mod nearest;
 mod rng;
 mod support;

@@ -20,6 +20,7 @@
 //! measured on the wrenches with a rounding bound, so it holds whatever the eigenvector's
 //! accuracy.
 
+use crate::geometry::gram::positive_definite_after_shift;
 use faer::diag::Diag;
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::evd::{ComputeEigenvectors, self_adjoint_evd, self_adjoint_evd_scratch};
@@ -160,8 +161,8 @@ impl Flatness {
     /// backward error `‖E‖₂ ≤ γ₇·tr` (`tr` the trace, which bounds `‖|L||Lᵀ|‖`); the computed
     /// Gram matrix is within `γ_N·tr` of the exact one (`N = count` products summed per entry).
     /// So the exact smallest eigenvalue is at least `t − (γ₇ + γ_N)·tr ≥ 4N·limit²`, and for every
-    /// unit `u`, `max_w (u·w)² ≥ Σ_w (u·w)² / N ≥ 4·limit²`. A 6 × 6 factorisation written out:
-    /// faer's needs a workspace and dispatch that cost more than the dozen dot products here.
+    /// unit `u`, `max_w (u·w)² ≥ Σ_w (u·w)² / N ≥ 4·limit²` (see
+    /// [`positive_definite_after_shift`]).
     fn far_from_flat(&self, limit: f64, count: usize) -> bool {
         let n = count as f64;
         let trace: f64 = (0..6).map(|a| self.gram[(a, a)]).sum();
@@ -172,24 +173,9 @@ impl Flatness {
         if !(shift.is_finite() && shift < trace) {
             return false;
         }
-        let mut l = [[0.0f64; 6]; 6];
-        for j in 0..6 {
-            let (done, rest) = l.split_at_mut(j + 1);
-            let row = &mut done[j];
-            let d = self.gram[(j, j)] - shift - row[..j].iter().map(|x| x * x).sum::<f64>();
-            // NaN fails too.
-            if d.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
-                return false;
-            }
-            let pivot = d.sqrt();
-            row[j] = pivot;
-            for (offset, below) in rest.iter_mut().enumerate() {
-                let i = j + 1 + offset;
-                let dot: f64 = below[..j].iter().zip(&row[..j]).map(|(a, b)| a * b).sum();
-                below[j] = (self.gram[(i, j)] - dot) / pivot;
-            }
-        }
-        true
+        let gram: [[f64; 6]; 6] =
+            std::array::from_fn(|a| std::array::from_fn(|b| self.gram[(a, b)]));
+        positive_definite_after_shift(&gram, shift)
     }
 
     /// The eigensolver's slab for the Gram matrix in `gram`, measured on `points`.

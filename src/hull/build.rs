@@ -57,6 +57,9 @@ impl<const D: usize> Hull<D> {
             start: None,
             trace: None,
             keep_coplanar: false,
+            keeping: false,
+            prune_pending: false,
+            coplanar_kept: 0,
         }
     }
 
@@ -85,6 +88,9 @@ impl<const D: usize> Hull<D> {
         self.epoch = 0;
         self.stats = Stats::default();
         self.trace = None;
+        self.keeping = self.keep_coplanar;
+        self.prune_pending = false;
+        self.coplanar_kept = 0;
         self.points.clear();
         if !(MIN_DIMENSION..=MAX_DIMENSION).contains(&D) {
             return Err(HullError::DimensionOutOfRange { dimension: D });
@@ -121,7 +127,21 @@ impl<const D: usize> Hull<D> {
             *s = self.scratch.first_copy[*s] as usize;
         }
         let simplex = &simplex[..=D];
+        let all = self.found(simplex);
+        let all = &all[..=D];
+        self.stats.points_processed = D + 1;
+        for p in 0..self.points.len() as u32 {
+            if !simplex.contains(&(p as usize)) && self.scratch.first_copy[p as usize] == p {
+                self.assign(p, all);
+            }
+        }
+        Ok(())
+    }
 
+    /// Makes the initial simplex on the input points `simplex` (D + 1 affinely independent
+    /// indices, first copies) the hull: its D + 1 facets, outward, linked, with empty outside
+    /// sets, in the first free slots. Returns the facets' ids (the first D + 1 entries).
+    pub(in crate::hull) fn found(&mut self, simplex: &[usize]) -> [FacetId; MAX_SIMPLEX] {
         let mut interior = [0.0; D];
         for &s in simplex {
             for (c, x) in interior.iter_mut().zip(&self.points[s]) {
@@ -148,16 +168,7 @@ impl<const D: usize> Hull<D> {
             let id = self.push_facet(vertices, neighbors, None);
             debug_assert_eq!(id.index(), first + k);
         }
-        self.stats.points_processed = D + 1;
-
-        let all: [FacetId; MAX_SIMPLEX] = std::array::from_fn(|k| FacetId((first + k) as u32));
-        let all = &all[..=D];
-        for p in 0..self.points.len() as u32 {
-            if !simplex.contains(&(p as usize)) && self.scratch.first_copy[p as usize] == p {
-                self.assign(p, all);
-            }
-        }
-        Ok(())
+        std::array::from_fn(|k| FacetId((first + k.min(D)) as u32))
     }
 
     /// Whether input `p` equals an input with a smaller index (so never enters an outside set).
@@ -586,7 +597,9 @@ fn exact_power_of_two_scale<const D: usize>(points: &[[f64; D]]) -> f64 {
 ///
 /// The first D + 1 entries are the simplex ([`MAX_SIMPLEX`] slots). Fixed arrays, not vectors:
 /// a rebuilt hull (one per grasp in a batch) allocates nothing here.
-fn initial_simplex<const D: usize>(points: &[[f64; D]]) -> Result<[usize; MAX_SIMPLEX], HullError> {
+pub(in crate::hull) fn initial_simplex<const D: usize>(
+    points: &[[f64; D]],
+) -> Result<[usize; MAX_SIMPLEX], HullError> {
     if let Some(simplex) = greedy_simplex(points) {
         let mut vertices = [[0.0; D]; D];
         for (v, &s) in vertices.iter_mut().zip(&simplex) {

@@ -20,6 +20,8 @@ pub struct FarthestPoint {
     /// breadth-first order (as Qhull's facet list) creates 5–30 % fewer facets than depth-first
     /// in 3-D to 6-D (measured with `examples/compare_qhull.rs`).
     pending: std::collections::VecDeque<FacetId>,
+    /// Whether the first step (which starts the build's first phase) has run.
+    begun: bool,
 }
 
 impl FarthestPoint {
@@ -34,6 +36,7 @@ impl<const D: usize> Strategy<D> for FarthestPoint {
 
     fn start(&mut self, hull: &Hull<D>) {
         self.pending.clear();
+        self.begun = false;
         self.pending.extend(
             hull.facets()
                 .filter(|(_, f)| f.outside_len() > 0)
@@ -44,6 +47,10 @@ impl<const D: usize> Strategy<D> for FarthestPoint {
     fn step(&mut self, hull: &mut Hull<D>) -> Step {
         // A stale id (its slot since reused) is harmless here: any live facet with outside points
         // is a valid facet to expand.
+        if !self.begun {
+            self.begun = true;
+            hull.begin_full_build();
+        }
         while let Some(id) = self.pending.pop_front() {
             if hull.is_tracing() {
                 trace_choice(hull, id);
@@ -57,6 +64,15 @@ impl<const D: usize> Strategy<D> for FarthestPoint {
                 );
                 return Step::Continue;
             }
+        }
+        // The first phase kept coplanar facets: the second builds on its vertices (`coplanar.rs`).
+        if hull.end_first_phase() {
+            self.pending.extend(
+                hull.facets()
+                    .filter(|(_, f)| f.outside_len() > 0)
+                    .map(|(id, _)| id),
+            );
+            return Step::Continue;
         }
         hull.trace_stop(None, FarthestReason::Complete);
         Step::Stop

@@ -35,7 +35,10 @@ impl<const D: usize> sealed::Sealed for Hull<D> {}
 /// ```
 pub trait StrategyHooks<const D: usize>: sealed::Sealed {
     // Growing the hull.
-    /// Adds the point farthest beyond facet `id` to the hull.
+    /// Adds the point farthest beyond facet `id` to the hull: the farthest of its outside set,
+    /// or, when other facets share its hyperplane exactly (a coplanar region, as on boxes and
+    /// lattices), the farthest of all their outside sets (every one of them is beyond the same
+    /// plane, and the expansion removes them all).
     ///
     /// Returns `false` (and changes nothing) when the facet is not live or its outside set is
     /// empty. Afterwards [`StrategyHooks::last_removed`] and [`StrategyHooks::last_created`] list what changed.

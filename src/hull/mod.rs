@@ -19,6 +19,7 @@
 
 mod build;
 mod check;
+mod coplanar;
 mod error;
 mod expand;
 mod facet;
@@ -101,6 +102,14 @@ pub struct Hull<const D: usize> {
     /// Whether a facet whose plane holds the new point exactly stays (see
     /// [`keep_coplanar_facets`](Self::keep_coplanar_facets)); `false` for every public build.
     keep_coplanar: bool,
+    /// Whether the build under way keeps such facets: `keep_coplanar`, or a full build's first
+    /// phase (see `coplanar.rs`).
+    keeping: bool,
+    /// Whether the build under way is a full build's first phase, to be pruned to the extreme
+    /// points once complete (see `coplanar.rs`).
+    prune_pending: bool,
+    /// How many times this build kept a facet whose plane held the new point.
+    coplanar_kept: usize,
 }
 
 impl<const D: usize> Hull<D> {

@@ -29,7 +29,10 @@ pub struct Key {
 /// One step of a run.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Event<const D: usize> {
-    /// The initial simplex: D + 1 facets and the first outside sets. Always the first event.
+    /// The initial simplex: D + 1 facets and the first outside sets. Always the first event;
+    /// a full build whose first phase left vertices that are not extreme starts again on the
+    /// extreme ones with a second (after a [`Event::Note`] coded `second-phase`), which
+    /// replaces every facet.
     Initial {
         /// The simplex's facets.
         facets: Vec<FacetSnapshot<D>>,

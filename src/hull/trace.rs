@@ -127,6 +127,24 @@ impl<const D: usize> Hull<D> {
         }
     }
 
+    /// When a full build's second phase starts (see `coplanar.rs`): a note saying why, then the
+    /// new initial simplex, which a replay takes as a fresh start.
+    #[cold]
+    pub(super) fn record_second_phase(&mut self, removed: usize, extreme: usize) {
+        let facets = self.facets().map(|(id, _)| self.snapshot(id)).collect();
+        if let Some(trace) = &mut self.trace {
+            trace.events.push(Event::Note {
+                text: format!(
+                    "first phase (coplanar facets kept) complete: {removed} of its vertices lie \
+                     on a face and are not extreme; the hull again on the {extreme} extreme ones"
+                ),
+                code: "second-phase",
+                point: None,
+            });
+            trace.events.push(Event::Initial { facets });
+        }
+    }
+
     fn snapshot(&self, id: FacetId) -> FacetSnapshot<D> {
         let facet = self.facet(id);
         FacetSnapshot {

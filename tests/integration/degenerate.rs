@@ -230,3 +230,73 @@ fn declared_flats_are_checked() {
         .unwrap();
     hull.check().unwrap();
 }
+
+/// Whether the build ran a second phase (see `src/hull/coplanar.rs`): each phase processes its
+/// initial simplex's D + 1 points and one per expansion.
+fn two_phases<const D: usize>(hull: &Hull<D>) -> bool {
+    let stats = hull.stats();
+    match stats.points_processed - stats.expansions {
+        n if n == D + 1 => false,
+        n if n == 2 * (D + 1) => true,
+        n => panic!("{n} points processed beyond the expansions"),
+    }
+}
+
+/// A full build keeps coplanar facets in a first phase; when that leaves points on faces as
+/// vertices, a second phase builds on the extreme vertices alone. Cube corners with face centres
+/// and the 5-D grid {0, …, 3}^5 take the second phase; the answer is still the corners.
+#[test]
+fn the_second_phase_leaves_the_corners() {
+    fn corners<const D: usize>(n: usize) {
+        let points = generate::<D>(&Family::CubeCornersDiamond, n, 1);
+        let hull = Hull::try_new(&points).unwrap();
+        assert!(two_phases(&hull), "{D}-D corners: one phase");
+        hull.check().unwrap();
+        assert_eq!(hull.vertex_indices(), (0..1 << D).collect::<Vec<_>>());
+    }
+    corners::<3>(100);
+    corners::<4>(100);
+    corners::<5>(400);
+    corners::<6>(400);
+    let points = grid::<5>(4);
+    let hull = Hull::try_new(&points).unwrap();
+    assert!(two_phases(&hull), "5-D grid: one phase");
+    let vertices = hull.vertex_indices();
+    assert_eq!(vertices.len(), 32);
+    assert!(vertices.iter().all(|&v| is_corner(&points[v], 0.0, 3.0)));
+    // Points in general position never keep a coplanar facet: one phase.
+    let random = generate::<5>(&Family::UniformCube, 500, 9);
+    assert!(!two_phases(&Hull::try_new(&random).unwrap()));
+}
+
+/// Every vertex of the hull of an integer lattice (rbox `M`, many points on common faces) is
+/// extreme: it lies strictly beyond the hull of the other vertices (a separate build, without
+/// it), and every input point lies inside (`Hull::check`).
+#[test]
+fn lattice_vertices_are_extreme() {
+    fn run<const D: usize>(n: usize, seed: u64) {
+        let points = generate::<D>(&Family::IntegerLattice { half_width: 2 }, n, seed);
+        let hull = Hull::try_new(&points).unwrap();
+        hull.check().unwrap();
+        let vertices = hull.vertex_indices();
+        for &v in &vertices {
+            let others: Vec<[f64; D]> = vertices
+                .iter()
+                .filter(|&&w| w != v)
+                .map(|&w| points[w])
+                .collect();
+            let without = Hull::try_new(&others).unwrap();
+            assert!(
+                without
+                    .facets()
+                    .any(|(id, _)| without.side_of(id, &points[v])
+                        == pqhull::predicates::Sign::Positive),
+                "{D}-D lattice: vertex {v} {:?} is inside the others' hull",
+                points[v]
+            );
+        }
+    }
+    run::<3>(400, 1);
+    run::<4>(400, 2);
+    run::<5>(300, 3);
+}

@@ -227,6 +227,31 @@ fn six_d_traces_replay_to_the_hull() {
     every_strategy(&generate::<6>(&Family::UniformCube, 400, 8), 18);
 }
 
+/// A full build whose first phase leaves points on faces as vertices starts again on the
+/// extreme ones (`src/hull/coplanar.rs`): the trace records it as a note and a second initial
+/// simplex, and still replays to the hull, the same as the untraced build's.
+#[test]
+fn a_second_phase_is_traced() {
+    let points = generate::<3>(&Family::CubeCornersDiamond, 100, 1);
+    let (_, (), trace) = traced_run(&points, FarthestPoint::new());
+    let notes: Vec<usize> = (0..trace.events.len())
+        .filter(|&i| {
+            matches!(
+                &trace.events[i],
+                Event::Note {
+                    code: "second-phase",
+                    ..
+                }
+            )
+        })
+        .collect();
+    assert_eq!(notes.len(), 1, "one second phase");
+    assert!(matches!(trace.events[notes[0] + 1], Event::Initial { .. }));
+    let mut replay = trace.replay();
+    while replay.step().is_some() {}
+    assert_eq!(replay.vertices().len(), 8, "the cube's corners");
+}
+
 /// The square [−1, 1]² given by its corners, of which the input holds three (as in the
 /// `PointSource` docs): the fourth is inserted during the run.
 #[derive(Clone)]
