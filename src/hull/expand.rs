@@ -107,11 +107,10 @@ impl<const D: usize> Hull<D> {
         if facet.plane != NO_SLOT {
             // The farthest point beyond the whole coplanar region: its facets' outside sets
             // split the points beyond one plane by where each was first found, and the
-            // farthest of one facet's alone was often an interior point, later swallowed (the
-            // suite's 5-D cube corners: 95 expansions for a hull of 32 vertices, 53 with this
-            // search, 1.9 → 1.0 ms; 6-D: 287 → 163, 9.2 → 3.7 ms). The walk covers the facets
-            // of the region linked to this one through neighbours; any point it finds is
-            // beyond the same plane, so the choice is only an order.
+            // farthest of one facet's alone was often an interior point, later swallowed (most
+            // of the cube corners' gain in docs/benchmarks.md, "A full build in two phases").
+            // The walk covers the facets of the region linked to this one through neighbours;
+            // any point it finds is beyond the same plane, so the choice is only an order.
             let region = self.region(id);
             let mut best = facet.filter.evaluate(&self.points[point]).0;
             self.epoch = self.epoch.wrapping_add(1);
@@ -282,9 +281,11 @@ impl<const D: usize> Hull<D> {
 
     /// Depth-first search from `start` over facets that `p` lies beyond or on (exactly decided).
     ///
-    /// Facets with `p` on their plane count as visible: removing them keeps every hull vertex an
-    /// extreme point, and the cone over the horizon is still non-degenerate because a horizon
-    /// facet has `p` strictly beneath it.
+    /// Facets with `p` on their plane count as visible unless the build keeps them (`keeping`):
+    /// removing them keeps every hull vertex an extreme point, and the cone over the horizon is
+    /// still non-degenerate because a horizon facet has `p` strictly beneath it. Kept, they are
+    /// counted, and in a full build's first phase their vertices marked as suspects
+    /// (`coplanar.rs`).
     fn collect_visible(&mut self, start: FacetId, p: u32) {
         self.epoch = self.epoch.wrapping_add(1);
         let epoch = self.epoch;

@@ -100,7 +100,9 @@ pub struct Hull<const D: usize> {
     /// trace hook one branch.
     trace: Option<Box<Trace<D>>>,
     /// Whether a facet whose plane holds the new point exactly stays (see
-    /// [`keep_coplanar_facets`](Self::keep_coplanar_facets)); `false` for every public build.
+    /// [`keep_coplanar_facets`](Self::keep_coplanar_facets)) in every build, its vertex set
+    /// left as it is; `false` for every public build (a full one keeps them in a first phase
+    /// only, `coplanar.rs`).
     keep_coplanar: bool,
     /// Whether the build under way keeps such facets: `keep_coplanar`, or a full build's first
     /// phase (see `coplanar.rs`).
@@ -270,8 +272,9 @@ impl<const D: usize> Hull<D> {
     }
 
     /// Whether the following builds keep a facet whose hyperplane holds the new point exactly,
-    /// instead of removing it with the visible ones (the default, and what every public build
-    /// does).
+    /// instead of removing it with the visible ones (the default), from start to end and with
+    /// no second phase to prune the vertices (a public full build keeps them in a first phase
+    /// only, then makes its vertices the extreme points: `coplanar.rs`).
     ///
     /// Why: a coplanar facet removed and coned again from the new point is what keeps points
     /// that are not extreme out of the vertices (a point inside a flat face stops being a vertex
