@@ -6,6 +6,12 @@ use super::{FacetId, Hull, Step, Strategy, TraceContext, TraceReason};
 /// farthest point until no outside set remains. The result is the full hull, and the baseline every
 /// partial strategy is measured against.
 ///
+/// A build from the initial simplex runs in up to two phases: the first keeps facets whose
+/// plane holds the new point (cheap on boxes, grids and lattices, whose faces hold many points),
+/// and only if that left a vertex that is not an extreme point, decided exactly, a second builds
+/// again on the extreme vertices. Either way the vertices are the input's extreme points
+/// (docs/ARCHITECTURE.md, "A full build in two phases").
+///
 /// ```
 /// use pqhull::{FarthestPoint, Hull};
 /// let points = [[0.0, 0.0], [4.0, 0.0], [0.0, 3.0], [1.0, 1.0]];

@@ -8,7 +8,10 @@ use std::time::Duration;
 /// Work counters every strategy reports (the seed paper's evaluation measures).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Stats {
-    /// Points added to the hull (initial simplex included).
+    /// Points added to the hull (initial simplex included). A full build that ran a second
+    /// phase (on the extreme points, after a first that kept coplanar facets: see
+    /// [`FarthestPoint`](crate::FarthestPoint)) counts both phases' points, as every other
+    /// counter does.
     pub points_processed: usize,
     /// Facets (hyperplanes) created, initial simplex included.
     pub facets_created: usize,
