@@ -434,7 +434,9 @@ pub fn q_inf(grasp: &Grasp) -> Result<Evaluation, QualityError> {
 ///
 /// # Errors
 /// [`QualityError::NonFiniteWrench`] for a NaN or infinite coordinate;
-/// [`QualityError::WrenchTooLarge`] above [`MAX_WRENCH_COORDINATE`]; [`QualityError::Qhull`].
+/// [`QualityError::WrenchTooLarge`] above [`MAX_WRENCH_COORDINATE`]; `QualityError::Qhull`
+/// for [`Method::Qhull`] (feature `qhull`) when Qhull fails, `QualityError::QhullUnavailable`
+/// without the feature.
 pub fn q1_of_wrenches(wrenches: &[[f64; 6]], method: Method) -> Result<Evaluation, QualityError> {
     Ok(q1_quality_of_wrenches(wrenches, method)?.into_evaluation(Metric::Q1, method))
 }
