@@ -53,19 +53,19 @@ impl<const D: usize> Hull<D> {
         }
         let mut candidates = std::mem::take(&mut self.scratch.orphans);
         candidates.clear();
-        let removed = self.non_extreme(&mut candidates);
-        if removed == 0 {
-            self.keeping = self.keep_coplanar;
-            self.scratch.orphans = candidates;
-            return false;
-        }
+        let mut buffers = std::mem::take(&mut self.scratch.examination);
+        let removed = self.non_extreme(&mut candidates, &mut buffers);
         // The extreme points span the polytope, so a simplex exists among them; were it not
         // found, the first phase's hull (the right polytope) would stay.
-        let coordinates: Vec<[f64; D]> = candidates
-            .iter()
-            .map(|&p| self.points[p as usize])
-            .collect();
-        let Ok(local) = super::build::initial_simplex(&coordinates) else {
+        let simplex = (removed > 0).then(|| {
+            buffers.coordinates.clear();
+            buffers
+                .coordinates
+                .extend(candidates.iter().map(|&p| self.points[p as usize]));
+            super::build::initial_simplex(&buffers.coordinates).ok()
+        });
+        self.scratch.examination = buffers;
+        let Some(Some(local)) = simplex else {
             self.keeping = self.keep_coplanar;
             self.scratch.orphans = candidates;
             return false;
@@ -122,13 +122,23 @@ impl<const D: usize> Hull<D> {
     /// when one of its neighbours (the other vertices of the facets around it) lies on the plane
     /// of every facet around it — one exact side test per (neighbour, coplanar region), stopped
     /// at the first that is not zero.
-    fn non_extreme(&self, extreme: &mut Vec<u32>) -> usize {
+    fn non_extreme(&self, extreme: &mut Vec<u32>, buffers: &mut Examination<D>) -> usize {
         let n = self.points.len();
         let suspect = &self.scratch.suspect;
         let is_suspect = |v: usize| suspect.get(v).copied().unwrap_or(true);
+        let Examination {
+            start,
+            fill,
+            around,
+            vertex,
+            regions,
+            ..
+        } = buffers;
         // The facets around each suspect vertex, as a compressed list: `start[v]..start[v + 1]`.
-        let mut start = vec![0u32; n + 1];
-        let mut vertex = vec![false; n];
+        start.clear();
+        start.resize(n + 1, 0);
+        vertex.clear();
+        vertex.resize(n, false);
         for (_, facet) in self.facets() {
             for &v in &facet.vertices {
                 vertex[v as usize] = true;
@@ -140,8 +150,10 @@ impl<const D: usize> Hull<D> {
         for v in 0..n {
             start[v + 1] += start[v];
         }
-        let mut fill = start.clone();
-        let mut around = vec![FacetId::NONE; start[n] as usize];
+        fill.clear();
+        fill.extend_from_slice(start);
+        around.clear();
+        around.resize(start[n] as usize, FacetId::NONE);
         for (id, facet) in self.facets() {
             for &v in &facet.vertices {
                 if is_suspect(v as usize) {
@@ -152,7 +164,6 @@ impl<const D: usize> Hull<D> {
         }
         // `fill[w] == v + 1` marks `w` as a neighbour of `v` already tried.
         fill.iter_mut().for_each(|f| *f = 0);
-        let mut regions: Vec<(u64, FacetId)> = Vec::new();
         let mut removed = 0;
         for v in 0..n {
             if !vertex[v] {
@@ -223,4 +234,21 @@ impl<const D: usize> Hull<D> {
         }
         k > 0.0 && positive_definite_after_shift(&gram, 1e-6 * k)
     }
+}
+
+/// Buffers of [`Hull::end_first_phase`], kept between builds so that a loop of builds (the
+/// GWS volume of a batch of grasps) allocates nothing for them in steady state.
+#[derive(Clone, Debug, Default)]
+pub(in crate::hull) struct Examination<const D: usize> {
+    /// The facets around each suspect vertex: `around[start[v]..start[v + 1]]`.
+    start: Vec<u32>,
+    around: Vec<FacetId>,
+    /// A cursor per vertex while `around` is filled, then the neighbour marks.
+    fill: Vec<u32>,
+    /// Whether each input point is a vertex.
+    vertex: Vec<bool>,
+    /// One facet per coplanar region around the vertex examined.
+    regions: Vec<(u64, FacetId)>,
+    /// The extreme vertices' coordinates, for their initial simplex.
+    coordinates: Vec<[f64; D]>,
 }

@@ -24,6 +24,8 @@ pub(in crate::hull) struct Scratch<const D: usize> {
     /// Per input point, whether it was a vertex of a facet kept with the new point on its plane
     /// during a full build's first phase (see `coplanar.rs`).
     pub(in crate::hull) suspect: Vec<bool>,
+    /// The buffers of the vertices' examination at the end of a first phase.
+    pub(in crate::hull) examination: super::coplanar::Examination<D>,
     /// (region, facet) of the created facets, sorted; and one facet of each region.
     candidates: Vec<(u64, FacetId)>,
     representatives: Vec<FacetId>,

@@ -146,6 +146,10 @@ impl<const D: usize> Hull<D> {
     fn run_in_place<S: Strategy<D>>(&mut self, mut strategy: S) -> S::Output {
         strategy.start(self);
         while strategy.step(self) == Step::Continue {}
+        // A full build's phases end with the run: points added later are added the default
+        // way (or kept, when asked for every build).
+        self.keeping = self.keep_coplanar;
+        self.prune_pending = false;
         if strategy.refines_all_normals() {
             self.refine_normals();
         }

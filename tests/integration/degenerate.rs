@@ -300,3 +300,31 @@ fn lattice_vertices_are_extreme() {
     run::<4>(400, 2);
     run::<5>(300, 3);
 }
+
+/// Points added to a hull built in two phases are added the default way: a corner that a new
+/// point puts on an edge (the segment from the opposite corner of that edge to the new point)
+/// stops being a vertex, as in a build from all the points.
+#[test]
+fn points_added_after_a_second_phase_keep_the_vertices_extreme() {
+    // A far point on the −x side widens the coordinates' range, so that the new point fits in
+    // it and is added incrementally (not by a rebuild from all the points).
+    let mut points = generate::<3>(&Family::CubeCornersDiamond, 100, 1);
+    points.push([-4.0, 0.0, 0.0]);
+    let mut hull = Hull::try_new(&points).unwrap();
+    assert!(two_phases(&hull));
+    let expansions = hull.stats().expansions;
+    // Corner 7 is (0.5, 0.5, 0.5), corner 6 (−0.5, 0.5, 0.5): 7 lies between 6 and the new point.
+    let added = hull.add_points(&[[1.5, 0.5, 0.5]]).unwrap();
+    hull.check().unwrap();
+    let mut all = points.clone();
+    all.push([1.5, 0.5, 0.5]);
+    let fresh = Hull::try_new(&all).unwrap();
+    assert_eq!(hull.vertex_indices(), fresh.vertex_indices());
+    assert!(!hull.vertex_indices().contains(&7));
+    assert!(hull.vertex_indices().contains(&added.start));
+    assert_eq!(
+        hull.stats().expansions,
+        expansions + 1,
+        "added incrementally"
+    );
+}
