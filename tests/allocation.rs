@@ -199,3 +199,39 @@ fn ows_partial_allocates_nothing_in_steady_state_but_exact_caches() {
         kind(q.force_closure, q.stats.facets_created)
     });
 }
+
+/// Full builds of degenerate input in a hull's storage (`rebuild_with_strategy`): after a first
+/// build has grown every buffer, one in two phases (coplanar facets kept, then the extreme
+/// vertices' hull: `src/hull/coplanar.rs`) allocates no more than the strategy's own queue and
+/// the first phase's examination need, whatever the number of facets or points: on the 5-D
+/// cube's corners, face centres and 2,000 interior points (certified grid, so no exact cache).
+#[test]
+fn two_phase_full_builds_reuse_their_buffers() {
+    use pqhull::rbox::{Family, generate};
+    use pqhull::{FarthestPoint, Hull};
+    let points = generate::<5>(&Family::CubeCornersDiamond, 2000, 1);
+    let mut hull = Hull::empty();
+    hull.rebuild_with_strategy(&points, FarthestPoint::new())
+        .unwrap();
+    let stats = hull.stats();
+    assert_eq!(
+        stats.points_processed - stats.expansions,
+        2 * 6,
+        "a second phase ran"
+    );
+    let rounds = 5;
+    let before = allocations();
+    for _ in 0..rounds {
+        hull.rebuild_with_strategy(&points, FarthestPoint::new())
+            .unwrap();
+    }
+    let per_build = (allocations() - before) / rounds;
+    eprintln!(
+        "two-phase 5-D build: {per_build} allocations per build ({} facets created)",
+        hull.stats().facets_created
+    );
+    // Seen: 5 (the fresh `FarthestPoint`'s queue growing). The examination's six buffers,
+    // allocated per build, would exceed the bound; an allocation per facet or per point would
+    // be hundreds.
+    assert!(per_build <= 8, "{per_build} allocations per build");
+}

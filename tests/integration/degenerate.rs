@@ -299,6 +299,7 @@ fn lattice_vertices_are_extreme() {
     run::<3>(400, 1);
     run::<4>(400, 2);
     run::<5>(300, 3);
+    run::<6>(150, 4);
 }
 
 /// Points added to a hull built in two phases are added the default way: a corner that a new

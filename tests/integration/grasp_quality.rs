@@ -584,3 +584,68 @@ fn repeated_contacts_cost_nothing_and_scale_q_inf() {
     #[cfg(feature = "qhull")]
     assert!(by_qhull >= 6, "Qhull answered {by_qhull} of 12");
 }
+
+/// The deciding wrenches of a force-closure Q1, by the partial and the full method, are the
+/// nearest facet's vertices: six of the grasp's own wrenches, affinely independent, whose
+/// hyperplane lies at the reported distance from the origin (its unit normal from Gram–Schmidt
+/// on the simplex's edges, in the test).
+#[test]
+fn deciding_wrenches_span_the_nearest_facet() {
+    let dot = |a: &[f64; 6], b: &[f64; 6]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
+    let mut rng = Rng::new(41);
+    let mut checked = [0usize; 2];
+    for _ in 0..150 {
+        let grasp = random_bar_grasp(&mut rng, 4, 8);
+        let wrenches = grasp.wrenches();
+        for (slot, method) in [Method::Partial, Method::Full].into_iter().enumerate() {
+            let q = Evaluator::new(Metric::Q1, method, None)
+                .unwrap()
+                .evaluate(&grasp)
+                .unwrap();
+            if !q.force_closure {
+                continue;
+            }
+            let w = q.deciding_wrenches();
+            assert_eq!(w.len(), 6, "{method:?}");
+            for x in w {
+                assert!(wrenches.contains(x), "{method:?}: {x:?} is not a wrench");
+            }
+            // Orthonormal edges, then the normal: the axis with the largest part off them.
+            let mut basis: Vec<[f64; 6]> = Vec::new();
+            let reduce = |mut v: [f64; 6], basis: &[[f64; 6]]| {
+                for b in basis {
+                    let c = dot(&v, b);
+                    v.iter_mut().zip(b).for_each(|(x, y)| *x -= c * y);
+                }
+                v
+            };
+            for p in &w[1..] {
+                let edge: [f64; 6] = std::array::from_fn(|c| p[c] - w[0][c]);
+                let v = reduce(edge, &basis);
+                let l = dot(&v, &v).sqrt();
+                assert!(l > 1e-9, "{method:?}: the deciding wrenches are dependent");
+                basis.push(v.map(|x| x / l));
+            }
+            let normal = (0..6)
+                .map(|k| {
+                    let mut e = [0.0; 6];
+                    e[k] = 1.0;
+                    reduce(e, &basis)
+                })
+                .max_by(|a, b| dot(a, a).total_cmp(&dot(b, b)))
+                .unwrap();
+            let length = dot(&normal, &normal).sqrt();
+            let distance = (dot(&normal, &w[0]) / length).abs();
+            let value = q.value.unwrap();
+            assert!(
+                (distance - value).abs() <= 1e-9 * q.scale.unwrap(),
+                "{method:?}: the deciding wrenches' plane is {distance} away, the value {value}"
+            );
+            checked[slot] += 1;
+        }
+    }
+    assert!(
+        checked.iter().all(|&n| n >= 20),
+        "{checked:?} force-closure grasps"
+    );
+}
