@@ -1,14 +1,16 @@
-//! Steady-state allocation of the grasp evaluators: a counting global allocator (this test binary
-//! only; counts per thread, so tests running side by side do not see each other's).
+//! Steady-state allocation of the grasp evaluators and of full hull builds in a hull's storage:
+//! a counting global allocator (this test binary only; counts per thread, so tests running side
+//! by side do not see each other's).
 //!
 //! After one pass over a set of grasps has grown every buffer, a second pass over the same grasps
 //! must allocate nothing on grasps settled by GJK (not force closure), and on force-closure grasps
-//! only the exact-arithmetic cache of the facets whose floating-point filter fails (one 560-byte
-//! box per such facet, dropped when the facet's slot is reused). Seen (each test prints its
-//! figures: `cargo nextest run --release --test allocation --no-capture`): about 19 per Q1 grasp
-//! at k = 32 (against about 490 facets created), about 71 per Q∞ grasp at k = 8 (the Minkowski
-//! sum's exact degeneracies are not declared to the engine). The bounds below are tripwires: an
-//! allocation per facet or per point would exceed them several times over.
+//! only the exact-arithmetic cache of the facets whose floating-point filter fails (one box per
+//! such facet, dropped when the facet's slot is reused). Seen (each test prints its figures:
+//! `cargo nextest run --release --features qhull --test allocation --no-capture`, 2026-12-04):
+//! 3.8 per Q1 grasp at k = 32, 54.5 per Q∞ grasp (with the zero wrench) at k = 8 (the Minkowski
+//! sum's exact degeneracies are not declared to the engine), 9.5 per Q_OWS grasp, 5 per
+//! two-phase full build. The bounds below are tripwires: an allocation per facet or per point
+//! would exceed them several times over.
 
 // Counting allocations needs a `GlobalAlloc` impl, which is `unsafe` by definition; the library
 // itself forbids unsafe code.
