@@ -329,3 +329,67 @@ fn points_added_after_a_second_phase_keep_the_vertices_extreme() {
         "added incrementally"
     );
 }
+
+/// The vertices of hulls of small integer point sets with many points on common faces (random
+/// points of {0, …, 3}^D, a third of them pushed onto a face of the box), by the two-phase
+/// build, against an exact reference written in the test: a point is extreme exactly when the
+/// origin is not in the hull of the other points less it (exact rational linear programs,
+/// `support::exact_lp`, on the points embedded in 6-D).
+#[test]
+fn vertices_equal_the_exact_extreme_points() {
+    use crate::support::exact_lp::exact_ray_exit;
+    use num_bigint::BigInt;
+    fn run<const D: usize>(seed: u64, n: usize) -> bool {
+        let mut rng = pqhull::geometry::Rng::new(seed);
+        let points: Vec<[f64; D]> = (0..n)
+            .map(|i| {
+                let mut p: [f64; D] = std::array::from_fn(|_| rng.index(4) as f64);
+                if i % 3 == 0 {
+                    p[rng.index(D)] = if rng.index(2) == 0 { 0.0 } else { 3.0 };
+                }
+                p
+            })
+            .collect();
+        let Ok(hull) = Hull::try_new(&points) else {
+            return false; // flat or too few distinct points: nothing to compare
+        };
+        hull.check().unwrap();
+        let mut extreme = Vec::new();
+        for (i, p) in points.iter().enumerate() {
+            // Repeats of an earlier point are not vertices (first copies are).
+            if points[..i].contains(p) {
+                continue;
+            }
+            let others: Vec<[BigInt; 6]> = points
+                .iter()
+                .filter(|q| *q != p)
+                .map(|q| {
+                    std::array::from_fn(|c| {
+                        BigInt::from(if c < D { (q[c] - p[c]) as i64 } else { 0 })
+                    })
+                })
+                .collect();
+            // The origin is in their hull exactly when the line through it along an axis meets
+            // the hull on both sides of it (or at it): both rays' programs are feasible.
+            let axis = |s: i64| -> [BigInt; 6] {
+                std::array::from_fn(|c| BigInt::from(if c == 0 { s } else { 0 }))
+            };
+            let inside = exact_ray_exit(&others, &axis(1)).is_some()
+                && exact_ray_exit(&others, &axis(-1)).is_some();
+            if !inside {
+                extreme.push(i);
+            }
+        }
+        assert_eq!(hull.vertex_indices(), extreme, "{D}-D, seed {seed}");
+        two_phases(&hull)
+    }
+    let mut second_phases = 0;
+    for seed in 0..6 {
+        second_phases += usize::from(run::<3>(seed, 40));
+        second_phases += usize::from(run::<4>(seed + 10, 40));
+        second_phases += usize::from(run::<5>(seed + 20, 40));
+        second_phases += usize::from(run::<6>(seed + 30, 40));
+    }
+    eprintln!("{second_phases} of 24 builds ran a second phase");
+    assert!(second_phases >= 3, "{second_phases} second phases");
+}
