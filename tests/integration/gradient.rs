@@ -383,32 +383,7 @@ fn ties_between_mirrored_facets_are_flagged() {
 /// Whether the plane of the deciding wrenches of `quality` is its own image under `mirror`
 /// (a linear isometry): its unit normal, by Gram–Schmidt on the simplex's edges, is fixed.
 fn is_self_mirrored(quality: &Evaluation, mirror: impl Fn(&[f64; 6]) -> [f64; 6]) -> bool {
-    let w = quality.deciding_wrenches();
-    let dot = |a: &[f64; 6], b: &[f64; 6]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
-    let mut basis: Vec<[f64; 6]> = Vec::new();
-    let reduce = |mut v: [f64; 6], basis: &[[f64; 6]]| {
-        for b in basis {
-            let c = dot(&v, b);
-            v.iter_mut().zip(b).for_each(|(x, y)| *x -= c * y);
-        }
-        v
-    };
-    for p in &w[1..] {
-        let edge: [f64; 6] = std::array::from_fn(|c| p[c] - w[0][c]);
-        let v = reduce(edge, &basis);
-        let l = dot(&v, &v).sqrt();
-        basis.push(v.map(|x| x / l));
-    }
-    // The axis with the largest part off the edges' span gives the normal.
-    let normal = (0..6)
-        .map(|k| {
-            let mut e = [0.0; 6];
-            e[k] = 1.0;
-            reduce(e, &basis)
-        })
-        .max_by(|a, b| dot(a, a).total_cmp(&dot(b, b)))
-        .unwrap();
-    let u = normal.map(|x| x / dot(&normal, &normal).sqrt());
+    let (u, _) = crate::support::simplex_normal(quality.deciding_wrenches());
     let image = mirror(&u);
     let apart = |s: f64| {
         (0..6)

@@ -588,7 +588,7 @@ fn repeated_contacts_cost_nothing_and_scale_q_inf() {
 /// The deciding wrenches of a force-closure Q1, by the partial and the full method, are the
 /// nearest facet's vertices: six of the grasp's own wrenches, affinely independent, whose
 /// hyperplane lies at the reported distance from the origin (its unit normal from Gram–Schmidt
-/// on the simplex's edges, in the test).
+/// on the simplex's edges: `support::simplex_normal`).
 #[test]
 fn deciding_wrenches_span_the_nearest_facet() {
     let dot = |a: &[f64; 6], b: &[f64; 6]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
@@ -610,32 +610,12 @@ fn deciding_wrenches_span_the_nearest_facet() {
             for x in w {
                 assert!(wrenches.contains(x), "{method:?}: {x:?} is not a wrench");
             }
-            // Orthonormal edges, then the normal: the axis with the largest part off them.
-            let mut basis: Vec<[f64; 6]> = Vec::new();
-            let reduce = |mut v: [f64; 6], basis: &[[f64; 6]]| {
-                for b in basis {
-                    let c = dot(&v, b);
-                    v.iter_mut().zip(b).for_each(|(x, y)| *x -= c * y);
-                }
-                v
-            };
-            for p in &w[1..] {
-                let edge: [f64; 6] = std::array::from_fn(|c| p[c] - w[0][c]);
-                let v = reduce(edge, &basis);
-                let l = dot(&v, &v).sqrt();
-                assert!(l > 1e-9, "{method:?}: the deciding wrenches are dependent");
-                basis.push(v.map(|x| x / l));
-            }
-            let normal = (0..6)
-                .map(|k| {
-                    let mut e = [0.0; 6];
-                    e[k] = 1.0;
-                    reduce(e, &basis)
-                })
-                .max_by(|a, b| dot(a, a).total_cmp(&dot(b, b)))
-                .unwrap();
-            let length = dot(&normal, &normal).sqrt();
-            let distance = (dot(&normal, &w[0]) / length).abs();
+            let (normal, shortest) = crate::support::simplex_normal(w);
+            assert!(
+                shortest > 1e-9,
+                "{method:?}: the deciding wrenches are dependent"
+            );
+            let distance = dot(&normal, &w[0]).abs();
             let value = q.value.unwrap();
             assert!(
                 (distance - value).abs() <= 1e-9 * q.scale.unwrap(),
