@@ -6,15 +6,16 @@
 //! faces, grids, lattices — every point added on a face then removes and cones again the whole
 //! region of that face: the 6-D grid {0, …, 3}^6 created ten times the facets of its hull.
 //!
-//! [`FarthestPoint`](super::FarthestPoint) therefore builds in two phases. The first keeps such
-//! facets (as [`Hull::keep_coplanar_facets`] does for the grasp layer): the result is the right
-//! polytope, every facet in one of its facets' hyperplanes, but points on its faces may be
+//! [`FarthestPoint`](super::FarthestPoint) therefore builds in up to two phases. The first keeps
+//! such facets (as [`Hull::keep_coplanar_facets`] does for the grasp layer): the result is the
+//! right polytope, every facet in one of its facets' hyperplanes, but points on its faces may be
 //! vertices. When the first phase never kept a facet, it was the default build, decision for
-//! decision, and it is the result. Otherwise the hull is built again, by default, on the first
-//! phase's vertices alone: they include every extreme point (a vertex of the polytope is a
-//! vertex of every triangulation of its boundary) and every other input point lies in the
-//! polytope, so this second hull is the convex hull of the input, with the extreme points as its
-//! only vertices. Both phases' decisions are exact.
+//! decision, and it is the result. Otherwise the vertices that may have stopped being extreme
+//! are examined, exactly ([`Hull::non_extreme`]). If all are extreme, the first phase's hull is
+//! the result. If not, the hull is built again on the extreme vertices alone: every other input
+//! point lies in their hull, so this second hull is the convex hull of the input, and since all
+//! its points are extreme it keeps coplanar facets too, with the extreme points as its only
+//! vertices. Every decision of both phases is exact.
 
 use super::{FacetId, Hull};
 use crate::geometry::gram::positive_definite_after_shift;
