@@ -57,9 +57,8 @@ impl<const D: usize> Hull<D> {
             start: None,
             trace: None,
             keep_coplanar: false,
-            keeping: false,
-            prune_pending: false,
-            coplanar_kept: 0,
+            phase: super::coplanar::Phase::None,
+            kept_in_first_phase: false,
         }
     }
 
@@ -75,22 +74,13 @@ impl<const D: usize> Hull<D> {
         self.started = Instant::now();
         self.partition_farthest = partition_farthest;
         let start = self.start.take();
-        self.free.clear();
-        self.planes.clear();
-        // Free the slots in descending order, so that they are reused from slot 0 up, as in a
-        // fresh arena (same ids for the same input).
-        for i in (0..self.facets.len()).rev() {
-            self.facets[i].alive = false;
-            self.free.push(FacetId(i as u32));
-        }
-        self.live = 0;
+        self.free_every_facet();
         self.next_serial = 0;
         self.epoch = 0;
         self.stats = Stats::default();
         self.trace = None;
-        self.keeping = self.keep_coplanar;
-        self.prune_pending = false;
-        self.coplanar_kept = 0;
+        self.phase = super::coplanar::Phase::None;
+        self.kept_in_first_phase = false;
         self.points.clear();
         if !(MIN_DIMENSION..=MAX_DIMENSION).contains(&D) {
             return Err(HullError::DimensionOutOfRange { dimension: D });
@@ -138,6 +128,20 @@ impl<const D: usize> Hull<D> {
         Ok(())
     }
 
+    /// Frees every facet slot and plane, keeping each slot's outside-set buffer (emptied) for
+    /// reuse. The slots are freed in descending order, so that they are reused from slot 0 up,
+    /// as in a fresh arena (same ids for the same input).
+    pub(in crate::hull) fn free_every_facet(&mut self) {
+        self.free.clear();
+        self.planes.clear();
+        for i in (0..self.facets.len()).rev() {
+            self.facets[i].alive = false;
+            self.facets[i].outside.clear();
+            self.free.push(FacetId(i as u32));
+        }
+        self.live = 0;
+    }
+
     /// Makes the initial simplex on the input points `simplex` (D + 1 affinely independent
     /// indices, first copies) the hull: its D + 1 facets, outward, linked, with empty outside
     /// sets, in the first free slots. Returns the facets' ids (the first D + 1 entries).
@@ -168,7 +172,7 @@ impl<const D: usize> Hull<D> {
             let id = self.push_facet(vertices, neighbors, None);
             debug_assert_eq!(id.index(), first + k);
         }
-        std::array::from_fn(|k| FacetId((first + k.min(D)) as u32))
+        std::array::from_fn(|k| FacetId((first + k) as u32))
     }
 
     /// Whether input `p` equals an input with a smaller index (so never enters an outside set).

@@ -21,6 +21,17 @@ use super::{FacetId, Hull};
 use crate::geometry::gram::positive_definite_after_shift;
 use crate::predicates::Sign;
 
+/// Where a build is in a full build's phases.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(in crate::hull) enum Phase {
+    /// Not in a full build's phases: coplanar facets go, unless `Hull::keep_coplanar_facets`.
+    None,
+    /// Coplanar facets kept, their vertices marked as suspects.
+    First,
+    /// On the extreme points alone: coplanar facets kept.
+    Second,
+}
+
 impl<const D: usize> Hull<D> {
     /// Starts a full build's first phase (coplanar facets kept), when this is a build from its
     /// initial simplex (not points added to a built hull) that nothing else asked to keep them.
@@ -32,8 +43,7 @@ impl<const D: usize> Hull<D> {
             return;
         }
         if !self.keep_coplanar && self.stats.expansions == 0 {
-            self.keeping = true;
-            self.prune_pending = true;
+            self.phase = Phase::First;
             self.scratch.suspect.clear();
             self.scratch.suspect.resize(self.points.len(), false);
         }
@@ -45,11 +55,12 @@ impl<const D: usize> Hull<D> {
     /// initial simplex built and the others assigned to it) and returns `true`; otherwise the
     /// hull is the result and it returns `false`.
     pub(in crate::hull) fn end_first_phase(&mut self) -> bool {
-        if !std::mem::take(&mut self.prune_pending) {
+        if self.phase != Phase::First {
             return false;
         }
-        if self.coplanar_kept == 0 {
-            self.keeping = self.keep_coplanar;
+        // Unless the second phase starts below, the build is over.
+        self.phase = Phase::None;
+        if !self.kept_in_first_phase {
             return false;
         }
         let mut candidates = std::mem::take(&mut self.scratch.orphans);
@@ -67,23 +78,15 @@ impl<const D: usize> Hull<D> {
         });
         self.scratch.examination = buffers;
         let Some(Some(local)) = simplex else {
-            self.keeping = self.keep_coplanar;
             self.scratch.orphans = candidates;
             return false;
         };
         let simplex: [usize; super::build::MAX_SIMPLEX] =
             std::array::from_fn(|k| candidates[local[k.min(D)]] as usize);
-        self.free.clear();
-        for i in (0..self.facets.len()).rev() {
-            self.facets[i].alive = false;
-            self.facets[i].outside.clear();
-            self.free.push(FacetId(i as u32));
-        }
-        self.planes.clear();
-        self.live = 0;
+        self.free_every_facet();
         // Every point of the second phase is extreme, so a kept coplanar facet can no longer
         // leave a point that is not one among the vertices: it keeps them too.
-        self.keeping = true;
+        self.phase = Phase::Second;
         let simplex = &simplex[..=D];
         let all = self.found(simplex);
         let all = &all[..=D];

@@ -1,6 +1,7 @@
 //! One QuickHull expansion: visible facets, horizon, cone of new facets, repartition.
 
 use super::Hull;
+use super::coplanar::Phase;
 use super::facet::FacetId;
 use super::planes::NO_SLOT;
 use crate::predicates::Sign;
@@ -114,7 +115,7 @@ impl<const D: usize> Hull<D> {
             // The walk covers the facets of the region linked to this one through neighbours;
             // any point it finds is beyond the same plane, so the choice is only an order.
             let region = self.region(id);
-            let mut best = facet.filter.evaluate(&self.points[point]).0;
+            let mut best = facet.filter.value(&self.points[point]);
             self.epoch = self.epoch.wrapping_add(1);
             let epoch = self.epoch;
             let mut stack = std::mem::take(&mut self.scratch.stack);
@@ -125,7 +126,7 @@ impl<const D: usize> Hull<D> {
                 let facet = &self.facets[f.index()];
                 if let Some((s, _)) = facet.farthest {
                     let q = facet.outside[s as usize] as usize;
-                    let v = facet.filter.evaluate(&self.points[q]).0;
+                    let v = facet.filter.value(&self.points[q]);
                     if v > best {
                         best = v;
                         point = q;
@@ -283,7 +284,7 @@ impl<const D: usize> Hull<D> {
 
     /// Depth-first search from `start` over facets that `p` lies beyond or on (exactly decided).
     ///
-    /// Facets with `p` on their plane count as visible unless the build keeps them (`keeping`):
+    /// Facets with `p` on their plane count as visible unless the build keeps them:
     /// removing them keeps every hull vertex an extreme point, and the cone over the horizon is
     /// still non-degenerate because a horizon facet has `p` strictly beneath it. Kept, they are
     /// counted, and in a full build's first phase their vertices marked as suspects
@@ -291,7 +292,8 @@ impl<const D: usize> Hull<D> {
     fn collect_visible(&mut self, start: FacetId, p: u32) {
         self.epoch = self.epoch.wrapping_add(1);
         let epoch = self.epoch;
-        let keeping = self.keeping;
+        let keeping = self.keep_coplanar || self.phase != Phase::None;
+        let first_phase = self.phase == Phase::First;
         let scratch = &mut self.scratch;
         scratch.removed.clear();
         scratch.horizon.clear();
@@ -321,14 +323,12 @@ impl<const D: usize> Hull<D> {
                     // A facet whose plane holds `p` goes with the visible ones unless kept
                     // (`Hull::keep_coplanar_facets`).
                     let visible = if keeping {
-                        if sign == Sign::Zero {
-                            self.coplanar_kept += 1;
-                            if self.prune_pending {
-                                // Its vertices may stop being extreme (see `coplanar.rs`).
-                                for v in self.facets[n.index()].vertices {
-                                    if let Some(s) = self.scratch.suspect.get_mut(v as usize) {
-                                        *s = true;
-                                    }
+                        if sign == Sign::Zero && first_phase {
+                            self.kept_in_first_phase = true;
+                            // Its vertices may stop being extreme (see `coplanar.rs`).
+                            for v in self.facets[n.index()].vertices {
+                                if let Some(s) = self.scratch.suspect.get_mut(v as usize) {
+                                    *s = true;
                                 }
                             }
                         }

@@ -104,14 +104,11 @@ pub struct Hull<const D: usize> {
     /// left as it is; `false` for every public build (a full one keeps them in a first phase
     /// only, `coplanar.rs`).
     keep_coplanar: bool,
-    /// Whether the build under way keeps such facets: `keep_coplanar`, or a full build's first
-    /// phase (see `coplanar.rs`).
-    keeping: bool,
-    /// Whether the build under way is a full build's first phase, to be pruned to the extreme
-    /// points once complete (see `coplanar.rs`).
-    prune_pending: bool,
-    /// How many times this build kept a facet whose plane held the new point.
-    coplanar_kept: usize,
+    /// Where the build under way is in a full build's phases (see `coplanar.rs`); a build
+    /// keeps coplanar facets when `keep_coplanar` is set or in either phase.
+    phase: coplanar::Phase,
+    /// Whether the first phase has kept a facet whose plane held the new point.
+    kept_in_first_phase: bool,
 }
 
 impl<const D: usize> Hull<D> {
@@ -148,8 +145,7 @@ impl<const D: usize> Hull<D> {
         while strategy.step(self) == Step::Continue {}
         // A full build's phases end with the run: points added later are added the default
         // way (or kept, when asked for every build).
-        self.keeping = self.keep_coplanar;
-        self.prune_pending = false;
+        self.phase = coplanar::Phase::None;
         if strategy.refines_all_normals() {
             self.refine_normals();
         }
