@@ -440,7 +440,7 @@ impl<const D: usize> Hull<D> {
                 let facet = &self.facets[id.index()];
                 let (value, bound) = facet.filter.evaluate(&point);
                 if (value.abs() <= bound || value.is_nan())
-                    && self.side(id, &point) == Sign::Positive
+                    && self.side_undecided(id, &point) == Sign::Positive
                 {
                     best = Some((id, value * facet.inv_norm, value.max(0.0)));
                     break;
@@ -476,6 +476,13 @@ impl<const D: usize> Hull<D> {
         // The exact path, on the shared plane: its cache serves the whole coplanar region.
         let (plane, vertices) = self.exact_plane_of(id);
         plane.side(x, || self.coords(vertices))
+    }
+
+    /// [`side`](Self::side) of a point the filter left undecided against facet `id`: the exact
+    /// stages alone.
+    fn side_undecided(&self, id: FacetId, x: &[f64; D]) -> Sign {
+        let (plane, vertices) = self.exact_plane_of(id);
+        plane.side_undecided(x, &self.coords(vertices))
     }
 
     /// Exact side of input point `p` relative to facet `id`: [`side`](Self::side), or `Zero` at

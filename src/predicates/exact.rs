@@ -23,13 +23,15 @@ const EXP_LIMIT: i32 = 250;
 /// range is an integer multiple of `2^-302` (its ulp), so every term of the degree-3 polynomial, and
 /// every roundoff tail the expansions produce, is a multiple of `2^-906 > 2^-1074` (no underflow),
 /// and all magnitudes stay below `2^(3·251 + a few)` (no overflow).
-fn robust_safe(points: &[&[f64]]) -> bool {
-    let lo = 2f64.powi(-EXP_LIMIT);
-    let hi = 2f64.powi(EXP_LIMIT);
-    points
+fn robust_safe<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> bool {
+    // 2^±250, exact powers of two (written as bits: `powi` is a library call on the slow path).
+    const LO: f64 = f64::from_bits(((1023 - EXP_LIMIT) as u64) << 52);
+    const HI: f64 = f64::from_bits(((1023 + EXP_LIMIT) as u64) << 52);
+    vertices
         .iter()
-        .flat_map(|p| p.iter())
-        .all(|&x| x == 0.0 || (x.abs() >= lo && x.abs() <= hi))
+        .flatten()
+        .chain(p)
+        .all(|&x| x == 0.0 || (x.abs() >= LO && x.abs() <= HI))
 }
 
 /// The exponent of the lowest set bit of a finite non-zero `x` (`x` is an odd multiple of 2^e).
@@ -114,19 +116,18 @@ pub(in crate::predicates) fn orientation<const D: usize>(
         return sign;
     }
     if D == 2 || D == 3 {
-        let mut all: Vec<&[f64]> = vertices.iter().map(|v| &v[..]).collect();
-        all.push(&p[..]);
-        for x in all.iter().flat_map(|q| q.iter()) {
+        // No allocation: this is the 2-D and 3-D exact path of every undecided side test.
+        for x in vertices.iter().flatten().chain(p) {
             assert!(
                 x.is_finite(),
                 "pqhull::predicates: non-finite coordinate {x} given to orientation"
             );
         }
-        if robust_safe(&all) {
+        if robust_safe(vertices, p) {
             return if D == 2 {
-                orientation_robust2(&all)
+                orientation_robust2(&vertices[0], &vertices[1], p)
             } else {
-                orientation_robust3(&all)
+                orientation_robust3(&vertices[0], &vertices[1], &vertices[2], p)
             };
         }
     }
@@ -135,22 +136,22 @@ pub(in crate::predicates) fn orientation<const D: usize>(
 
 /// `robust::orient2d(a, b, c)` is `det[a − c; b − c] = det[b − a; c − a]` (translate by −a, then
 /// subtract row 1 from row 2), exactly our determinant with `(a, b, c) = (v0, v1, p)`.
-fn orientation_robust2(pts: &[&[f64]]) -> Sign {
-    let c = |q: &[f64]| robust::Coord { x: q[0], y: q[1] };
-    sign_of(robust::orient2d(c(pts[0]), c(pts[1]), c(pts[2])))
+fn orientation_robust2(a: &[f64], b: &[f64], c: &[f64]) -> Sign {
+    let coord = |q: &[f64]| robust::Coord { x: q[0], y: q[1] };
+    sign_of(robust::orient2d(coord(a), coord(b), coord(c)))
 }
 
 /// `robust::orient3d(a, b, c, d)` is `det[a − d; b − d; c − d]`. With `x = a − d`:
 /// `det[x; (b − a) + x; (c − a) + x] = det[x; b − a; c − a] = det[b − a; c − a; x]` (a cyclic,
 /// hence even, row permutation) `= −det[b − a; c − a; d − a]`. So our determinant with
 /// `(a, b, c, d) = (v0, v1, v2, p)` is the *negated* `orient3d`.
-fn orientation_robust3(pts: &[&[f64]]) -> Sign {
-    let c = |q: &[f64]| robust::Coord3D {
+fn orientation_robust3(a: &[f64], b: &[f64], c: &[f64], d: &[f64]) -> Sign {
+    let coord = |q: &[f64]| robust::Coord3D {
         x: q[0],
         y: q[1],
         z: q[2],
     };
-    let s = robust::orient3d(c(pts[0]), c(pts[1]), c(pts[2]), c(pts[3]));
+    let s = robust::orient3d(coord(a), coord(b), coord(c), coord(d));
     sign_of(-s)
 }
 

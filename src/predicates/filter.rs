@@ -19,6 +19,13 @@ const UNDERFLOW_SLACK: f64 = 9.332636185032189e-302; // 2^-1000
 /// 2^52: below it (with a factor-2 margin for the rounded permanent) integers are exact in f64.
 const TWO_52: f64 = 4_503_599_627_370_496.0;
 
+/// `2^e`, exactly, for `e` in the normal range `−1022..=1023`, built from its bits (`powi` is a
+/// library call, and this is on every slow side test).
+fn pow2(e: i32) -> f64 {
+    debug_assert!((-1022..=1023).contains(&e));
+    f64::from_bits(((e + 1023) as u64) << 52)
+}
+
 /// The exponent of the coarsest power-of-two grid holding all the (non-zero) values: the smallest
 /// exponent of their lowest set bits. `i32::MAX` if all are zero.
 fn grid_exponent<'a>(values: impl Iterator<Item = &'a f64>) -> i32 {
@@ -294,6 +301,13 @@ impl<const D: usize> FacetPlane<D> {
         }
     }
 
+    /// [`side`](Self::side) for a point the filter has already left undecided (`evaluate(p)`
+    /// gave `|value| ≤ bound`, or a NaN): the exact stages alone, without evaluating the bound
+    /// again (the caller's partition loop has just done so).
+    pub(crate) fn side_undecided(&self, p: &[f64; D], vertices: &[[f64; D]; D]) -> Sign {
+        self.side_beyond_filter(self.value(p), p, vertices)
+    }
+
     /// The stages after the filter (see [`side`](Self::side)), out of line: compiled once per
     /// dimension rather than into every caller's loop, so that the callers' hot paths stay
     /// small and their inlining does not change with the stages (a build whose inlining of
@@ -353,7 +367,7 @@ impl<const D: usize> FacetPlane<D> {
                 return false;
             };
             let half = -units / 2;
-            permanent * 2f64.powi(half) * 2f64.powi(-units - half) < TWO_52 / 2.0
+            permanent * pow2(half) * pow2(-units - half) < TWO_52 / 2.0
         };
         // The grid of all the entries is no coarser than `p`'s alone, so a permanent too large
         // in `p`'s units is too large in theirs: a rejection in D bit scans, which is every
