@@ -413,6 +413,12 @@ impl<const D: usize> FacetPlane<D> {
     pub fn refined_normal_direction(&self, vertices: &[[f64; D]; D]) -> [f64; D] {
         if D >= 4 {
             let refined = self.refined();
+            // A sliver's double-double cofactors cannot be certified to four ulps (their error
+            // bound scales with the permanent, they with the tiny |C|): unless the plane is
+            // there already, its `f64` cofactors say so, and the exact route is taken at once.
+            if refined.dd.get().is_none() && self.dd_normal_surely_uncertified() {
+                return self.exact_normal_direction(vertices);
+            }
             let dd = refined
                 .dd
                 .get_or_init(|| DdPlane::new(vertices, &self.permanents));
@@ -426,6 +432,19 @@ impl<const D: usize> FacetPlane<D> {
             }
         }
         self.exact_normal_direction(vertices)
+    }
+
+    /// Whether the double-double plane's cofactors surely miss the normal's certificate (see
+    /// [`DdPlane::normal_surely_uncertified`]), from the `f64` cofactors and their certified
+    /// errors: every exact cofactor is at most `|Ĉ_j| + error_j` (times `1 + 2^-40` there for
+    /// this sum's rounding).
+    pub(in crate::predicates) fn dd_normal_surely_uncertified(&self) -> bool {
+        let largest = self
+            .cofactors
+            .iter()
+            .zip(&self.error)
+            .fold(0.0f64, |m, (c, e)| m.max(c.abs() + e));
+        DdPlane::normal_surely_uncertified(largest, &self.permanents, DD_NORMAL_TOLERANCE)
     }
 
     /// The signed distance of `p` beyond the plane through `vertices` (the points this plane was

@@ -36,6 +36,7 @@ pub(in crate::predicates) trait MinorScalar: Copy {
 /// Masks are visited in increasing order, so S \ {j} (a smaller number) is always ready before S.
 /// `N` ≥ 2^D is the table size (64 up to D = 6, else 256: zeroing 4 KB per facet was a
 /// measurable share of a 6-D hull's time).
+#[inline(always)]
 pub(in crate::predicates) fn cofactor_minors<T: MinorScalar, const D: usize, const N: usize>(
     rows: &[[T; D]; D],
 ) -> [T; D] {
@@ -69,6 +70,15 @@ pub(in crate::predicates) fn cofactor_minors<T: MinorScalar, const D: usize, con
 /// [`cofactor_minors`] with the table size chosen from `D`; for D = 6, the same minors written
 /// out ([`minors6`](super::minors6::minors6)).
 pub(in crate::predicates) fn minors_of<T: MinorScalar, const D: usize>(
+    rows: &[[T; D]; D],
+) -> [T; D] {
+    minors_inlined(rows)
+}
+
+/// [`minors_of`], inlined into its caller: for a caller compiled with a target feature its
+/// scalar's arithmetic needs (the fused double-double products).
+#[inline(always)]
+pub(in crate::predicates) fn minors_inlined<T: MinorScalar, const D: usize>(
     rows: &[[T; D]; D],
 ) -> [T; D] {
     if D == 6 {
