@@ -4,7 +4,7 @@
 
 /// The number of elements of every subset of 0..8 given as a bit mask (a table: `count_ones` is
 /// not one instruction on baseline x86-64, and a plane asks it 2^D times).
-const SUBSET_SIZE: [u8; 256] = {
+pub(in crate::predicates) const SUBSET_SIZE: [u8; 256] = {
     let mut table = [0u8; 256];
     let mut mask = 1;
     while mask < 256 {
