@@ -90,8 +90,14 @@ impl Wide {
         }
     }
 
-    /// `self ± (f · m) · 2^(64·offset)`: the product limb by limb into a carry (addition) or a
-    /// borrow (subtraction), so no temporary is built.
+    /// `self ± (f · m) · 2^(64·offset)`: the product limb by limb into one carry (addition)
+    /// or one borrow (subtraction), so no temporary is built.
+    ///
+    /// Why one: `m_i·f + self_i + carry ≤ (2^64 − 1)² + 2(2^64 − 1) = 2^128 − 1` fits in
+    /// `u128`, so the sum's high half is the next carry; for subtraction, `p = m_i·f + borrow ≤
+    /// 2^128 − 2^64`, and `self_i − low(p)` borrows at most one more, so the next borrow,
+    /// `high(p) + 1 ≤ 2^64 − 1`, fits in `u64`. One dependency chain per limb instead of a
+    /// product carry and an addition carry.
     fn add_scaled(&mut self, f: u64, offset: usize, negative: bool, m: &Wide, len: usize) {
         if f == 0 {
             return;
@@ -99,22 +105,21 @@ impl Wide {
         let factor = u128::from(f);
         // Arithmetic modulo 2^(64·len): the unsigned product of f and m's two's-complement
         // limbs is f·m modulo it, added or subtracted according to the sign.
-        let mut product_carry = 0u128;
-        let mut carry = 0u64; // or borrow
-        for (limb, &factor_limb) in self.0[offset..len].iter_mut().zip(&m.0) {
-            let t = u128::from(factor_limb) * factor + product_carry;
-            let p = t as u64;
-            product_carry = t >> 64;
-            if negative {
-                let (d1, b1) = limb.overflowing_sub(p);
-                let (d2, b2) = d1.overflowing_sub(carry);
-                *limb = d2;
-                carry = u64::from(b1) + u64::from(b2);
-            } else {
-                let (s1, c1) = limb.overflowing_add(p);
-                let (s2, c2) = s1.overflowing_add(carry);
-                *limb = s2;
-                carry = u64::from(c1) + u64::from(c2);
+        let limbs = self.0[offset..len].iter_mut().zip(&m.0);
+        if negative {
+            let mut borrow = 0u64;
+            for (limb, &factor_limb) in limbs {
+                let p = u128::from(factor_limb) * factor + u128::from(borrow);
+                let (d, b) = limb.overflowing_sub(p as u64);
+                *limb = d;
+                borrow = (p >> 64) as u64 + u64::from(b);
+            }
+        } else {
+            let mut carry = 0u64;
+            for (limb, &factor_limb) in limbs {
+                let t = u128::from(factor_limb) * factor + u128::from(*limb) + u128::from(carry);
+                *limb = t as u64;
+                carry = (t >> 64) as u64;
             }
         }
     }
