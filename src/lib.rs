@@ -27,7 +27,7 @@
 // `deny`, not `forbid`: one call is allowed, the run-time dispatch of the double-double plane's
 // expansion to a version compiled with fused multiply-adds (predicates/double_double.rs,
 // `dd_minors`), where the processor was just found to have them. Measured: the raw wrench hull
-// at 4 × 16 took 14 % less time (docs/benchmarks.md). Nothing else may be unsafe.
+// at 4 × 16 took 11 % less time (docs/benchmarks.md). Nothing else may be unsafe.
 #![deny(unsafe_code)]
 
 pub mod geometry;

@@ -470,16 +470,15 @@ impl<const D: usize> Hull<D> {
 
     /// Exact side of internal point `x` relative to facet `id`.
     pub(in crate::hull) fn side(&self, id: FacetId, x: &[f64; D]) -> Sign {
-        if let Some(sign) = self.facets[id.index()].filter.filter_sign(x) {
-            return sign;
+        match self.facets[id.index()].filter.filter_sign(x) {
+            Some(sign) => sign,
+            None => self.side_undecided(id, x),
         }
-        // The exact path, on the shared plane: its cache serves the whole coplanar region.
-        let (plane, vertices) = self.exact_plane_of(id);
-        plane.side(x, || self.coords(vertices))
     }
 
     /// [`side`](Self::side) of a point the filter left undecided against facet `id`: the exact
-    /// stages alone.
+    /// stages alone, on the shared plane (its cache serves the whole coplanar region; its
+    /// filter is the facet's, so it would be undecided there too).
     fn side_undecided(&self, id: FacetId, x: &[f64; D]) -> Sign {
         let (plane, vertices) = self.exact_plane_of(id);
         plane.side_undecided(x, &self.coords(vertices))

@@ -191,7 +191,7 @@ impl MinorScalar for Fused {
 /// The minors of [`minors_of`] in double-double, with fused multiply-adds where the processor
 /// has them: the same numbers either way (see [`Fused`]), so the plane's error analysis is
 /// untouched. Raw wrench hulls build this plane for about two facets in five, and Dekker's
-/// products were most of its time (the raw wrench hull at 4 × 16 took 14 % less time with them
+/// products were most of its time (the raw wrench hull at 4 × 16 took 11 % less time with them
 /// fused, `cli/examples/profile_hull.rs`).
 fn dd_minors<const D: usize>(rows: &[[Dd; D]; D]) -> [Dd; D] {
     #[cfg(target_arch = "x86_64")]
