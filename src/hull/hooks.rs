@@ -71,6 +71,48 @@ pub trait StrategyHooks<const D: usize>: sealed::Sealed {
     /// (the points beyond a new facet are nearly always a ring or two away).
     fn claim_beyond(&mut self, id: FacetId) -> bool;
 
+    /// How the following expansions hand the outside points of the removed facets to the new
+    /// ones: each to the candidate it lies farthest beyond (`true`), or to the first found to
+    /// hold it (`false`). Either keeps the engine's invariants; the run starts with
+    /// [`Strategy::partitions_to_farthest`](super::Strategy::partitions_to_farthest), and a
+    /// strategy may change its mind once it knows more (the built-in `ClosestToOrigin` stops
+    /// asking for the farthest when its query is inside the starting hull).
+    ///
+    /// ```
+    /// use pqhull::hull::StrategyHooks;
+    /// use pqhull::{Hull, Step, Strategy};
+    ///
+    /// /// The full hull, expanding the first facet with outside points, each point handed to
+    /// /// the facet it lies farthest beyond (Qhull's `Qf`).
+    /// struct FirstFacetFarthestPoints;
+    /// impl<const D: usize> Strategy<D> for FirstFacetFarthestPoints {
+    ///     type Output = ();
+    ///     fn start(&mut self, _: &Hull<D>) {}
+    ///     fn step(&mut self, hull: &mut Hull<D>) -> Step {
+    ///         hull.partition_to_farthest(true);
+    ///         let next = hull.facets().find(|(_, f)| f.outside_len() > 0);
+    ///         match next.map(|(id, _)| id) {
+    ///             Some(id) => {
+    ///                 hull.expand(id);
+    ///                 Step::Continue
+    ///             }
+    ///             None => Step::Stop,
+    ///         }
+    ///     }
+    ///     fn finish(self, _: &Hull<D>) {}
+    /// }
+    /// let points = pqhull::rbox::generate::<3>(&pqhull::rbox::Family::UniformCube, 500, 3);
+    /// let (hull, ()) = Hull::try_with_strategy(&points, FirstFacetFarthestPoints)?;
+    /// assert!(hull.check().is_ok());
+    /// let mut vertices = hull.vertex_indices();
+    /// let mut full = Hull::try_new(&points)?.vertex_indices();
+    /// vertices.sort_unstable();
+    /// full.sort_unstable();
+    /// assert_eq!(vertices, full);
+    /// # Ok::<(), pqhull::HullError>(())
+    /// ```
+    fn partition_to_farthest(&mut self, farthest: bool);
+
     /// Facets removed by the last expansion (their slots are tombstoned).
     fn last_removed(&self) -> &[FacetId];
 
@@ -197,6 +239,10 @@ impl<const D: usize> StrategyHooks<D> for Hull<D> {
 
     fn claim_beyond(&mut self, id: FacetId) -> bool {
         Hull::claim_beyond(self, id)
+    }
+
+    fn partition_to_farthest(&mut self, farthest: bool) {
+        self.partition_farthest = farthest;
     }
 
     fn last_removed(&self) -> &[FacetId] {

@@ -1,5 +1,7 @@
 //! Known answers, errors and degenerate inputs of `Hull<D>`.
 
+use super::support::brute_inside::brute_force_inside;
+use pqhull::geometry::Rng;
 use pqhull::predicates::{Sign, orientation};
 use pqhull::{ClosestToOrigin, Hull, HullError};
 
@@ -278,6 +280,75 @@ fn closest_to_origin_outside_and_on_boundary() {
             .sqrt();
         assert!((gap - d).abs() < 1e-15);
     }
+}
+
+/// `ClosestToOrigin::partition_first_found_inside` changes the work, not the answer: on integer
+/// point sets holding the origin, the partial hull with either partition gives the exact
+/// distance of a brute force over every supporting hyperplane (in integers), its hull passes
+/// `Hull::check`, and the option did change the work somewhere (so the inside branch ran).
+#[test]
+fn first_found_partition_inside_gives_the_brute_force_distance() {
+    fn run<const D: usize>(seed: u64, count: usize, radius: u64) -> (usize, usize) {
+        let (mut inside, mut differed) = (0, 0);
+        let mut rng = Rng::new(seed);
+        for case in 0..24 {
+            // Integer points in a shell of radii 0.9·R to R, off-centre by a few percent (so
+            // that the nearest facet is not found at once): most are hull vertices. R is large
+            // enough that the set is not a certified exact grid (see `ExactGrid`), on which
+            // the engine always partitions to the farthest facet.
+            let mut points: Vec<[f64; D]> = Vec::with_capacity(count);
+            while points.len() < count {
+                let p: [f64; D] =
+                    std::array::from_fn(|_| rng.below(2 * radius + 1) as f64 - radius as f64);
+                let r2: f64 = p.iter().map(|c| c * c).sum();
+                let r = radius as f64;
+                if (0.81 * r * r..=r * r).contains(&r2) {
+                    points.push(std::array::from_fn(|c| {
+                        p[c] + ((c as f64 + 1.0) * r / 32.0).round()
+                    }));
+                }
+            }
+            let Some(exact) = brute_force_inside(&points) else {
+                continue; // the origin outside or on the boundary
+            };
+            if exact == 0.0 {
+                continue;
+            }
+            inside += 1;
+            let (hull, farthest) =
+                Hull::try_with_strategy(&points, ClosestToOrigin::new()).expect("full-dimensional");
+            hull.check().unwrap();
+            let first_found = ClosestToOrigin::new().partition_first_found_inside();
+            let (hull, first) = Hull::try_with_strategy(&points, first_found).unwrap();
+            hull.check().unwrap();
+            // Far from the boundary the inside distance is the floating-point normal's (its
+            // documented accuracy: 1e−11 relative; a wrong facet is off by far more here).
+            for (name, r) in [("farthest", &farthest), ("first found", &first)] {
+                assert!(
+                    (r.signed_distance - exact).abs() <= 1e-11 * exact,
+                    "{D}-D case {case}, {name}: {} against {exact}",
+                    r.signed_distance
+                );
+            }
+            if farthest.stats.facets_created != first.stats.facets_created {
+                differed += 1;
+            }
+        }
+        (inside, differed)
+    }
+    let runs = [
+        run::<3>(1, 60, 1 << 16),
+        run::<4>(2, 40, 1 << 12),
+        run::<5>(3, 24, 1 << 10),
+    ];
+    eprintln!("(sets holding the origin, of which the work differed): {runs:?}");
+    for (inside, _) in runs {
+        assert!(inside >= 15, "only {inside} sets held the origin");
+    }
+    assert!(
+        runs.iter().any(|&(_, differed)| differed > 0),
+        "the partition never changed the work"
+    );
 }
 
 #[test]

@@ -4,6 +4,7 @@
 //! is checked against.
 #![allow(dead_code)]
 
+pub mod brute_inside;
 pub mod cases;
 pub mod exact_lp;
 pub mod grasps;
