@@ -120,28 +120,13 @@ pub(in crate::grasp) trait WrenchSet {
 
 /// The cascade's reusable state: the hull's arena, the explicit sets' partial strategy, GJK's
 /// corral, the bracket's scratch and the slab test's workspace.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Default)]
 pub(in crate::grasp) struct Buffers {
     pub(in crate::grasp) hull: Option<Hull<6>>,
     pub(in crate::grasp) nearest: ClosestToOrigin<6>,
     pub(in crate::grasp) gjk: Gjk<6>,
     pub(in crate::grasp) bracket: BracketScratch,
     pub(in crate::grasp) flatness: Flatness,
-}
-
-impl Default for Buffers {
-    fn default() -> Self {
-        Self {
-            hull: None,
-            // Q1's hull starts from GJK's simplex around the origin whenever it holds it well,
-            // and the first facet found then partitions for less (docs/benchmarks.md, "Q1's
-            // partition once the origin is inside").
-            nearest: ClosestToOrigin::new().partition_first_found_inside(),
-            gjk: Gjk::default(),
-            bracket: BracketScratch::default(),
-            flatness: Flatness::default(),
-        }
-    }
 }
 
 /// The hull of `points` grown by `strategy`, in `hull`'s arena. `flats`, when given, names the

@@ -5,7 +5,7 @@ use super::expand::Scratch;
 use super::facet::MAX_FLATS;
 use super::facet::{Facet, FacetId};
 use super::planes::NO_SLOT;
-use super::{Hull, HullError, NO_FLAT};
+use super::{Hull, HullError, NO_FLAT, Partition};
 use crate::geometry::vector::{dot, norm, sub};
 use crate::predicates::{
     ExactGrid, FacetPlane, Sign, affinely_independent_subset, in_box, orientation,
@@ -53,7 +53,7 @@ impl<const D: usize> Hull<D> {
             flat_of: Vec::new(),
             flat_dim: 0,
             grid: None,
-            partition_farthest: false,
+            partition: Partition::FirstFound,
             start: None,
             trace: None,
             keep_coplanar: false,
@@ -72,7 +72,11 @@ impl<const D: usize> Hull<D> {
         partition_farthest: bool,
     ) -> Result<(), HullError> {
         self.started = Instant::now();
-        self.partition_farthest = partition_farthest;
+        self.partition = if partition_farthest {
+            Partition::Farthest
+        } else {
+            Partition::FirstFound
+        };
         let start = self.start.take();
         self.free_every_facet();
         self.next_serial = 0;
@@ -425,7 +429,7 @@ impl<const D: usize> Hull<D> {
                 // certainly beyond takes it (Qhull's default too): testing every candidate
                 // doubled the partition's cost on input whose points mostly end up inside, as
                 // cube corners with interior points.
-                if !self.partition_farthest {
+                if self.partition != Partition::Farthest {
                     break;
                 }
             } else if value >= -bound || value.is_nan() {

@@ -10,6 +10,24 @@
 
 use super::{FacetId, Hull, TraceReason};
 
+/// Where an expansion puts each outside point of the facets it removes: in the outside set of
+/// one new facet it lies strictly beyond (exactly decided), chosen as follows. Every choice
+/// gives the same hull and the same answers; they differ in the work (see
+/// [`StrategyHooks::set_partition`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Partition<const D: usize> {
+    /// The new facet it lies farthest beyond (Qhull's option `Qf`): every new facet tested.
+    Farthest,
+    /// The first new facet found to hold it, in creation order (Qhull's default): testing
+    /// stops there.
+    FirstFound,
+    /// The first found, the new facets tried in order of their planes' distance from this
+    /// point (the caller's coordinates), nearest first: a strategy that grows the hull
+    /// towards a query inside it keeps the points beyond the facets near the query in their
+    /// outside sets, at the cost of one sort of the new facets per expansion.
+    NearestFirst([f64; D]),
+}
+
 mod sealed {
     /// Only [`Hull`](crate::Hull) implements the hooks: the engine's invariants depend on them.
     pub trait Sealed {}
@@ -72,14 +90,16 @@ pub trait StrategyHooks<const D: usize>: sealed::Sealed {
     fn claim_beyond(&mut self, id: FacetId) -> bool;
 
     /// How the following expansions hand the outside points of the removed facets to the new
-    /// ones: each to the candidate it lies farthest beyond (`true`), or to the first found to
-    /// hold it (`false`). Either keeps the engine's invariants; the run starts with
-    /// [`Strategy::partitions_to_farthest`](super::Strategy::partitions_to_farthest), and a
-    /// strategy may change its mind once it knows more (the built-in `ClosestToOrigin` stops
-    /// asking for the farthest when its query is inside the starting hull).
+    /// ones (see [`Partition`]). Every choice keeps the engine's invariants; the run starts with
+    /// [`Partition::Farthest`] or [`Partition::FirstFound`] as
+    /// [`Strategy::partitions_to_farthest`](super::Strategy::partitions_to_farthest) says, and a
+    /// strategy may change its mind once it knows more (the built-in `ClosestToOrigin` switches
+    /// to [`Partition::NearestFirst`] once its query is inside the partial hull).
+    /// On input the engine certifies as an exact grid the partition is always the farthest
+    /// (a side test there is a dot product, and the farthest keeps grid points off the hull).
     ///
     /// ```
-    /// use pqhull::hull::StrategyHooks;
+    /// use pqhull::hull::{Partition, StrategyHooks};
     /// use pqhull::{Hull, Step, Strategy};
     ///
     /// /// The full hull, expanding the first facet with outside points, each point handed to
@@ -89,7 +109,7 @@ pub trait StrategyHooks<const D: usize>: sealed::Sealed {
     ///     type Output = ();
     ///     fn start(&mut self, _: &Hull<D>) {}
     ///     fn step(&mut self, hull: &mut Hull<D>) -> Step {
-    ///         hull.partition_to_farthest(true);
+    ///         hull.set_partition(Partition::Farthest);
     ///         let next = hull.facets().find(|(_, f)| f.outside_len() > 0);
     ///         match next.map(|(id, _)| id) {
     ///             Some(id) => {
@@ -111,7 +131,7 @@ pub trait StrategyHooks<const D: usize>: sealed::Sealed {
     /// assert_eq!(vertices, full);
     /// # Ok::<(), pqhull::HullError>(())
     /// ```
-    fn partition_to_farthest(&mut self, farthest: bool);
+    fn set_partition(&mut self, partition: Partition<D>);
 
     /// Facets removed by the last expansion (their slots are tombstoned).
     fn last_removed(&self) -> &[FacetId];
@@ -241,8 +261,8 @@ impl<const D: usize> StrategyHooks<D> for Hull<D> {
         Hull::claim_beyond(self, id)
     }
 
-    fn partition_to_farthest(&mut self, farthest: bool) {
-        self.partition_farthest = farthest;
+    fn set_partition(&mut self, partition: Partition<D>) {
+        self.partition = partition;
     }
 
     fn last_removed(&self) -> &[FacetId] {

@@ -7,7 +7,7 @@
 //! point inside the hull costs its side tests and nothing more.
 
 use super::build::first_non_finite;
-use super::{FacetId, FarthestPoint, Hull, HullError, Strategy};
+use super::{FacetId, FarthestPoint, Hull, HullError, Partition, Strategy};
 use crate::predicates::Sign;
 use std::ops::Range;
 use std::time::Instant;
@@ -97,7 +97,11 @@ impl<const D: usize> Hull<D> {
             return Ok((old..total, self.run_in_place(strategy)));
         }
         self.trace = None;
-        self.partition_farthest = strategy.partitions_to_farthest();
+        self.partition = if strategy.partitions_to_farthest() {
+            Partition::Farthest
+        } else {
+            Partition::FirstFound
+        };
         // The work counters keep counting; the elapsed time covers every call.
         self.started = Instant::now()
             .checked_sub(self.stats.elapsed)

@@ -37,7 +37,7 @@ pub use build::{MAX_DIMENSION, MIN_DIMENSION};
 pub use error::{HullError, InvariantViolation};
 pub use facet::{Facet, FacetId};
 pub use farthest_point::{FarthestPoint, FarthestReason};
-pub use hooks::StrategyHooks;
+pub use hooks::{Partition, StrategyHooks};
 pub use record::{Event, FacetSnapshot, Key, Replay, Trace, TraceContext, TraceReason};
 pub use strategy::{ReusableStrategy, Stats, Step, Strategy};
 
@@ -90,9 +90,8 @@ pub struct Hull<const D: usize> {
     /// When every point lies on one coarse power-of-two grid, the proof that the filter's value
     /// is exact for every side test among them ([`ExactGrid`]); `None` otherwise.
     grid: Option<ExactGrid<D>>,
-    /// Whether an outside point goes to the candidate facet it is farthest beyond rather than to
-    /// the first found ([`Strategy::partitions_to_farthest`]).
-    partition_farthest: bool,
+    /// Which new facet an outside point goes to ([`StrategyHooks::set_partition`]).
+    partition: Partition<D>,
     /// The initial simplex the next build starts from, when a caller knows a better one than the
     /// greedy choice ([`Hull::start_next_build_from`]); taken by the build.
     start: Option<[usize; build::MAX_SIMPLEX]>,

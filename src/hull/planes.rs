@@ -21,6 +21,8 @@ pub(in crate::hull) struct Plane<const D: usize> {
     pub(in crate::hull) vertices: [u32; D],
     /// Live facets using it; the slot is free at zero.
     users: u32,
+    /// The last visit epoch (`Planes::begin_visit`) that met this plane.
+    mark: u32,
 }
 
 /// No shared plane: the facet's own plane serves it (a region of one facet).
@@ -33,6 +35,8 @@ pub(in crate::hull) const NO_SLOT: u32 = u32::MAX;
 pub(in crate::hull) struct Planes<const D: usize> {
     slots: Vec<Plane<D>>,
     free: Vec<u32>,
+    /// The current visit epoch: a plane whose mark equals it was met in this visit.
+    epoch: u32,
 }
 
 impl<const D: usize> Planes<D> {
@@ -51,6 +55,7 @@ impl<const D: usize> Planes<D> {
             plane,
             vertices,
             users: 1,
+            mark: 0,
         };
         match self.free.pop() {
             Some(slot) => {
@@ -76,6 +81,30 @@ impl<const D: usize> Planes<D> {
         if entry.users == 0 {
             self.free.push(slot);
         }
+    }
+
+    /// Starts a visit in which [`first_visit`](Self::first_visit) tells each plane's first
+    /// meeting from later ones: the repartition's one candidate per region, found in one pass
+    /// with no sort.
+    pub(in crate::hull) fn begin_visit(&mut self) {
+        self.epoch = self.epoch.wrapping_add(1);
+        if self.epoch == 0 {
+            // Wrapped: marks from 2^32 visits ago could match; clear them, and never use 0
+            // (the mark of a fresh slot).
+            for slot in &mut self.slots {
+                slot.mark = 0;
+            }
+            self.epoch = 1;
+        }
+    }
+
+    /// Whether this visit meets plane `slot` for the first time (marking it met).
+    #[inline]
+    pub(in crate::hull) fn first_visit(&mut self, slot: u32) -> bool {
+        let entry = &mut self.slots[slot as usize];
+        let first = entry.mark != self.epoch;
+        entry.mark = self.epoch;
+        first
     }
 
     /// Plane `slot`.

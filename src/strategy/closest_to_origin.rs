@@ -5,7 +5,7 @@ use super::{Queued, ReusableStrategy, Stats, Step, Strategy};
 use crate::geometry::Support;
 use crate::geometry::vector::{dot, norm};
 use crate::geometry::{min_norm_point, min_norm_point_accurate, min_norm_point_exact, rescaled};
-use crate::hull::{FacetId, Hull, StrategyHooks, TraceContext};
+use crate::hull::{FacetId, Hull, Partition, StrategyHooks, TraceContext};
 use crate::predicates::Sign;
 use std::collections::BinaryHeap;
 use std::fmt;
@@ -70,14 +70,13 @@ pub struct ClosestToOrigin<const D: usize, S = NoSource> {
     /// deciding one (inside, near the boundary), and the seen facets' vertices.
     seen: Vec<FacetId>,
     seen_vertices: Vec<usize>,
-    /// See [`ClosestToOrigin::partition_first_found_inside`].
-    first_found_inside: bool,
+    /// Whether this run has switched the engine to [`Partition::NearestFirst`] (see
+    /// `step_nearest`).
+    nearest_first: bool,
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Phase {
-    /// Before the first step: choosing how the engine partitions (see `step_run`).
-    Start,
     /// Looking for the facet nearest the query point (or one that proves it outside).
     Nearest,
     /// The query point is outside the full hull; refining the nearest point.
@@ -362,38 +361,8 @@ impl<const D: usize, S> ClosestToOrigin<D, S> {
             error: None,
             seen: Vec::new(),
             seen_vertices: Vec::new(),
-            first_found_inside: false,
+            nearest_first: false,
         }
-    }
-
-    /// Once a run finds its query strictly inside the starting hull (every facet of the
-    /// initial simplex, or of the seeds' hull, has it strictly beneath), each outside point of
-    /// the facets an expansion removes goes to the first new facet found to hold it rather than
-    /// to the one it lies farthest beyond (see
-    /// [`Strategy::partitions_to_farthest`](crate::Strategy::partitions_to_farthest)). Either
-    /// partition gives the exact answer; they differ in work. The farthest keeps the points
-    /// beyond the nearest facet in its own outside set, so fewer expansions certify it; the
-    /// first found stops testing at the first facet. Which costs less depends on the input:
-    /// on force-closure grasps (128 wrenches) the first found takes a tenth to a sixth less
-    /// time, on 2,000 points on a 6-D sphere about a tenth more; so it is a choice, off by
-    /// default (the grasp layer turns it on). A query outside the starting hull keeps the
-    /// farthest for the whole run, and so does input the engine certifies as an exact grid
-    /// (its side tests are dot products, and the farthest keeps grid points off the hull).
-    ///
-    /// ```
-    /// use pqhull::{ClosestToOrigin, Hull};
-    /// let points = pqhull::rbox::generate::<4>(&pqhull::rbox::Family::UniformCube, 2000, 5);
-    /// let (_, farthest) = Hull::try_with_strategy(&points, ClosestToOrigin::new())?;
-    /// let strategy = ClosestToOrigin::new().partition_first_found_inside();
-    /// let (hull, first) = Hull::try_with_strategy(&points, strategy)?;
-    /// assert!(hull.check().is_ok());
-    /// assert!(first.is_inside());
-    /// assert!((first.signed_distance - farthest.signed_distance).abs() <= 1e-15);
-    /// # Ok::<(), pqhull::HullError>(())
-    /// ```
-    pub fn partition_first_found_inside(mut self) -> Self {
-        self.first_found_inside = true;
-        self
     }
 
     /// The implicit point source, to refill it between runs of a reused strategy (see the
@@ -455,6 +424,18 @@ impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
                 hull.refine_normal(id);
                 self.enqueue(hull, id);
                 continue;
+            }
+            if !self.nearest_first && entry.key < 0.0 {
+                // The largest upper bound of the query's height over a live facet is negative:
+                // the query is strictly inside the partial hull, and stays so. From now on the
+                // points of removed facets go to the first new facet holding them, nearest the
+                // query first: they stay beyond the facets the search is about, and testing
+                // stops at the first. Only the work changes (ARCHITECTURE.md, "Partition"):
+                // against the farthest facet, force-closure Q1 at 4 × 32 creates a quarter
+                // fewer facets, 6-D uniform-cube sets of 5,000 points take 2.6 times less time,
+                // cospherical sets about the same.
+                hull.set_partition(Partition::NearestFirst(self.query));
+                self.nearest_first = true;
             }
             hull.trace_choice(
                 id,
@@ -876,7 +857,8 @@ const NEAR_BOUNDARY: f64 = 1.0 / (1u64 << 33) as f64;
 impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
     fn start_run(&mut self, hull: &Hull<D>) {
         self.queue.clear();
-        self.phase = Phase::Start;
+        self.phase = Phase::Nearest;
+        self.nearest_first = false;
         self.answer = None;
         self.error = None;
         for (id, _) in hull.facets() {
@@ -886,19 +868,6 @@ impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
 
     fn step_run(&mut self, hull: &mut Hull<D>) -> Step {
         match self.phase {
-            Phase::Start => {
-                // See `partition_first_found_inside`: the query strictly inside the starting
-                // hull stays inside it.
-                if self.first_found_inside
-                    && hull
-                        .facets()
-                        .all(|(id, _)| hull.side_of(id, &self.query) == Sign::Negative)
-                {
-                    hull.partition_to_farthest(false);
-                }
-                self.phase = Phase::Nearest;
-                self.step_nearest(hull)
-            }
             Phase::Nearest => self.step_nearest(hull),
             Phase::Outside => self.step_outside(hull),
             Phase::Done => Step::Stop,
