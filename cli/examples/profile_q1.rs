@@ -65,18 +65,24 @@ fn main() {
         std::process::exit(1);
     }
     let (mut facets, mut points) = (0usize, 0usize);
+    // Each grasp's best time over the rounds, for the median beside the mean.
+    let mut best = vec![f64::INFINITY; chosen.len()];
     let started = Instant::now();
     for _ in 0..rounds {
-        for g in &chosen {
+        for (g, best) in chosen.iter().zip(&mut best) {
+            let one = Instant::now();
             let q = evaluator.evaluate(g).expect("evaluated above");
+            *best = best.min(one.elapsed().as_secs_f64() * 1e6);
             facets += q.stats.facets_created;
             points += q.stats.points_processed;
         }
     }
+    best.sort_unstable_by(f64::total_cmp);
+    let median = best[best.len() / 2];
     let runs = (rounds * chosen.len()).max(1) as f64;
     println!(
         "{} grasps of {count} ({}), {rounds} rounds: {:.1} µs per grasp, {:.0} facets created, \
-         {:.1} points processed",
+         {:.1} points processed; median of the grasps' best times {median:.1} µs",
         chosen.len(),
         if want_closure {
             "force closure"
