@@ -84,8 +84,8 @@ impl<const D: usize> Planes<D> {
     }
 
     /// Starts a visit in which [`first_visit`](Self::first_visit) tells each plane's first
-    /// meeting from later ones: the repartition's one candidate per region, found in one pass
-    /// with no sort.
+    /// meeting from later ones: the repartition's one candidate per region (for
+    /// `Partition::NearestFirst`), found in one pass.
     pub(in crate::hull) fn begin_visit(&mut self) {
         self.epoch = self.epoch.wrapping_add(1);
         if self.epoch == 0 {

@@ -432,8 +432,7 @@ impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
                 // query first: they stay beyond the facets the search is about, and testing
                 // stops at the first. Only the work changes (ARCHITECTURE.md, "Partition"):
                 // against the farthest facet, force-closure Q1 at 4 × 32 creates a quarter
-                // fewer facets, 6-D uniform-cube sets of 5,000 points take 2.6 times less time,
-                // cospherical sets about the same.
+                // fewer facets (`profile_q1`).
                 hull.set_partition(Partition::NearestFirst(self.query));
                 self.nearest_first = true;
             }
