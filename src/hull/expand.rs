@@ -58,6 +58,11 @@ pub(in crate::hull) struct Scratch<const D: usize> {
 /// few rings in 6-D, a hundredth of a large hull's arena.
 pub(in crate::hull) const RING_FACETS: usize = 1024;
 
+/// The most input points per dimension for which [`Hull::expand_to_support`] scans them all
+/// (`D` multiply-adds each, about what one new facet's plane costs per 25 points in 6-D); above
+/// it the expansion takes the facet's own farthest point, as [`Hull::expand`] does.
+pub const SUPPORT_SCAN_POINTS: usize = 256;
+
 /// One vertex's share of a ridge's hash: a ridge hashes to the wrapping sum of its vertices'
 /// shares, so that the D − 1 ridges of a new facet cost one share each (the facet's sum less the
 /// vertex opposite), with no sort. A sum of plain multiples would collide on vertex sets of
@@ -149,6 +154,46 @@ impl<const D: usize> Hull<D> {
         self.expand_with(from, point)
     }
 
+    /// The engine's side of [`StrategyHooks::expand_to_support`](crate::hull::StrategyHooks::expand_to_support).
+    ///
+    /// The scan reads every input point's value against the facet's plane (the filter's
+    /// floating-point part, a choice only) and proves the winner beyond exactly. The winner may
+    /// sit in another facet's outside set, which the partition chose by another rule; that
+    /// facet has the point strictly beyond it, so the expansion removes it (the facets a point
+    /// sees on a convex hull are connected, and the search starts at `id`, which it sees), and
+    /// the repartition drops the point from the orphans as the new apex.
+    pub(crate) fn expand_to_support(&mut self, id: FacetId) -> bool {
+        let Some(facet) = self.facets.get(id.index()).filter(|f| f.alive) else {
+            return false;
+        };
+        let Some((slot, _)) = facet.farthest else {
+            return false;
+        };
+        if self.points.len() > SUPPORT_SCAN_POINTS * D {
+            return self.expand(id);
+        }
+        let own = facet.outside[slot as usize];
+        let plane = &facet.filter;
+        let mut best = plane.value(&self.points[own as usize]);
+        let mut winner = own;
+        for (q, x) in self.points.iter().enumerate() {
+            let value = plane.value(x);
+            if value > best {
+                best = value;
+                winner = q as u32;
+            }
+        }
+        if winner != own && self.side_of_index(id, winner) != Sign::Positive {
+            winner = own; // the filter's value misled by rounding: nothing is lost
+        } else if winner != own && !self.facets[id.index()].outside.contains(&winner) {
+            if self.trace.is_some() {
+                self.record_claim(id, vec![winner as usize]);
+            }
+            self.facets[id.index()].outside.push(winner);
+        }
+        self.expand_with(id, winner as usize)
+    }
+
     /// The engine's side of [`StrategyHooks::expand_with`](crate::hull::StrategyHooks::expand_with).
     pub(crate) fn expand_with(&mut self, id: FacetId, point: usize) -> bool {
         let Some(facet) = self.facets.get_mut(id.index()).filter(|f| f.alive) else {
@@ -161,7 +206,7 @@ impl<const D: usize> Hull<D> {
         let p = point as u32;
         self.collect_visible(id, p);
         self.build_cone(p);
-        self.repartition();
+        self.repartition(p);
         self.stats.expansions += 1;
         self.stats.points_processed += 1;
         if self.trace.is_some() {
@@ -478,8 +523,9 @@ impl<const D: usize> Hull<D> {
         paired == scratch.ridges.len()
     }
 
-    /// Tombstones the visible facets and reassigns their outside points to the new facets.
-    fn repartition(&mut self) {
+    /// Tombstones the visible facets and reassigns their outside points, but `apex`, to the new
+    /// facets.
+    fn repartition(&mut self, apex: u32) {
         self.scratch.orphans.clear();
         for r in 0..self.scratch.removed.len() {
             let id = self.scratch.removed[r];
@@ -534,7 +580,9 @@ impl<const D: usize> Hull<D> {
             representatives.extend(keyed.iter().map(|&(_, id)| id));
             self.scratch.regions = keyed;
         }
-        for &q in &orphans {
+        // The apex is among the orphans when `expand_to_support` took it from another facet's
+        // set; it is a vertex now, beyond no new facet.
+        for &q in orphans.iter().filter(|&&q| q != apex) {
             self.assign(q, &representatives);
         }
         self.scratch.orphans = orphans;

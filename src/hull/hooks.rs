@@ -62,6 +62,52 @@ pub trait StrategyHooks<const D: usize>: sealed::Sealed {
     /// empty. Afterwards [`StrategyHooks::last_removed`] and [`StrategyHooks::last_created`] list what changed.
     fn expand(&mut self, id: FacetId) -> bool;
 
+    /// Adds the input point farthest beyond facet `id` among *all* the input points to the hull:
+    /// the support point along the facet's normal, a vertex of the full hull, wherever the
+    /// partition filed it (another facet's outside set, under [`Partition::FirstFound`] or
+    /// [`Partition::NearestFirst`]). The scan costs `D` multiply-adds per input point, so it
+    /// runs only for inputs of at most [`SUPPORT_SCAN_POINTS`](crate::hull::SUPPORT_SCAN_POINTS)
+    /// `· D` points; above that, and when the scan's winner is not exactly beyond, this is
+    /// [`expand`](Self::expand).
+    ///
+    /// Returns `false` (and changes nothing) when the facet is not live or its outside set is
+    /// empty (call [`claim_beyond`](Self::claim_beyond) first to fill it).
+    ///
+    /// ```
+    /// use pqhull::hull::{Partition, StrategyHooks};
+    /// use pqhull::{Hull, Step, Strategy};
+    ///
+    /// /// The full hull, each point filed under the first facet found beyond it, each expansion
+    /// /// by the support point of the first facet with outside points.
+    /// struct SupportPoints;
+    /// impl<const D: usize> Strategy<D> for SupportPoints {
+    ///     type Output = ();
+    ///     fn start(&mut self, _: &Hull<D>) {}
+    ///     fn step(&mut self, hull: &mut Hull<D>) -> Step {
+    ///         hull.set_partition(Partition::FirstFound);
+    ///         let next = hull.facets().find(|(_, f)| f.outside_len() > 0);
+    ///         match next.map(|(id, _)| id) {
+    ///             Some(id) => {
+    ///                 assert!(hull.expand_to_support(id));
+    ///                 Step::Continue
+    ///             }
+    ///             None => Step::Stop,
+    ///         }
+    ///     }
+    ///     fn finish(self, _: &Hull<D>) {}
+    /// }
+    /// let points = pqhull::rbox::generate::<4>(&pqhull::rbox::Family::UniformCube, 300, 5);
+    /// let (hull, ()) = Hull::try_with_strategy(&points, SupportPoints)?;
+    /// assert!(hull.check().is_ok());
+    /// let mut vertices = hull.vertex_indices();
+    /// let mut full = Hull::try_new(&points)?.vertex_indices();
+    /// vertices.sort_unstable();
+    /// full.sort_unstable();
+    /// assert_eq!(vertices, full);
+    /// # Ok::<(), pqhull::HullError>(())
+    /// ```
+    fn expand_to_support(&mut self, id: FacetId) -> bool;
+
     /// Adds input point `point`, which must be in facet `id`'s outside set, to the hull.
     ///
     /// Returns `false` (and changes nothing) when `id` is not live or `point` is not in its outside
@@ -247,6 +293,10 @@ impl<const D: usize> StrategyHooks<D> for Hull<D> {
     // Growing the hull.
     fn expand(&mut self, id: FacetId) -> bool {
         Hull::expand(self, id)
+    }
+
+    fn expand_to_support(&mut self, id: FacetId) -> bool {
+        Hull::expand_to_support(self, id)
     }
 
     fn expand_with(&mut self, id: FacetId, point: usize) -> bool {

@@ -35,6 +35,7 @@ mod volume;
 
 pub use build::{MAX_DIMENSION, MIN_DIMENSION};
 pub use error::{HullError, InvariantViolation};
+pub use expand::SUPPORT_SCAN_POINTS;
 pub use facet::{Facet, FacetId};
 pub use farthest_point::{FarthestPoint, FarthestReason};
 pub use hooks::{Partition, StrategyHooks};

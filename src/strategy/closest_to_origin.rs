@@ -398,8 +398,13 @@ impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
     }
 
     fn expand(&mut self, hull: &mut Hull<D>, id: FacetId, point: Option<usize>) {
+        // Once the query is inside, by the facet's support point among all the points (fewer
+        // facets for force-closure Q1 at 4 × 32: 531 instead of 606 per ellipsoid grasp);
+        // before, by its own farthest point (the support point made more facets on grasps that
+        // are not force closure, whose search ends outside).
         let expanded = match point {
             Some(p) => hull.expand_with(id, p),
+            None if self.nearest_first => hull.expand_to_support(id),
             None => hull.expand(id),
         };
         debug_assert!(expanded, "only facets with outside points are expanded");

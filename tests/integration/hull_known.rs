@@ -1,6 +1,6 @@
 //! Known answers, errors and degenerate inputs of `Hull<D>`.
 
-use super::support::brute_inside::brute_force_inside;
+use super::support::brute_inside::{brute_force_inside, integer_normal};
 use pqhull::geometry::Rng;
 use pqhull::hull::{Partition, StrategyHooks};
 use pqhull::predicates::{Sign, orientation};
@@ -308,12 +308,14 @@ impl<const D: usize> Strategy<D> for FarthestPartition<D> {
 /// The partition changes the work, not the answer: on integer point sets holding the origin,
 /// `ClosestToOrigin` (which partitions nearest the query first once the query is inside) and
 /// the same with the farthest partition both give the exact distance of a brute force over
-/// every supporting hyperplane (in integers), their hulls pass `Hull::check`, and the work
-/// differed somewhere (so the switch ran).
+/// every supporting hyperplane (in integers), and their hulls pass `Hull::check`. (On sets this
+/// small the expansions no longer depend on the partition: each adds the support point of its
+/// facet among all the points, `StrategyHooks::expand_to_support`; the partition decides where
+/// the other points wait, and what the assignment costs.)
 #[test]
-fn the_partition_changes_the_work_not_the_brute_force_distance() {
-    fn run<const D: usize>(seed: u64, count: usize, radius: u64) -> (usize, usize) {
-        let (mut inside, mut differed) = (0, 0);
+fn the_partition_does_not_change_the_brute_force_distance() {
+    fn run<const D: usize>(seed: u64, count: usize, radius: u64) -> usize {
+        let mut inside = 0;
         let mut rng = Rng::new(seed);
         for case in 0..24 {
             // Integer points in a shell of radii 0.9·R to R, off-centre by a few percent (so
@@ -354,25 +356,117 @@ fn the_partition_changes_the_work_not_the_brute_force_distance() {
                     r.signed_distance
                 );
             }
-            if farthest.stats.facets_created != first.stats.facets_created {
-                differed += 1;
-            }
         }
-        (inside, differed)
+        inside
     }
     let runs = [
         run::<3>(1, 60, 1 << 16),
         run::<4>(2, 40, 1 << 12),
         run::<5>(3, 24, 1 << 10),
     ];
-    eprintln!("(sets holding the origin, of which the work differed): {runs:?}");
-    for (inside, _) in runs {
+    for inside in runs {
         assert!(inside >= 15, "only {inside} sets held the origin");
     }
-    assert!(
-        runs.iter().any(|&(_, differed)| differed > 0),
-        "the partition never changed the work"
-    );
+}
+
+/// `StrategyHooks::expand_to_support` adds, at every step, a point farthest beyond the facet
+/// among *all* the input points (heights in integers), wherever the partition filed it; the
+/// hull it grows is checked and has the full hull's vertices.
+#[test]
+fn expansion_to_support_adds_the_farthest_of_all_points() {
+    /// The first facet with outside points, expanded by its support point; per step, whether
+    /// the point added was as high as the highest input point, and whether the facet's own
+    /// outside set held it.
+    struct Support<const D: usize> {
+        integers: Vec<[i128; D]>,
+        steps: usize,
+        taken_elsewhere: usize,
+    }
+    impl<const D: usize> Strategy<D> for Support<D> {
+        type Output = (usize, usize);
+        fn start(&mut self, _: &Hull<D>) {}
+        fn step(&mut self, hull: &mut Hull<D>) -> Step {
+            hull.set_partition(Partition::FirstFound);
+            let Some((id, facet)) = hull.facets().find(|(_, f)| f.outside_len() > 0) else {
+                return Step::Stop;
+            };
+            let p = &self.integers;
+            let vertices = facet.vertices();
+            let normal = integer_normal(p, &vertices);
+            let height = |x: &[i128; D]| {
+                (0..D)
+                    .map(|c| normal[c] * (x[c] - p[vertices[0]][c]))
+                    .sum::<i128>()
+            };
+            // Oriented by a point of the outside set (strictly beyond the facet).
+            let orientation = height(&p[facet.outside_set().next().unwrap()]).signum();
+            let highest = p.iter().map(|x| orientation * height(x)).max().unwrap();
+            let own: Vec<usize> = facet.outside_set().collect();
+            assert!(hull.expand_to_support(id));
+            // The apex is the one vertex every new facet has.
+            let created = hull.last_created();
+            let apex = hull
+                .facet(created[0])
+                .vertices()
+                .into_iter()
+                .find(|v| {
+                    created
+                        .iter()
+                        .all(|&c| hull.facet(c).vertices().contains(v))
+                })
+                .expect("the new facets share their apex");
+            assert_eq!(
+                orientation * height(&p[apex]),
+                highest,
+                "step {}",
+                self.steps
+            );
+            self.steps += 1;
+            if !own.contains(&apex) {
+                self.taken_elsewhere += 1;
+            }
+            Step::Continue
+        }
+        fn finish(self, _: &Hull<D>) -> (usize, usize) {
+            (self.steps, self.taken_elsewhere)
+        }
+    }
+    // Coordinates wide enough that no set is a certified exact grid (where the partition is
+    // always the farthest), small enough for the heights in `i128`.
+    fn run<const D: usize>(seed: u64, count: usize, radius: u64) -> usize {
+        let mut rng = Rng::new(seed);
+        let mut elsewhere = 0;
+        for _ in 0..8 {
+            let integers: Vec<[i128; D]> = (0..count)
+                .map(|_| {
+                    std::array::from_fn(|_| rng.below(2 * radius + 1) as i128 - radius as i128)
+                })
+                .collect();
+            let points: Vec<[f64; D]> = integers.iter().map(|x| x.map(|c| c as f64)).collect();
+            let strategy = Support {
+                integers,
+                steps: 0,
+                taken_elsewhere: 0,
+            };
+            let (hull, (steps, taken)) = Hull::try_with_strategy(&points, strategy).unwrap();
+            hull.check().unwrap();
+            let mut vertices = hull.vertex_indices();
+            let mut full = Hull::try_new(&points).unwrap().vertex_indices();
+            vertices.sort_unstable();
+            full.sort_unstable();
+            assert_eq!(vertices, full);
+            assert!(steps > 0);
+            elsewhere += taken;
+        }
+        elsewhere
+    }
+    let elsewhere = [
+        run::<3>(11, 200, 1 << 20),
+        run::<4>(12, 120, 1 << 16),
+        run::<6>(13, 60, 1000),
+    ];
+    eprintln!("points taken from another facet's outside set: {elsewhere:?}");
+    assert!(elsewhere.iter().all(|&n| n > 0), "{elsewhere:?}");
 }
 
 #[test]

@@ -26,6 +26,22 @@ pub fn determinant(mut m: Vec<Vec<i128>>) -> i128 {
     sign * m[n - 1][n - 1]
 }
 
+/// A normal of the hyperplane through the integer points `p[subset[i]]` (D of them): the
+/// cofactors of the rows `p_s − p_0` along a last row `e_k`; zero when they span no hyperplane.
+pub fn integer_normal<const D: usize>(p: &[[i128; D]], subset: &[usize]) -> [i128; D] {
+    let rows: Vec<[i128; D]> = subset[1..]
+        .iter()
+        .map(|&s| std::array::from_fn(|c| p[s][c] - p[subset[0]][c]))
+        .collect();
+    std::array::from_fn(|k| {
+        let mut m: Vec<Vec<i128>> = rows.iter().map(|r| r.to_vec()).collect();
+        let mut e = vec![0i128; D];
+        e[k] = 1;
+        m.push(e);
+        determinant(m)
+    })
+}
+
 /// The exact signed distance from the origin to the boundary of the hull of integer `points`
 /// (full-dimensional), by brute force: for every D-subset spanning a hyperplane, its integer
 /// normal (cofactors) and offset; a supporting hyperplane (every point on one side) with the
@@ -46,18 +62,7 @@ pub fn brute_force_inside<const D: usize>(points: &[[f64; D]]) -> Option<f64> {
     let mut best: Option<f64> = None;
     let mut subset: Vec<usize> = (0..D).collect();
     loop {
-        // The normal: cofactors of the rows p_s − p_0 along the last row e_k.
-        let rows: Vec<[i128; D]> = subset[1..]
-            .iter()
-            .map(|&s| std::array::from_fn(|c| p[s][c] - p[subset[0]][c]))
-            .collect();
-        let normal: [i128; D] = std::array::from_fn(|k| {
-            let mut m: Vec<Vec<i128>> = rows.iter().map(|r| r.to_vec()).collect();
-            let mut e = vec![0i128; D];
-            e[k] = 1;
-            m.push(e);
-            determinant(m)
-        });
+        let normal = integer_normal(&p, &subset);
         if normal.iter().any(|&c| c != 0) {
             let dot = |x: &[i128; D]| (0..D).map(|c| normal[c] * x[c]).sum::<i128>();
             let offset = dot(&p[subset[0]]);
