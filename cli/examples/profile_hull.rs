@@ -11,7 +11,8 @@
 //! `minkowski-qinf`: the materialised sum of 3 contacts, Q∞ by the full method), cone edges (8),
 //! rounds (5). The grasp is the suite's (`pqhull_cli::bench::hull::grasp_for`, seed 1). Prints
 //! the best and mean time per call, then on standard error the last run's work: the hull's
-//! `Stats` (facets created, points processed) and final facets, or the evaluation's `Stats`.
+//! `Stats` (facets created, points processed) and final facets, or the evaluation's `Stats`;
+//! built with `--features qhull`, Qhull's final and created facets on the same points too.
 
 use pqhull::grasp::metrics::gws_volume;
 use pqhull::grasp::{Evaluator, Method, Metric};
@@ -83,4 +84,14 @@ fn main() {
         total / rounds as f64
     );
     eprintln!("{work}");
+    // Qhull's counts on the same points (built with `--features qhull`), untimed: its final
+    // (triangulated) facets and how many it created, against pqhull's above.
+    #[cfg(feature = "qhull")]
+    match pqhull::qhull_baseline::qhull_stats(&points) {
+        Ok(q) => eprintln!(
+            "qhull: {} facets in the end, about {} created, {} vertices",
+            q.facets, q.facets_created, q.vertices
+        ),
+        Err(e) => eprintln!("qhull: {e}"),
+    }
 }
