@@ -13,7 +13,7 @@
 //! is the suite's (1), so `corners 6 2000` is the suite's 6-D corners row. Prints the best and
 //! mean time per build and the last build's work: its `Stats` (a build that ran a second phase,
 //! `hull/coplanar.rs`, processed 2(D + 1) points beyond its expansions), final facets and
-//! vertices.
+//! vertices; built with `--features qhull`, Qhull's final and created facets too.
 
 use pqhull::hull::Hull;
 use pqhull::rbox::{self, Family};
@@ -43,6 +43,15 @@ fn run<const D: usize>(family: &Family, n: usize, rounds: usize) {
         total / rounds as f64
     );
     println!("{work}");
+    // Qhull's counts on the same points (built with `--features qhull`), untimed.
+    #[cfg(feature = "qhull")]
+    match pqhull::qhull_baseline::qhull_stats(&points) {
+        Ok(q) => println!(
+            "qhull: {} facets in the end, about {} created, {} vertices",
+            q.facets, q.facets_created, q.vertices
+        ),
+        Err(e) => println!("qhull: {e}"),
+    }
 }
 
 fn main() {
