@@ -244,7 +244,8 @@ pub(in crate::predicates) struct DdPlane<const D: usize> {
 
 impl<const D: usize> DdPlane<D> {
     /// The plane through `vertices`, every coordinate in `[−1, 1]` (`None` otherwise), with the
-    /// permanents of |minor| behind each cofactor as the filter computed them.
+    /// permanents of |minor| behind each cofactor as the filter computed them; from the rows
+    /// `v_k − v_(k−1)` when `chained` (as [`FacetPlane`]'s chained plane), else `v_k − v0`.
     ///
     /// Error analysis: the rows `v_k − v0` are exact double-doubles, so only the expansion and the
     /// final dot product round. Under the model `fl(x ∘ y) = (x ∘ y)(1 + δ)`, `|δ| ≤ U2`, the
@@ -256,6 +257,7 @@ impl<const D: usize> DdPlane<D> {
     pub(in crate::predicates) fn new(
         vertices: &[[f64; D]; D],
         permanents: &[f64; D],
+        chained: bool,
     ) -> Option<Self> {
         if !vertices.iter().flatten().all(|x| x.abs() <= 1.0) {
             return None;
@@ -263,8 +265,9 @@ impl<const D: usize> DdPlane<D> {
         let base = vertices[0];
         let mut rows = [[Dd::ZERO; D]; D];
         for k in 1..D {
+            let from = if chained { &vertices[k - 1] } else { &base };
             for j in 0..D {
-                rows[k][j] = Dd::difference(vertices[k][j], base[j]);
+                rows[k][j] = Dd::difference(vertices[k][j], from[j]);
             }
         }
         let minors = dd_minors(&rows);

@@ -2,7 +2,9 @@
 
 use super::minors::{MinorScalar, Tracked, minors_of};
 use super::{Sign, double_double::DdPlane, exact, wide::ExactPlane};
+use std::mem::ManuallyDrop;
 use std::sync::OnceLock;
+use std::sync::atomic::{AtomicU8, Ordering};
 
 /// Unit roundoff of `f64` (round to nearest).
 const U: f64 = f64::EPSILON / 2.0;
@@ -87,7 +89,7 @@ pub struct FacetPlane<const D: usize> {
     cofactors: [f64; D],
     error: [f64; D],
     /// Permanents of |minor| behind each cofactor (for the exact-arithmetic test of `side`).
-    permanents: [f64; D],
+    pub(in crate::predicates) permanents: [f64; D],
     /// `UNDERFLOW_SLACK` if every vertex coordinate is in `[−1, 1]`, `+∞` otherwise (filter off).
     slack: f64,
     /// A bound that holds for every `p` in `[−1, 1]^D` at once (see [`evaluate`](Self::evaluate)):
@@ -99,7 +101,7 @@ pub struct FacetPlane<const D: usize> {
 }
 
 /// The stages behind the filter, each built on first use.
-#[derive(Clone, Debug, Default)]
+#[derive(Debug, Default)]
 struct Refined<const D: usize> {
     /// The double-double plane (D ≥ 4; for D ≤ 3 `robust` is faster); `None` inside when a
     /// vertex coordinate is outside `[−1, 1]`.
@@ -108,30 +110,147 @@ struct Refined<const D: usize> {
     /// exact test computes a full determinant). Inline (about 1 KB in 6-D), so that a plane
     /// allocates once whatever the stages it needs.
     exact: OnceLock<Option<ExactPlane<D>>>,
+    /// The same hyperplane from better rows, when there are any (see [`better_order`]): its
+    /// filter and double-double stage decide much of what this plane's could not.
+    rebased: OnceLock<Box<Rebased<D>>>,
+    /// Whether [`better_order`] was asked: 0 (not yet, the default), [`NO_ORDER`] (no better
+    /// rows) or [`REBUILT`] (`rebased` holds them). A plain flag rather than a `OnceLock`, whose
+    /// initialisation cost 1 % of a raw wrench hull for the common answer, none.
+    rebase: AtomicU8,
 }
 
-impl<const D: usize> FacetPlane<D> {
-    /// Caches the hyperplane through `vertices` (`vertices[0]` is the base `v0`).
-    ///
-    /// Costs `D·2^(D−1)` multiply-adds (1024 for D = 8) and no allocation: all the
-    /// (D−1)×(D−1) minors are computed at once by a dynamic programme over column subsets.
-    ///
-    /// The error bounds of [`evaluate`](Self::evaluate) are only finite when every vertex coordinate
-    /// is in `[−1, 1]`; otherwise the plane is still usable, but [`side`](Self::side) always takes
-    /// the exact path.
-    ///
-    /// Compile-time error if `D` is 0 or greater than 8.
-    pub fn new(vertices: &[[f64; D]; D]) -> Self {
+const NO_ORDER: u8 = 1;
+const REBUILT: u8 = 2;
+
+impl<const D: usize> Clone for Refined<D> {
+    fn clone(&self) -> Self {
+        Refined {
+            dd: self.dd.clone(),
+            exact: self.exact.clone(),
+            rebased: self.rebased.clone(),
+            rebase: AtomicU8::new(self.rebase.load(Ordering::Relaxed)),
+        }
+    }
+}
+
+/// A plane through the same vertices as another, listed in another order (see
+/// [`better_order`]) and built from consecutive differences ([`FacetPlane::chained`]), with
+/// its own double-double stage: what the filter and that stage decide for it, they decide for
+/// the original, up to the permutation's sign.
+#[derive(Clone, Debug)]
+struct Rebased<const D: usize> {
+    /// Only its filter is read (its own cache is never built: the double-double stage is
+    /// `dd` below, the exact one the original plane's), so there is nothing of it to drop;
+    /// `ManuallyDrop` keeps the drop glue of `FacetPlane` from recursing through this type,
+    /// which kept the compiler from inlining it where facets are overwritten (`push_facet`:
+    /// the 4-D sphere of `pqh bench hull` 11 % slower).
+    plane: ManuallyDrop<FacetPlane<D>>,
+    vertices: [[f64; D]; D],
+    /// Whether the permutation is odd (its orientation determinant is the original's negated).
+    odd: bool,
+    dd: OnceLock<Option<DdPlane<D>>>,
+}
+
+/// The largest coordinate of `a − b` in magnitude.
+fn distance_inf<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
+    (0..D).fold(0.0f64, |m, j| m.max((a[j] - b[j]).abs()))
+}
+
+impl<const D: usize> Drop for Rebased<D> {
+    fn drop(&mut self) {
+        debug_assert!(
+            self.plane.refined.get().is_none(),
+            "a rebased plane's own cache was built: it would leak"
+        );
+    }
+}
+
+/// How many binary orders of magnitude the product of the rows' sizes must shrink by for a
+/// plane to be rebuilt in another order: far above the ordinary spread of random facets, so
+/// that only planes whose vertices gather in tight clusters are rebuilt.
+const REBASE_BITS: i64 = 24;
+
+/// The binary exponent of the largest coordinate of `a − b` (its size, for [`better_order`]).
+fn size_exponent<const D: usize>(a: &[f64; D], b: &[f64; D]) -> i64 {
+    ((distance_inf(a, b).to_bits() >> 52) & 0x7ff) as i64
+}
+
+/// An order of the vertices whose consecutive differences have a product of sizes smaller than
+/// that of the rows `v_k − v0` by more than [`REBASE_BITS`] (sizes as binary exponents,
+/// summed), with whether the permutation is odd; `None` when there is none. The order starts
+/// at the vertex nearest the others (the best single base) and goes on to the nearest vertex
+/// not yet taken.
+///
+/// Why it matters: the filter's and the double-double plane's error bounds are proportional to
+/// the permanents of the rows, about the product of their sizes, while the determinant is the
+/// same for every such set of rows. A facet with vertices in tight clusters of nearly
+/// coincident points has rows from its base to another cluster that are large and nearly
+/// parallel, their determinant tiny against their permanent: the filter and the double-double
+/// stage fail and the exact stage decides (46 % of the tests reaching the double-double stage
+/// on the 6-D clusters of `pqh bench hull`). Chained through each cluster, the rows are the
+/// small exact differences within it and one jump per cluster, and the filter decides.
+pub(in crate::predicates) fn better_order<const D: usize>(
+    vertices: &[[f64; D]; D],
+) -> Option<([usize; D], bool)> {
+    // Every pair's size once (D(D − 1)/2 differences).
+    let mut size = [[0i64; D]; D];
+    let mut closest = i64::MAX;
+    for i in 0..D {
+        for j in i + 1..D {
+            let s = size_exponent(&vertices[i], &vertices[j]);
+            (size[i][j], size[j][i]) = (s, s);
+            closest = closest.min(s);
+        }
+    }
+    let first: i64 = size[0][1..].iter().sum();
+    // No chain of D − 1 differences is smaller than D − 1 of the closest pair's: the common
+    // case (no clusters) ends here.
+    if (D as i64 - 1).saturating_mul(closest) + REBASE_BITS >= first {
+        return None;
+    }
+    let spread = |b: usize| -> i64 { size[b].iter().sum::<i64>() - size[b][b] };
+    let start = (0..D).min_by_key(|&b| spread(b))?;
+    let mut order = [start; D];
+    let mut taken = [false; D];
+    taken[start] = true;
+    let mut chain = 0;
+    for i in 1..D {
+        let last = order[i - 1];
+        let next = (0..D)
+            .filter(|&k| !taken[k])
+            .min_by_key(|&k| size[last][k])?;
+        order[i] = next;
+        taken[next] = true;
+        chain += size[last][next];
+    }
+    if chain + REBASE_BITS >= first {
+        return None;
+    }
+    let inversions = (0..D)
+        .flat_map(|i| (i + 1..D).map(move |j| (i, j)))
+        .filter(|&(i, j)| order[i] > order[j])
+        .count();
+    Some((order, inversions % 2 == 1))
+}
+
+/// The body of [`FacetPlane::new`] (rows `v_k − v0`) and of `FacetPlane::chained` (rows
+/// `v_k − v_(k−1)`, when `$chained`): a macro rather than a shared function, because `new` as
+/// a call to a shared function (or a wrapper around one) compiled differently — inlined into
+/// `push_facet`, or with its 6-D minors 16 % slower — and `new` is the hot path of every hull.
+macro_rules! plane_through {
+    ($vertices:expr, $chained:expr) => {{
         const { assert!(D >= 1 && D <= 8, "FacetPlane supports 1 ≤ D ≤ 8") };
+        let vertices: &[[f64; D]; D] = $vertices;
         let base = vertices[0];
         let in_range = vertices.iter().flatten().all(|x| x.abs() <= 1.0);
 
-        // The rows e_k = v_k − v0 (rounded) with their magnitudes, once (the expansion reads each
-        // entry up to 2^(D−2) times).
+        // The rows e_k = v_k − v0 (rounded) with their magnitudes, once (the expansion reads
+        // each entry up to 2^(D−2) times); chained, e_k = v_k − v_(k−1).
         let mut rows = [[Tracked::ZERO; D]; D];
         for k in 1..D {
+            let from = if $chained { &vertices[k - 1] } else { &base };
             for j in 0..D {
-                let value = vertices[k][j] - base[j];
+                let value = vertices[k][j] - from[j];
                 rows[k][j] = Tracked {
                     value,
                     magnitude: value.abs(),
@@ -139,6 +258,7 @@ impl<const D: usize> FacetPlane<D> {
             }
         }
         let minors = minors_of(&rows);
+
 
         // Error analysis (why these constants are safe; u = 2^-53).
         // * Entries: ê = fl(v_k − v0) = (v_k − v0)(1 + δ), |δ| ≤ u (a difference that underflows is
@@ -182,6 +302,31 @@ impl<const D: usize> FacetPlane<D> {
             coarse: coarse_bound(&error, &base, slack),
             refined: OnceLock::new(),
         }
+    }};
+}
+
+impl<const D: usize> FacetPlane<D> {
+    /// Caches the hyperplane through `vertices` (`vertices[0]` is the base `v0`).
+    ///
+    /// Costs `D·2^(D−1)` multiply-adds (1024 for D = 8) and no allocation: all the
+    /// (D−1)×(D−1) minors are computed at once by a dynamic programme over column subsets.
+    ///
+    /// The error bounds of [`evaluate`](Self::evaluate) are only finite when every vertex coordinate
+    /// is in `[−1, 1]`; otherwise the plane is still usable, but [`side`](Self::side) always takes
+    /// the exact path.
+    ///
+    /// Compile-time error if `D` is 0 or greater than 8.
+    pub fn new(vertices: &[[f64; D]; D]) -> Self {
+        plane_through!(vertices, false)
+    }
+
+    /// The plane through `vertices` from the rows `v_k − v_(k−1)` instead of `v_k − v0`: the
+    /// same exact cofactors (the rows are a unit-triangular transform of the others), with
+    /// error bounds from the chain's permanents, far smaller when the vertices are ordered so
+    /// that consecutive ones are close (see `better_order`). Its side tests still measure
+    /// `p − v0`.
+    pub(in crate::predicates) fn chained(vertices: &[[f64; D]; D]) -> Self {
+        plane_through!(vertices, true)
     }
 
     /// Approximate value of `det[v1 − v0; …; v(D−1) − v0; p − v0]` (the determinant whose sign is
@@ -317,20 +462,47 @@ impl<const D: usize> FacetPlane<D> {
         if self.value_is_exact(vertices, p) {
             return exact::sign_of(value);
         }
-        if D >= 4 && p.iter().all(|x| x.is_finite()) {
-            let refined = self.refined();
-            let dd = refined
+        let finite = p.iter().all(|x| x.is_finite());
+        if D >= 3
+            && finite
+            && let Some(rebased) = self.rebased(vertices)
+        {
+            let orient = |sign: Sign| if rebased.odd { sign.flip() } else { sign };
+            let (value, bound) = rebased.plane.evaluate(p);
+            if value > bound {
+                return orient(Sign::Positive);
+            }
+            if -value > bound {
+                return orient(Sign::Negative);
+            }
+            if D >= 4 {
+                let dd = rebased.dd.get_or_init(|| {
+                    DdPlane::new(&rebased.vertices, &rebased.plane.permanents, true)
+                });
+                if let Some(sign) = dd
+                    .as_ref()
+                    .and_then(|plane| plane.sign(&rebased.plane.base, p, rebased.plane.slack))
+                {
+                    return orient(sign);
+                }
+            }
+        } else if D >= 4 && finite {
+            let dd = self
+                .refined()
                 .dd
-                .get_or_init(|| DdPlane::new(vertices, &self.permanents));
+                .get_or_init(|| DdPlane::new(vertices, &self.permanents, false));
             if let Some(sign) = dd
                 .as_ref()
                 .and_then(|plane| plane.sign(&self.base, p, self.slack))
             {
                 return sign;
             }
-            if let Some(sign) = self.exact_plane(vertices).and_then(|plane| plane.side(p)) {
-                return sign;
-            }
+        }
+        if D >= 4
+            && finite
+            && let Some(sign) = self.exact_plane(vertices).and_then(|plane| plane.side(p))
+        {
+            return sign;
         }
         exact::orientation(vertices, p)
     }
@@ -421,7 +593,7 @@ impl<const D: usize> FacetPlane<D> {
             }
             let dd = refined
                 .dd
-                .get_or_init(|| DdPlane::new(vertices, &self.permanents));
+                .get_or_init(|| DdPlane::new(vertices, &self.permanents, false));
             if let Some(plane) = dd {
                 let (cofactors, error) = plane.cofactors_with_error();
                 let largest = cofactors.iter().fold(0.0f64, |m, c| m.max(c.abs()));
@@ -483,7 +655,7 @@ impl<const D: usize> FacetPlane<D> {
         vertices: &[[f64; D]; D],
     ) -> (Option<DdPlane<D>>, [f64; D], f64) {
         (
-            DdPlane::new(vertices, &self.permanents),
+            DdPlane::new(vertices, &self.permanents, false),
             self.base,
             self.slack,
         )
@@ -492,6 +664,43 @@ impl<const D: usize> FacetPlane<D> {
     /// The slower stages' cache, allocated on first use.
     fn refined(&self) -> &Refined<D> {
         self.refined.get_or_init(Box::default)
+    }
+
+    /// The plane rebuilt from better rows, if [`better_order`] finds them: decided once per
+    /// plane whose slower stages exist (every answer is right whichever a race between threads
+    /// gives: `None` leaves the test to this plane's own stages).
+    fn rebased(&self, vertices: &[[f64; D]; D]) -> Option<&Rebased<D>> {
+        if let Some(refined) = self.refined.get() {
+            match refined.rebase.load(Ordering::Relaxed) {
+                NO_ORDER => return None,
+                REBUILT => return refined.rebased.get().map(|r| &**r),
+                _ => {}
+            }
+        }
+        match better_order(vertices) {
+            None => {
+                // Without the stages' cache (3-D, or before the double-double stage), the
+                // question is asked again next time: cheaper than allocating the cache.
+                if let Some(refined) = self.refined.get() {
+                    refined.rebase.store(NO_ORDER, Ordering::Relaxed);
+                }
+                None
+            }
+            Some((order, odd)) => {
+                let refined = self.refined();
+                let rebased = refined.rebased.get_or_init(|| {
+                    let vertices = order.map(|k| vertices[k]);
+                    Box::new(Rebased {
+                        plane: ManuallyDrop::new(FacetPlane::chained(&vertices)),
+                        vertices,
+                        odd,
+                        dd: OnceLock::new(),
+                    })
+                });
+                refined.rebase.store(REBUILT, Ordering::Relaxed);
+                Some(rebased)
+            }
+        }
     }
 
     /// The cofactor vector `C`: `det[v1 − v0; …; v(D−1) − v0; p − v0] = Σ_j C_j·(p_j − v0_j)`
