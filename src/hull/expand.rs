@@ -58,9 +58,10 @@ pub(in crate::hull) struct Scratch<const D: usize> {
 /// few rings in 6-D, a hundredth of a large hull's arena.
 pub(in crate::hull) const RING_FACETS: usize = 1024;
 
-/// The most input points per dimension for which [`Hull::expand_to_support`] scans them all
-/// (`D` multiply-adds each, about what one new facet's plane costs per 25 points in 6-D); above
-/// it the expansion takes the facet's own farthest point, as [`Hull::expand`] does.
+/// The most input points per dimension for which
+/// [`StrategyHooks::expand_to_support`](crate::hull::StrategyHooks::expand_to_support) scans them
+/// all (`D` multiply-adds each, about what one new facet's plane costs per 25 points in 6-D);
+/// above it the expansion takes the facet's own farthest point, as a plain expansion does.
 pub const SUPPORT_SCAN_POINTS: usize = 256;
 
 /// One vertex's share of a ridge's hash: a ridge hashes to the wrapping sum of its vertices'
