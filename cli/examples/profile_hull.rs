@@ -8,8 +8,9 @@
 //! ```
 //!
 //! Arguments: the row (`wrenches-hull`, `wrenches-volume`: 4 contacts; `minkowski-hull`,
-//! `minkowski-qinf`: the materialised sum of 3 contacts, Q∞ by the full method), cone edges (8),
-//! rounds (5). The grasp is the suite's (`pqhull_cli::bench::hull::grasp_for`, seed 1). Prints
+//! `minkowski-qinf`: the materialised sum of 3 contacts, Q∞ by the full method;
+//! `wrenches-census`, `minkowski-census`: the hull's rows, then, untimed, the exact census of
+//! its ridges, `pqhull_cli::bench::census`), cone edges (8), rounds (5). The grasp is the suite's (`pqhull_cli::bench::hull::grasp_for`, seed 1). Prints
 //! the best and mean time per call, then on standard error the last run's work: the hull's
 //! `Stats` (facets created, points processed) and final facets, or the evaluation's `Stats`;
 //! built with `--features qhull`, Qhull's final and created facets on the same points too.
@@ -17,13 +18,14 @@
 use pqhull::grasp::metrics::gws_volume;
 use pqhull::grasp::{Evaluator, Method, Metric};
 use pqhull::hull::Hull;
+use pqhull_cli::bench::census;
 use pqhull_cli::bench::hull::{grasp_for, minkowski_sum};
 use std::time::Instant;
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let usage = "usage: profile_hull wrenches-hull|wrenches-volume|minkowski-hull|minkowski-qinf \
-                 [edges] [rounds]";
+    let usage = "usage: profile_hull wrenches-hull|wrenches-volume|wrenches-census|\
+                 minkowski-hull|minkowski-qinf|minkowski-census [edges] [rounds]";
     let row = args.first().map(String::as_str).unwrap_or("");
     let number = |i: usize, default: usize| -> usize {
         args.get(i).map_or(default, |s| {
@@ -35,8 +37,8 @@ fn main() {
     };
     let (edges, rounds) = (number(1, 8), number(2, 5).max(1));
     let (contacts, full_sum) = match row {
-        "wrenches-hull" | "wrenches-volume" => (4, false),
-        "minkowski-hull" | "minkowski-qinf" => (3, true),
+        "wrenches-hull" | "wrenches-volume" | "wrenches-census" => (4, false),
+        "minkowski-hull" | "minkowski-qinf" | "minkowski-census" => (3, true),
         _ => {
             eprintln!("{usage}");
             std::process::exit(2);
@@ -58,13 +60,20 @@ fn main() {
     .expect("Q∞ by the full method");
     // The work of the last run, printed after the loop so that no printing is timed.
     let (mut best, mut total, mut work) = (f64::INFINITY, 0.0, String::new());
+    let mut hull = None;
     for _ in 0..rounds {
         let started = Instant::now();
         work = match row {
-            "wrenches-hull" | "minkowski-hull" => match Hull::try_new(&points) {
-                Ok(h) => format!("{:?}, {} facets in the end", h.stats(), h.facet_count()),
-                Err(e) => e.to_string(),
-            },
+            "wrenches-hull" | "minkowski-hull" | "wrenches-census" | "minkowski-census" => {
+                match Hull::try_new(&points) {
+                    Ok(h) => {
+                        let work = format!("{:?}, {} facets in the end", h.stats(), h.facet_count());
+                        hull = Some(h);
+                        work
+                    }
+                    Err(e) => e.to_string(),
+                }
+            }
             "wrenches-volume" => match gws_volume(&grasp) {
                 Ok(v) => format!("volume {v:e}"),
                 Err(e) => e.to_string(),
@@ -84,6 +93,21 @@ fn main() {
         total / rounds as f64
     );
     eprintln!("{work}");
+    if let (true, Some(hull)) = (row.ends_with("census"), &hull) {
+        let c = census::ridge_census(hull);
+        println!(
+            "ridges {}: exactly flat {}, ratio below 2^-106 {}, in [2^-106, 2^-53) {}, at least \
+             2^-53 {}; facets with a ridge below 2^-53 {} of {}; smallest ratio 2^{}",
+            c.ridges,
+            c.zero,
+            c.below_double_double,
+            c.below_double,
+            c.above_double,
+            c.facets_beyond_double,
+            hull.facet_count(),
+            c.smallest_log2
+        );
+    }
     // Qhull's counts on the same points (built with `--features qhull`), untimed: its final
     // (triangulated) facets and how many it created, against pqhull's above.
     #[cfg(feature = "qhull")]

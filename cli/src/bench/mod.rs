@@ -10,6 +10,7 @@
 //! * [`compare`] — the full hull against the partial hull on the point sets.
 //! * [`hull`] — the hull suite: pqhull's full hull against Qhull on `rbox` families, integer
 //!   grids and grasp wrench sets.
+//! * [`census`] — how hard a finished hull's ridges are to decide, in exact arithmetic.
 //! * [`stats`] — medians, means, ratios and quantiles.
 //!
 //! Times are wall clock on whatever else the machine is doing: compare rows of one run. Long
@@ -28,6 +29,7 @@
 //! ```
 
 pub mod batch;
+pub mod census;
 pub mod compare;
 pub mod gws;
 pub mod hull;

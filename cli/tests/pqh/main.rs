@@ -16,4 +16,5 @@ mod hull_queries;
 mod penetration_cmd;
 mod plan_descent;
 mod reproduce;
+mod ridge_census;
 mod trace_cmd;
