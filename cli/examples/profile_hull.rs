@@ -107,6 +107,35 @@ fn main() {
             hull.facet_count(),
             c.smallest_log2
         );
+        // Best of the rounds, each from cold caches.
+        let check = (0..rounds)
+            .map(|_| census::check_ridges(hull))
+            .min_by_key(|c| c.elapsed)
+            .expect("at least one round");
+        println!(
+            "checking every ridge with pqhull's predicates: {:.3} ms for {} tests, {} facets not \
+             locally convex",
+            check.elapsed.as_secs_f64() * 1e3,
+            check.tests,
+            check.not_convex
+        );
+        // Qhull's whole hull of the same points, timed the same way (with `--features qhull`).
+        #[cfg(feature = "qhull")]
+        {
+            let qhull = (0..rounds)
+                .map(|_| {
+                    let started = Instant::now();
+                    let facets = pqhull::qhull_baseline::qhull_facet_count(&points);
+                    (started.elapsed(), facets)
+                })
+                .min_by_key(|r| r.0)
+                .expect("at least one round");
+            println!(
+                "qhull_facet_count (Qhull's hull, as pqh bench hull times it): {:.3} ms, {:?} facets",
+                qhull.0.as_secs_f64() * 1e3,
+                qhull.1
+            );
+        }
     }
     // Qhull's counts on the same points (built with `--features qhull`), untimed: its final
     // (triangulated) facets and how many it created, against pqhull's above.

@@ -16,7 +16,7 @@
 //!
 //! ```
 //! use pqhull::Hull;
-//! use pqhull_cli::bench::census::ridge_census;
+//! use pqhull_cli::bench::census::{check_ridges, ridge_census};
 //!
 //! // A cube's corners: every ridge between two triangles of one square face is exactly flat.
 //! let corners: Vec<[f64; 3]> = (0..8)
@@ -26,13 +26,15 @@
 //! assert_eq!(census.ridges, 18);
 //! assert_eq!(census.zero, 6);
 //! assert_eq!(census.above_double, 12);
+//! assert_eq!(check_ridges(&Hull::try_new(&corners)?).not_convex, 0);
 //! # Ok::<(), pqhull::HullError>(())
 //! ```
 
 use num_bigint::BigInt;
 use num_traits::{Signed, Zero};
 use pqhull::Hull;
-use pqhull::predicates::{Sign, orientation};
+use pqhull::predicates::{FacetPlane, Sign, orientation};
+use std::time::{Duration, Instant};
 
 /// The ridges of a hull binned by the Hadamard ratio of their convexity determinants (see the
 /// [module](self)).
@@ -103,6 +105,53 @@ pub fn ridge_census<const D: usize>(hull: &Hull<D>) -> RidgeCensus {
         census.facets_beyond_double += usize::from(hard);
     }
     census
+}
+
+/// What [`check_ridges`] measured.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RidgeCheck {
+    /// Wall time of the whole check, one thread.
+    pub elapsed: Duration,
+    /// Ridge tests made: every facet against the opposite vertex of each neighbour (each ridge
+    /// twice).
+    pub tests: usize,
+    /// Facets whose neighbours' opposite vertices were not all on one side (a hull that is not
+    /// locally convex; 0 for a correct one).
+    pub not_convex: usize,
+}
+
+/// Decides, with pqhull's own predicates from cold caches, that `hull` is locally convex at
+/// every ridge: for each facet a new [`FacetPlane`] (the engine's filter, then its
+/// double-double and exact stages as they are needed) and one side test per neighbour's
+/// opposite vertex. What a program that only *checks* this exact hull's ridges spends, whatever
+/// built it: the lower end of what building it can cost with these predicates.
+pub fn check_ridges<const D: usize>(hull: &Hull<D>) -> RidgeCheck {
+    let started = Instant::now();
+    let (mut tests, mut not_convex) = (0, 0);
+    for (_, facet) in hull.facets() {
+        let vertices = facet.vertices();
+        let coords: [[f64; D]; D] = std::array::from_fn(|i| hull.point(vertices[i]));
+        let plane = FacetPlane::new(&coords);
+        let (mut positive, mut negative) = (false, false);
+        for neighbor in facet.neighbors() {
+            let other = hull.facet(neighbor).vertices();
+            let Some(&opposite) = other.iter().find(|v| !vertices.contains(v)) else {
+                continue;
+            };
+            tests += 1;
+            match plane.side(&hull.point(opposite), || coords) {
+                Sign::Positive => positive = true,
+                Sign::Negative => negative = true,
+                Sign::Zero => {}
+            }
+        }
+        not_convex += usize::from(positive && negative);
+    }
+    RidgeCheck {
+        elapsed: started.elapsed(),
+        tests,
+        not_convex,
+    }
 }
 
 /// The exact sign of `det[v1 − v0; …; v(D−1) − v0; p − v0]` and `⌊log2⌋` of its Hadamard ratio
