@@ -67,7 +67,8 @@ fn main() {
             "wrenches-hull" | "minkowski-hull" | "wrenches-census" | "minkowski-census" => {
                 match Hull::try_new(&points) {
                     Ok(h) => {
-                        let work = format!("{:?}, {} facets in the end", h.stats(), h.facet_count());
+                        let work =
+                            format!("{:?}, {} facets in the end", h.stats(), h.facet_count());
                         hull = Some(h);
                         work
                     }

@@ -81,16 +81,24 @@ pub(in crate::predicates) fn minors_of<T: MinorScalar, const D: usize>(
 pub(in crate::predicates) fn minors_inlined<T: MinorScalar, const D: usize>(
     rows: &[[T; D]; D],
 ) -> [T; D] {
-    if D == 6 {
-        // The copies in and out are of a constant size and vanish once inlined.
-        let six: [[T; 6]; 6] = std::array::from_fn(|i| std::array::from_fn(|j| rows[i][j]));
-        let minors = super::minors6::minors6(&six);
-        return std::array::from_fn(|j| minors[j]);
+    // D = 3 to 6 written out (`minors_small`, `minors6`). The copies in and out are of a
+    // constant size and vanish once inlined.
+    macro_rules! written {
+        ($n:literal, $f:path) => {{
+            let rows: [[T; $n]; $n] = std::array::from_fn(|i| std::array::from_fn(|j| rows[i][j]));
+            let minors = $f(&rows);
+            std::array::from_fn(|j| minors[j])
+        }};
     }
-    if D <= 6 {
-        cofactor_minors::<T, D, 64>(rows)
-    } else {
-        cofactor_minors::<T, D, 256>(rows)
+    // Otherwise the table as small as 2^D allows: it is zeroed for every plane.
+    match D {
+        3 => written!(3, super::minors_small::minors3),
+        4 => written!(4, super::minors_small::minors4),
+        5 => written!(5, super::minors_small::minors5),
+        6 => written!(6, super::minors6::minors6),
+        0..=2 => cofactor_minors::<T, D, 4>(rows),
+        7 => cofactor_minors::<T, D, 128>(rows),
+        _ => cofactor_minors::<T, D, 256>(rows),
     }
 }
 

@@ -30,14 +30,24 @@ fn lifted_square(lift: f64) -> RidgeCensus {
 #[test]
 fn the_census_bins_a_ridge_by_its_known_ratio() {
     let flat = lifted_square(0.0);
-    assert_eq!((flat.zero, flat.below_double, flat.below_double_double), (1, 0, 0));
+    assert_eq!(
+        (flat.zero, flat.below_double, flat.below_double_double),
+        (1, 0, 0)
+    );
     let thin = lifted_square(2f64.powi(-80));
-    assert_eq!((thin.zero, thin.below_double, thin.below_double_double), (0, 1, 0));
+    assert_eq!(
+        (thin.zero, thin.below_double, thin.below_double_double),
+        (0, 1, 0)
+    );
     // ⌊log2(2^−80/√2)⌋ = −81.
     assert_eq!(thin.smallest_log2, -81);
     let thinner = lifted_square(2f64.powi(-120));
     assert_eq!(
-        (thinner.zero, thinner.below_double, thinner.below_double_double),
+        (
+            thinner.zero,
+            thinner.below_double,
+            thinner.below_double_double
+        ),
         (0, 0, 1)
     );
     assert_eq!(thinner.smallest_log2, -121);
