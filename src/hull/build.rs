@@ -40,6 +40,7 @@ impl<const D: usize> Hull<D> {
         Hull {
             points: Vec::new(),
             scale: 1.0,
+            inv_scale: 1.0,
             facets: Vec::new(),
             free: Vec::new(),
             planes: Default::default(),
@@ -107,6 +108,7 @@ impl<const D: usize> Hull<D> {
         }
         let scale = exact_power_of_two_scale(input);
         self.scale = scale;
+        self.inv_scale = 1.0 / scale;
         self.points
             .extend(input.iter().map(|p| p.map(|x| x * scale)));
         self.grid = ExactGrid::of(&self.points);
@@ -231,6 +233,16 @@ impl<const D: usize> Hull<D> {
         }
     }
 
+    /// `x / scale`: back in the caller's units.
+    #[inline]
+    fn unscale(&self, x: f64) -> f64 {
+        if self.inv_scale.is_finite() {
+            x * self.inv_scale
+        } else {
+            x / self.scale
+        }
+    }
+
     pub(in crate::hull) fn coords(&self, vertices: &[u32; D]) -> [[f64; D]; D] {
         vertices.map(|v| self.points[v as usize])
     }
@@ -242,7 +254,7 @@ impl<const D: usize> Hull<D> {
             return;
         }
         let normal = self.exact_normal(id);
-        let offset = dot(normal, self.points[facet.vertices[0] as usize]) / self.scale;
+        let offset = self.unscale(dot(normal, self.points[facet.vertices[0] as usize]));
         let facet = &mut self.facets[id.index()];
         facet.normal = normal;
         facet.offset = offset;
@@ -343,7 +355,7 @@ impl<const D: usize> Hull<D> {
             normal = exact.map(|c| c / length);
             precise = true;
         }
-        let offset = dot(normal, coords[0]) / self.scale;
+        let offset = self.unscale(dot(normal, coords[0]));
         (NO_SLOT, plane, inv_norm, normal, precise, offset)
     }
 

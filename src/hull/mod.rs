@@ -70,6 +70,10 @@ pub struct Hull<const D: usize> {
     /// Input points scaled by `scale` (a power of two), so that |coordinate| ≤ 1.
     points: Vec<[f64; D]>,
     scale: f64,
+    /// `1 / scale`, exact (a power of two) unless it overflows (`scale` = 2^−1024, for input
+    /// near `f64::MAX`): multiplying by it is dividing by `scale`, bit for bit, without a
+    /// division's latency on every new facet (see `unscale`).
+    inv_scale: f64,
     facets: Vec<Facet<D>>,
     /// Tombstoned slots, reusable by later expansions.
     free: Vec<FacetId>,

@@ -348,3 +348,37 @@ fn grasp_quality_scales_with_its_wrenches() {
         }
     }
 }
+
+/// A cube of half-width `s` at every scale, up to coordinates near `f64::MAX` (where the
+/// engine's internal scale is 2^−1024 and its inverse overflows): every facet's offset is `s`
+/// to two ulps (the unit normal's rounding) and its normal a signed axis.
+#[test]
+fn facet_offsets_are_right_at_every_scale() {
+    for s in [1.7e308, f64::MAX, 1e200, 3.0, 1e-300, 2.5e-308] {
+        let corners: Vec<[f64; 3]> = (0..8)
+            .map(|i| std::array::from_fn(|c| if i >> c & 1 == 1 { s } else { -s }))
+            .collect();
+        let hull = Hull::try_new(&corners).unwrap();
+        assert_eq!(hull.facet_count(), 12, "s = {s:e}");
+        for (_, facet) in hull.facets() {
+            let offset = facet.offset();
+            assert!(
+                (offset - s).abs() <= 2.0 * f64::EPSILON * s,
+                "s = {s:e}: offset {offset:e}"
+            );
+            let n = facet.normal();
+            assert_eq!(
+                n.iter()
+                    .filter(|x| (x.abs() - 1.0).abs() <= f64::EPSILON)
+                    .count(),
+                1,
+                "s = {s:e}: {n:?}"
+            );
+            assert_eq!(
+                n.iter().filter(|x| **x == 0.0).count(),
+                2,
+                "s = {s:e}: {n:?}"
+            );
+        }
+    }
+}
