@@ -3,10 +3,13 @@
 //! vertices and the neighbour's opposite vertex), evaluated exactly, binned by its size against
 //! the product of its rows' lengths (its *Hadamard ratio*, in `[0, 1]`).
 //!
-//! A floating-point evaluation of a determinant in unit roundoff `u` has an error bound of at
-//! least `u` times the product of the rows' lengths (rounding one entry of one row moves the
-//! determinant by up to that much), so a ridge whose ratio is below `2^−53` cannot be decided
-//! in `f64` with any such bound, and one below `2^−106` not in double-double either. This is a
+//! The a-priori error bounds of a determinant evaluated in unit roundoff `u` (Laplace
+//! expansion or elimination: pqhull's filter and its double-double stage among them) are `u`
+//! times the rows' products up to a factor that depends on the dimension (the permanent of the
+//! entries' magnitudes, at most `D^(D/2)` times the product of the rows' lengths), and
+//! perturbing the entries by a relative `u` moves the determinant by up to about that much. A
+//! ridge whose ratio is far below `2^−53` is out of reach of such `f64` bounds, one far below
+//! `2^−106` of double-double's; the bins are the scales, not sharp thresholds. This is a
 //! property of the output and the caller's points, not of the engine that built the hull:
 //! `pqh bench hull`'s raw Minkowski sums are the family where it matters (docs/benchmarks.md,
 //! "Why the raw sums stay below 1.0").
