@@ -366,10 +366,31 @@ fn big_to_parts(x: &BigInt) -> (f64, i32) {
     (if x.is_negative() { -m } else { m }, e)
 }
 
+/// `det[v1 − v0; …; v(D−1) − v0; p − v0]` exactly in `BigInt`, rounded once: `(m, e)` with
+/// the determinant `≈ m·2^e` (relative error below 2^−52), `(0.0, 0)` when it is zero.
+///
+/// # Panics
+/// If a coordinate is not finite.
+pub(in crate::predicates) fn orientation_parts<const D: usize>(
+    vertices: &[[f64; D]; D],
+    p: &[f64; D],
+) -> (f64, i64) {
+    let mut all: Vec<&[f64]> = vertices.iter().map(|v| &v[..]).collect();
+    all.push(&p[..]);
+    let s = scale(&all);
+    let det = bareiss_value(integer_differences(&s, D));
+    if det.is_zero() {
+        return (0.0, 0);
+    }
+    // The rows are in units of 2^emin: the determinant in units of 2^(D·emin).
+    let (m, e) = big_to_parts(&det);
+    (m, i64::from(e) + D as i64 * i64::from(s.emin))
+}
+
 /// The exact determinant of a square integer matrix (Bareiss elimination with row swaps: after
 /// step k every remaining entry is a (k+1)×(k+1) minor, so the division by the previous pivot is
-/// exact).
-fn bareiss_value(mut a: Vec<Vec<BigInt>>) -> BigInt {
+/// exact). The crate's one exact integer determinant.
+pub(crate) fn bareiss_value(mut a: Vec<Vec<BigInt>>) -> BigInt {
     let n = a.len();
     if n == 0 {
         return BigInt::one();

@@ -75,6 +75,7 @@ mod minors_small;
 mod tests;
 mod wide;
 
+pub(crate) use exact::bareiss_value;
 pub use exact::exact_cofactor_direction;
 pub(crate) use exact::lowest_bit_exponent;
 pub use filter::FacetPlane;
@@ -118,6 +119,31 @@ impl Sign {
 /// If any coordinate is NaN or infinite (a caller bug: the hull engine rejects such input).
 pub fn orientation<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> Sign {
     exact::orientation(vertices, p)
+}
+
+/// The exact value of [`orientation`]'s determinant, `det[v1 − v0; …; v(D−1) − v0; p − v0]`,
+/// as `(m, e)` with the determinant `≈ m·2^e`: computed exactly (Bareiss elimination in `BigInt`
+/// on the coordinates as integers) and rounded once, so `m` is within 2^−52 of it relative and
+/// `e` may lie far outside `f64`'s range (a determinant of 2^−3000 is `(m, −3000 − …)`).
+/// `(0.0, 0)` exactly when the determinant is zero.
+///
+/// For measuring how near to degenerate a configuration is (how far below its rows' sizes the
+/// determinant lies); a side test needs only [`orientation`], which is much cheaper.
+///
+/// ```
+/// use pqhull::predicates::orientation_value;
+///
+/// // A unit square lifted at one corner by 2^−80: the determinant is −2^−80.
+/// let facet = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 2f64.powi(-80)]];
+/// let (m, e) = orientation_value(&facet, &[0.0, 1.0, 0.0]);
+/// assert_eq!(m * 2f64.powi((e + 80) as i32), -1.0);
+/// assert_eq!(orientation_value(&facet, &[0.5, 0.0, 0.0]), (0.0, 0));
+/// ```
+///
+/// # Panics
+/// If any coordinate is NaN or infinite.
+pub fn orientation_value<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> (f64, i64) {
+    exact::orientation_parts(vertices, p)
 }
 
 /// Indices of a maximal affinely independent subset of `points`, found with exact (rational)

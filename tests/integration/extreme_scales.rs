@@ -382,3 +382,63 @@ fn facet_offsets_are_right_at_every_scale() {
         }
     }
 }
+
+/// `predicates::orientation_value` against the rational determinant of the same rows, over
+/// coordinates spread across the exponent range and near-degenerate rows (a point nudged off
+/// the others' hyperplane by a few ulps): the same sign, zero exactly when it is zero, and the
+/// value within 2^−52 relative.
+#[test]
+fn orientation_value_is_the_rational_determinant() {
+    use num_traits::Signed;
+    use pqhull::predicates::orientation_value;
+    fn run<const D: usize>(rng: &mut Rng) {
+        for case in 0..60 {
+            let e = rng.below(1200) as i32 - 600;
+            let mut points: [[f64; D]; 7] = [[0.0; D]; 7];
+            for p in &mut points {
+                *p = std::array::from_fn(|_| times_power_of_two(rng.uniform_in(-1.0, 1.0), e));
+            }
+            let vertices: [[f64; D]; D] = std::array::from_fn(|i| points[i]);
+            let mut p = points[D];
+            if case % 3 == 0 {
+                // On the line through two vertices, then (every other time) nudged by an ulp.
+                p = std::array::from_fn(|j| {
+                    vertices[0][j] + (vertices[1][j] - vertices[0][j]) * 0.5
+                });
+                if case % 2 == 0 {
+                    p[0] = f64::from_bits(p[0].to_bits() + 1);
+                }
+            }
+            let rows: Vec<Vec<BigRational>> = (1..=D)
+                .map(|k| {
+                    let row = if k < D { &vertices[k] } else { &p };
+                    (0..D)
+                        .map(|j| rational(row[j]) - rational(vertices[0][j]))
+                        .collect()
+                })
+                .collect();
+            let exact = determinant(rows);
+            let (m, e) = orientation_value(&vertices, &p);
+            assert_eq!(m == 0.0, exact.is_zero(), "D = {D}, case {case}");
+            if m == 0.0 {
+                assert_eq!(e, 0);
+                continue;
+            }
+            let power = BigRational::from_integer(num_bigint::BigInt::from(1) << e.unsigned_abs());
+            let value = if e >= 0 {
+                rational(m) * power
+            } else {
+                rational(m) / power
+            };
+            let error = ((value - exact.clone()) / exact).abs();
+            assert!(
+                error <= rational(2f64.powi(-52)),
+                "D = {D}, case {case}: relative error {error}"
+            );
+        }
+    }
+    let mut rng = Rng::new(52);
+    run::<3>(&mut rng);
+    run::<4>(&mut rng);
+    run::<6>(&mut rng);
+}

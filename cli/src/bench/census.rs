@@ -14,8 +14,8 @@
 //! `pqh bench hull`'s raw Minkowski sums are the family where it matters (docs/benchmarks.md,
 //! "Why the raw sums stay below 1.0").
 //!
-//! The exact determinants are fraction-free Gaussian elimination (Bareiss) in `BigInt` on the
-//! coordinates scaled to integers: a few microseconds each, for a measurement, not a predicate.
+//! The exact determinants are [`orientation_value`]'s (Bareiss elimination in `BigInt`): a few
+//! microseconds each, for a measurement, not a predicate.
 //!
 //! ```
 //! use pqhull::Hull;
@@ -33,10 +33,8 @@
 //! # Ok::<(), pqhull::HullError>(())
 //! ```
 
-use num_bigint::BigInt;
-use num_traits::{Signed, Zero};
 use pqhull::Hull;
-use pqhull::predicates::{FacetPlane, Sign, orientation};
+use pqhull::predicates::{FacetPlane, Sign, orientation, orientation_value};
 use std::time::{Duration, Instant};
 
 /// The ridges of a hull binned by the Hadamard ratio of their convexity determinants (see the
@@ -160,110 +158,32 @@ pub fn check_ridges<const D: usize>(hull: &Hull<D>) -> RidgeCheck {
 /// The exact sign of `det[v1 − v0; …; v(D−1) − v0; p − v0]` and `⌊log2⌋` of its Hadamard ratio
 /// (`None` when it is zero), to within one (the row lengths are rounded).
 fn hadamard_log2<const D: usize>(vertices: &[[f64; D]; D], p: &[f64; D]) -> (Sign, Option<i64>) {
-    // Every coordinate as an integer times 2^lowest.
-    let points: Vec<&[f64; D]> = vertices.iter().chain(std::iter::once(p)).collect();
-    let parts: Vec<[(BigInt, i64); D]> = points
-        .iter()
-        .map(|q| (**q).map(|x| integer_parts(x).expect("a finite hull coordinate")))
-        .collect();
-    let lowest = parts
-        .iter()
-        .flatten()
-        .filter(|(m, _)| !m.is_zero())
-        .map(|&(_, e)| e)
-        .min()
-        .unwrap_or(0);
-    let scaled: Vec<Vec<BigInt>> = parts
-        .iter()
-        .map(|q| q.iter().map(|(m, e)| m << (e - lowest) as usize).collect())
-        .collect();
-    let mut rows: Vec<Vec<BigInt>> = scaled[1..]
-        .iter()
-        .map(|q| q.iter().zip(&scaled[0]).map(|(a, b)| a - b).collect())
-        .collect();
-    // log2 of the product of the rows' lengths, in units of 2^lowest.
-    let lengths: f64 = rows
-        .iter()
-        .map(|row| {
-            let top = row.iter().map(|x| x.bits()).max().unwrap_or(0);
-            let shift = top.saturating_sub(60);
-            let squares: f64 = row
-                .iter()
-                .map(|x| {
-                    let x = f64_of(&(x >> shift as usize));
-                    x * x
-                })
-                .sum();
-            0.5 * squares.log2() + shift as f64
-        })
-        .sum();
-    let det = bareiss(&mut rows);
-    if det.is_zero() {
+    let (m, e) = orientation_value(vertices, p);
+    if m == 0.0 {
         return (Sign::Zero, None);
     }
-    let sign = if det.is_positive() {
+    let sign = if m > 0.0 {
         Sign::Positive
     } else {
         Sign::Negative
     };
-    let shift = det.bits().saturating_sub(60);
-    let log2 = f64_of(&(det.abs() >> shift as usize)).log2() + shift as f64;
+    let lengths: f64 = (1..=D)
+        .map(|k| log2_length(if k < D { &vertices[k] } else { p }, &vertices[0]))
+        .sum();
+    let log2 = m.abs().log2() + e as f64;
     (sign, Some((log2 - lengths).floor() as i64))
 }
 
-/// `x = m · 2^e` with `m` an integer; `None` if `x` is not finite.
-fn integer_parts(x: f64) -> Option<(BigInt, i64)> {
-    if !x.is_finite() {
-        return None;
+/// `log2 |a − b|` for `a ≠ b` (a difference of distinct floats is never zero), without overflow
+/// of the difference (halved when it overflows) or of the squares.
+fn log2_length<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
+    let mut row: [f64; D] = std::array::from_fn(|j| a[j] - b[j]);
+    let mut doubled = 0.0;
+    if row.iter().any(|x| !x.is_finite()) {
+        row = std::array::from_fn(|j| a[j] * 0.5 - b[j] * 0.5);
+        doubled = 1.0;
     }
-    if x == 0.0 {
-        return Some((BigInt::zero(), 0));
-    }
-    let bits = x.to_bits();
-    let exponent = ((bits >> 52) & 0x7ff) as i64;
-    let fraction = bits & ((1u64 << 52) - 1);
-    let (m, e) = if exponent == 0 {
-        (fraction, -1074)
-    } else {
-        (fraction | (1u64 << 52), exponent - 1075)
-    };
-    let m = BigInt::from(m);
-    Some((if x < 0.0 { -m } else { m }, e))
-}
-
-/// A `BigInt` below 2^61 in magnitude as `f64` (rounded).
-fn f64_of(x: &BigInt) -> f64 {
-    let (sign, digits) = x.to_u64_digits();
-    let magnitude = digits.first().copied().unwrap_or(0) as f64;
-    if sign == num_bigint::Sign::Minus {
-        -magnitude
-    } else {
-        magnitude
-    }
-}
-
-/// The determinant of a square integer matrix by fraction-free elimination (every division is
-/// exact), with row swaps for zero pivots.
-fn bareiss(m: &mut [Vec<BigInt>]) -> BigInt {
-    let n = m.len();
-    let mut negate = false;
-    let mut previous = BigInt::from(1);
-    for k in 0..n {
-        let Some(pivot) = (k..n).find(|&r| !m[r][k].is_zero()) else {
-            return BigInt::zero();
-        };
-        if pivot != k {
-            m.swap(pivot, k);
-            negate = !negate;
-        }
-        for i in k + 1..n {
-            for j in k + 1..n {
-                let value = (&m[i][j] * &m[k][k] - &m[i][k] * &m[k][j]) / &previous;
-                m[i][j] = value;
-            }
-        }
-        previous = m[k][k].clone();
-    }
-    let det = m[n - 1][n - 1].clone();
-    if negate { -det } else { det }
+    let largest = row.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let squares: f64 = row.iter().map(|x| (x / largest) * (x / largest)).sum();
+    doubled + largest.log2() + 0.5 * squares.log2()
 }
