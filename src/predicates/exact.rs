@@ -389,8 +389,8 @@ pub(in crate::predicates) fn orientation_parts<const D: usize>(
 
 /// The exact determinant of a square integer matrix (Bareiss elimination with row swaps: after
 /// step k every remaining entry is a (k+1)×(k+1) minor, so the division by the previous pivot is
-/// exact). The crate's one exact integer determinant.
-pub(crate) fn bareiss_value(mut a: Vec<Vec<BigInt>>) -> BigInt {
+/// exact).
+fn bareiss_value(mut a: Vec<Vec<BigInt>>) -> BigInt {
     let n = a.len();
     if n == 0 {
         return BigInt::one();

@@ -75,7 +75,6 @@ mod minors_small;
 mod tests;
 mod wide;
 
-pub(crate) use exact::bareiss_value;
 pub use exact::exact_cofactor_direction;
 pub(crate) use exact::lowest_bit_exponent;
 pub use filter::FacetPlane;

@@ -13,8 +13,6 @@
 //! determinants a few times that: each operation on them costs far more than one in `f64`.
 
 use super::{Nearest, dot, power_of_two_below};
-// Bareiss's fraction-free elimination, the crate's one exact integer determinant.
-use crate::predicates::bareiss_value as determinant;
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -303,6 +301,34 @@ fn decompose(x: f64) -> Option<(i64, i32)> {
 
 fn idot<const D: usize>(a: &[BigInt; D], b: &[BigInt; D]) -> BigInt {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
+}
+
+/// Determinant by Bareiss's fraction-free elimination (every division is exact).
+fn determinant(mut m: Vec<Vec<BigInt>>) -> BigInt {
+    let n = m.len();
+    if n == 0 {
+        return BigInt::one();
+    }
+    let mut negate = false;
+    let mut previous = BigInt::one();
+    for k in 0..n - 1 {
+        if m[k][k].is_zero() {
+            let Some(row) = (k + 1..n).find(|&r| !m[r][k].is_zero()) else {
+                return BigInt::zero();
+            };
+            m.swap(k, row);
+            negate = !negate;
+        }
+        for i in k + 1..n {
+            for j in k + 1..n {
+                let value = (&m[i][j] * &m[k][k] - &m[i][k] * &m[k][j]) / &previous;
+                m[i][j] = value;
+            }
+        }
+        previous = m[k][k].clone();
+    }
+    let det = m[n - 1][n - 1].clone();
+    if negate { -det } else { det }
 }
 
 /// `|v|` without overflow or underflow of the squares (`+∞` only when the length itself exceeds
