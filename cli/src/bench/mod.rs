@@ -11,6 +11,7 @@
 //! * [`hull`] — the hull suite: pqhull's full hull against Qhull on `rbox` families, integer
 //!   grids and grasp wrench sets.
 //! * [`census`] — how hard a finished hull's ridges are to decide, in exact arithmetic.
+//! * [`cdd`] — an independent exact reference: cddlib's facets of the same points.
 //! * [`stats`] — medians, means, ratios and quantiles.
 //!
 //! Times are wall clock on whatever else the machine is doing: compare rows of one run. Long
@@ -29,6 +30,7 @@
 //! ```
 
 pub mod batch;
+pub mod cdd;
 pub mod census;
 pub mod compare;
 pub mod gws;

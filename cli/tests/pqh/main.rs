@@ -4,6 +4,7 @@
 mod support;
 
 mod browser;
+mod cdd_reference;
 mod cli;
 mod cli_limits;
 mod cli_metrics;

@@ -1,0 +1,64 @@
+//! pqhull's exact hull against an independent exact one, cddlib's (`scdd_gmp`, GMP rationals),
+//! on the caller's data where Qhull is no reference: the raw grasp sets of `pqh bench hull`,
+//! whose contacts' wrenches are coplanar only up to rounding (docs/benchmarks.md, "An exact
+//! reference: cddlib"). The comparison is `pqhull_cli::bench::cdd::compare`: every input point
+//! evaluated exactly against every one of cddlib's inequalities, every simplex of pqhull's hull
+//! on one of cddlib's facets, every such facet holding a simplex.
+//!
+//! They need cddlib's programs, so they are `#[ignore]`d: the README's test command lists them
+//! as skipped, and CI (which installs `libcdd-tools`) runs them with `--run-ignored all`, where a
+//! missing program is a failure. `PQHULL_SCDD` names another `scdd_gmp`.
+
+use pqhull::Hull;
+use pqhull_cli::bench::cdd::{CddHull, compare, run_scdd};
+use pqhull_cli::bench::hull::{grasp_for, minkowski_sum};
+use std::path::PathBuf;
+
+fn cddlib(points: &[[f64; 6]], name: &str) -> CddHull {
+    let program =
+        std::env::var_os("PQHULL_SCDD").map_or_else(|| PathBuf::from("scdd_gmp"), PathBuf::from);
+    let scratch = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join("cdd-tests")
+        .join(name);
+    run_scdd(points, &program, &scratch).unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// pqhull and cddlib agree on `points`, and Qhull's triangulated answer (with the `qhull`
+/// feature) has fewer simplices than the exact hull has facet hyperplanes: it cannot be the
+/// exact hull, whose every facet holds at least one simplex of any triangulation.
+fn agrees_with_cddlib(points: &[[f64; 6]], name: &str) {
+    let hull = Hull::try_new(points).unwrap();
+    hull.check().unwrap();
+    let reference = cddlib(points, name);
+    let agreement = compare(&hull, points, &reference);
+    assert!(agreement.agrees(), "{name}: {agreement:?}");
+    // Non-simplicial facets: the flat ridges of the raw sets are real.
+    assert!(agreement.simplices > agreement.cdd_facets, "{agreement:?}");
+    #[cfg(feature = "qhull")]
+    {
+        let qhull = pqhull::qhull_baseline::qhull_facet_count(points).unwrap();
+        assert!(
+            qhull < agreement.cdd_facets,
+            "{name}: Qhull {qhull} simplices, the exact hull {} facets",
+            agreement.cdd_facets
+        );
+    }
+}
+
+#[test]
+#[ignore = "needs cddlib's scdd_gmp (apt-get install libcdd-tools; .ci/run installs it)"]
+fn cddlib_and_pqhull_give_the_same_raw_minkowski_sum() {
+    // 3 contacts × 4 edges: 64 points, 3,413 facets; cddlib takes about 7 s.
+    let (grasp, force_closure) = grasp_for(1, 3, 4, true);
+    assert!(force_closure);
+    agrees_with_cddlib(&minkowski_sum(&grasp), "minkowski-3x4");
+}
+
+#[test]
+#[ignore = "needs cddlib's scdd_gmp (apt-get install libcdd-tools; .ci/run installs it)"]
+fn cddlib_and_pqhull_give_the_same_raw_wrench_hull() {
+    // 4 contacts × 8 edges: 32 points, 1,192 facets; cddlib takes about 2 s.
+    let (grasp, force_closure) = grasp_for(1, 4, 8, false);
+    assert!(force_closure);
+    agrees_with_cddlib(&grasp.wrenches(), "wrenches-4x8");
+}
