@@ -1,7 +1,8 @@
 //! pqhull's exact hull against an independent exact one, cddlib's (`scdd_gmp`, GMP rationals),
 //! on the caller's data where Qhull is no reference: the raw grasp sets of `pqh bench hull`,
 //! whose contacts' wrenches are coplanar only up to rounding (docs/benchmarks.md, "An exact
-//! reference: cddlib"). The comparison is `pqhull_cli::bench::cdd::compare`: every input point
+//! reference: cddlib"), and on degenerate families (a grid, clusters, a lattice, cube corners, a
+//! thin shell). The comparison is `pqhull_cli::bench::cdd::compare`: every input point
 //! evaluated exactly against every one of cddlib's inequalities, every simplex of pqhull's hull
 //! on one of cddlib's facets, every such facet holding a simplex.
 //!
@@ -61,4 +62,41 @@ fn cddlib_and_pqhull_give_the_same_raw_wrench_hull() {
     let (grasp, force_closure) = grasp_for(1, 4, 8, false);
     assert!(force_closure);
     agrees_with_cddlib(&grasp.wrenches(), "wrenches-4x8");
+}
+
+/// pqhull and cddlib agree on `points`; returns the number of facets (hyperplanes).
+fn same_as_cddlib<const D: usize>(points: &[[f64; D]], name: &str) -> usize {
+    let hull = Hull::try_new(points).unwrap();
+    hull.check().unwrap();
+    let program =
+        std::env::var_os("PQHULL_SCDD").map_or_else(|| PathBuf::from("scdd_gmp"), PathBuf::from);
+    let scratch = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join("cdd-tests")
+        .join(name);
+    let reference = run_scdd(points, &program, &scratch).unwrap_or_else(|e| panic!("{e}"));
+    let agreement = compare(&hull, points, &reference);
+    assert!(agreement.agrees(), "{name}: {agreement:?}");
+    agreement.cdd_facets
+}
+
+#[test]
+#[ignore = "needs cddlib's scdd_gmp (apt-get install libcdd-tools; .ci/run installs it)"]
+fn cddlib_and_pqhull_agree_on_degenerate_families() {
+    use pqhull::rbox::{Family, generate};
+    // The grid where Qhull reports a vertex that is not one (docs/benchmarks.md): the 5-cube.
+    let grid = pqhull_cli::bench::hull::grid::<5>(5);
+    assert_eq!(same_as_cddlib(&grid, "grid-5d"), 10);
+    // Tight clusters, where Qhull drops extreme points (tests/qhull_crosscheck.rs).
+    let clusters = Family::Clusters {
+        clusters: 0,
+        spread: 1e-12,
+    };
+    same_as_cddlib(&generate::<3>(&clusters, 400, 1), "clusters-3d");
+    let lattice = Family::IntegerLattice { half_width: 3 };
+    same_as_cddlib(&generate::<4>(&lattice, 1000, 1), "lattice-4d");
+    // Corners, face centres and inside points: the 6-cube.
+    let corners = generate::<6>(&Family::CubeCornersDiamond, 20, 1);
+    assert_eq!(same_as_cddlib(&corners, "corners-6d"), 12);
+    let shell = Family::ThinShell { width: 1e-13 };
+    same_as_cddlib(&generate::<4>(&shell, 200, 1), "shell-4d");
 }
