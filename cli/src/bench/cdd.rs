@@ -14,7 +14,7 @@
 //! is missing.
 //!
 //! This is slow by design (cddlib's exact arithmetic takes minutes on hulls pqhull builds in a
-//! fraction of a second): a reference for tests and for `examples/compare_cdd.rs`, which times
+//! fraction of a second): a reference for tests and for `cli/examples/compare_cdd.rs`, which times
 //! the two side by side on the raw Minkowski sums of `pqh bench hull` (docs/benchmarks.md,
 //! "An exact reference: cddlib").
 //!
