@@ -16,9 +16,8 @@
 //! `PQHULL_SCDD` names another `scdd_gmp`.
 
 use pqhull::Hull;
-use pqhull_cli::bench::cdd::{compare, run_scdd};
-use pqhull_cli::bench::hull::{grasp_for, minkowski_sum};
-use std::path::PathBuf;
+use pqhull_cli::bench::cdd::{compare, run_scdd, scdd_program};
+use pqhull_cli::bench::hull::grasp_points;
 use std::time::{Duration, Instant};
 
 fn main() {
@@ -41,12 +40,7 @@ fn main() {
             std::process::exit(2);
         }
     };
-    let (grasp, _) = grasp_for(1, contacts, edges, full_sum);
-    let points = if full_sum {
-        minkowski_sum(&grasp)
-    } else {
-        grasp.wrenches()
-    };
+    let (_, _, points) = grasp_points(1, contacts, edges, full_sum);
     let best = |run: &mut dyn FnMut()| -> Duration {
         (0..rounds)
             .map(|_| {
@@ -61,10 +55,8 @@ fn main() {
     let pqhull_time = best(&mut || hull = Some(Hull::try_new(&points).expect("a 6-D hull")));
     let hull = hull.expect("built");
     hull.check().expect("Hull::check");
-    let program =
-        std::env::var_os("PQHULL_SCDD").map_or_else(|| PathBuf::from("scdd_gmp"), PathBuf::from);
     let scratch = std::env::temp_dir().join(format!("pqhull-compare-cdd-{}", std::process::id()));
-    let reference = run_scdd(&points, &program, &scratch).unwrap_or_else(|e| {
+    let reference = run_scdd(&points, &scdd_program(), &scratch).unwrap_or_else(|e| {
         eprintln!("{e}");
         std::process::exit(1);
     });

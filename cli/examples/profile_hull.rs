@@ -19,7 +19,7 @@ use pqhull::grasp::metrics::gws_volume;
 use pqhull::grasp::{Evaluator, Method, Metric};
 use pqhull::hull::Hull;
 use pqhull_cli::bench::census;
-use pqhull_cli::bench::hull::{grasp_for, minkowski_sum};
+use pqhull_cli::bench::hull::grasp_points;
 use std::time::Instant;
 
 fn main() {
@@ -44,12 +44,7 @@ fn main() {
             std::process::exit(2);
         }
     };
-    let (grasp, _) = grasp_for(1, contacts, edges, full_sum);
-    let points = if full_sum {
-        minkowski_sum(&grasp)
-    } else {
-        grasp.wrenches()
-    };
+    let (grasp, _, points) = grasp_points(1, contacts, edges, full_sum);
     let mut evaluator = Evaluator::new(
         Metric::QInf {
             with_zero_wrench: false,

@@ -20,10 +20,10 @@
 //!
 //! ```no_run
 //! use pqhull::Hull;
-//! use pqhull_cli::bench::cdd::{compare, run_scdd};
+//! use pqhull_cli::bench::cdd::{compare, run_scdd, scdd_program};
 //!
 //! let points = [[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 1.0], [0.5, 0.5]];
-//! let reference = run_scdd(&points, std::path::Path::new("scdd_gmp"), &std::env::temp_dir())?;
+//! let reference = run_scdd(&points, &scdd_program(), &std::env::temp_dir())?;
 //! let agreement = compare(&Hull::try_new(&points)?, &points, &reference);
 //! assert!(agreement.agrees());
 //! assert_eq!(reference.facets.len(), 4);
@@ -79,6 +79,12 @@ impl std::fmt::Display for CddError {
 }
 
 impl std::error::Error for CddError {}
+
+/// The `scdd_gmp` to run: the environment variable `PQHULL_SCDD` if set, else `scdd_gmp` on the
+/// `PATH`.
+pub fn scdd_program() -> PathBuf {
+    std::env::var_os("PQHULL_SCDD").map_or_else(|| PathBuf::from("scdd_gmp"), PathBuf::from)
+}
 
 /// Runs cddlib's `program` (`scdd_gmp`, or a path to it) on `points`, each coordinate written
 /// as the exact rational it is, in a file `points.ext` under `scratch`, and reads the facets it

@@ -712,6 +712,24 @@ pub fn grasp_for(seed: u64, contacts: usize, edges: usize, full_sum: bool) -> (G
     }
 }
 
+/// The point set of a grasp row of the suite: the raw wrenches of [`grasp_for`]'s grasp, or with
+/// `full_sum` their materialised Minkowski sum ([`minkowski_sum`]); with the grasp and whether it
+/// is force closure. Public for the examples that time or check one row alone.
+pub fn grasp_points(
+    seed: u64,
+    contacts: usize,
+    edges: usize,
+    full_sum: bool,
+) -> (Grasp, bool, Vec<[f64; 6]>) {
+    let (grasp, closure) = grasp_for(seed, contacts, edges, full_sum);
+    let points = if full_sum {
+        minkowski_sum(&grasp)
+    } else {
+        grasp.wrenches()
+    };
+    (grasp, closure, points)
+}
+
 /// Whether the plain Minkowski sum of `grasp`'s contact wrench sets spans 6-D with room to
 /// spare: the differences `w_i(j) − w_i(0)` (which span the sum's affine hull) have numerical
 /// rank 6 by Gaussian elimination with complete pivoting, every pivot above `1e−6` of the first.

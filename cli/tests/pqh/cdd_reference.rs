@@ -11,33 +11,35 @@
 //! missing program is a failure. `PQHULL_SCDD` names another `scdd_gmp`.
 
 use pqhull::Hull;
-use pqhull_cli::bench::cdd::{CddHull, compare, run_scdd};
-use pqhull_cli::bench::hull::{grasp_for, minkowski_sum};
+use pqhull_cli::bench::cdd::{Agreement, compare, run_scdd, scdd_program};
+use pqhull_cli::bench::hull::grasp_points;
 use std::path::PathBuf;
 
-fn cddlib(points: &[[f64; 6]], name: &str) -> CddHull {
-    let program =
-        std::env::var_os("PQHULL_SCDD").map_or_else(|| PathBuf::from("scdd_gmp"), PathBuf::from);
+/// pqhull's hull of `points` (checked) and cddlib's compared; asserts that they agree.
+fn same_as_cddlib<const D: usize>(points: &[[f64; D]], name: &str) -> Agreement {
+    let hull = Hull::try_new(points).unwrap();
+    hull.check().unwrap();
     let scratch = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
         .join("cdd-tests")
         .join(name);
-    run_scdd(points, &program, &scratch).unwrap_or_else(|e| panic!("{e}"))
-}
-
-/// pqhull and cddlib agree on `points`, and Qhull's triangulated answer (with the `qhull`
-/// feature) has fewer simplices than the exact hull has facet hyperplanes: it cannot be the
-/// exact hull, whose every facet holds at least one simplex of any triangulation.
-fn agrees_with_cddlib(points: &[[f64; 6]], name: &str) {
-    let hull = Hull::try_new(points).unwrap();
-    hull.check().unwrap();
-    let reference = cddlib(points, name);
+    let reference = run_scdd(points, &scdd_program(), &scratch).unwrap_or_else(|e| panic!("{e}"));
     let agreement = compare(&hull, points, &reference);
     assert!(agreement.agrees(), "{name}: {agreement:?}");
+    agreement
+}
+
+/// The suite's grasp set agrees with cddlib, and Qhull's triangulated answer (with the `qhull`
+/// feature) has fewer simplices than the exact hull has facet hyperplanes: it cannot be the
+/// exact hull, whose every facet holds at least one simplex of any triangulation.
+fn grasp_set_agrees_with_cddlib(contacts: usize, edges: usize, full_sum: bool, name: &str) {
+    let (_, force_closure, points) = grasp_points(1, contacts, edges, full_sum);
+    assert!(force_closure);
+    let agreement = same_as_cddlib(&points, name);
     // Non-simplicial facets: the flat ridges of the raw sets are real.
     assert!(agreement.simplices > agreement.cdd_facets, "{agreement:?}");
     #[cfg(feature = "qhull")]
     {
-        let qhull = pqhull::qhull_baseline::qhull_facet_count(points).unwrap();
+        let qhull = pqhull::qhull_baseline::qhull_facet_count(&points).unwrap();
         assert!(
             qhull < agreement.cdd_facets,
             "{name}: Qhull {qhull} simplices, the exact hull {} facets",
@@ -50,33 +52,14 @@ fn agrees_with_cddlib(points: &[[f64; 6]], name: &str) {
 #[ignore = "needs cddlib's scdd_gmp (apt-get install libcdd-tools; .ci/run installs it)"]
 fn cddlib_and_pqhull_give_the_same_raw_minkowski_sum() {
     // 3 contacts × 4 edges: 64 points, 3,413 facets; cddlib takes about 7 s.
-    let (grasp, force_closure) = grasp_for(1, 3, 4, true);
-    assert!(force_closure);
-    agrees_with_cddlib(&minkowski_sum(&grasp), "minkowski-3x4");
+    grasp_set_agrees_with_cddlib(3, 4, true, "minkowski-3x4");
 }
 
 #[test]
 #[ignore = "needs cddlib's scdd_gmp (apt-get install libcdd-tools; .ci/run installs it)"]
 fn cddlib_and_pqhull_give_the_same_raw_wrench_hull() {
     // 4 contacts × 8 edges: 32 points, 1,192 facets; cddlib takes about 2 s.
-    let (grasp, force_closure) = grasp_for(1, 4, 8, false);
-    assert!(force_closure);
-    agrees_with_cddlib(&grasp.wrenches(), "wrenches-4x8");
-}
-
-/// pqhull and cddlib agree on `points`; returns the number of facets (hyperplanes).
-fn same_as_cddlib<const D: usize>(points: &[[f64; D]], name: &str) -> usize {
-    let hull = Hull::try_new(points).unwrap();
-    hull.check().unwrap();
-    let program =
-        std::env::var_os("PQHULL_SCDD").map_or_else(|| PathBuf::from("scdd_gmp"), PathBuf::from);
-    let scratch = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
-        .join("cdd-tests")
-        .join(name);
-    let reference = run_scdd(points, &program, &scratch).unwrap_or_else(|e| panic!("{e}"));
-    let agreement = compare(&hull, points, &reference);
-    assert!(agreement.agrees(), "{name}: {agreement:?}");
-    agreement.cdd_facets
+    grasp_set_agrees_with_cddlib(4, 8, false, "wrenches-4x8");
 }
 
 #[test]
@@ -85,7 +68,7 @@ fn cddlib_and_pqhull_agree_on_degenerate_families() {
     use pqhull::rbox::{Family, generate};
     // The grid where Qhull reports a vertex that is not one (docs/benchmarks.md): the 5-cube.
     let grid = pqhull_cli::bench::hull::grid::<5>(5);
-    assert_eq!(same_as_cddlib(&grid, "grid-5d"), 10);
+    assert_eq!(same_as_cddlib(&grid, "grid-5d").cdd_facets, 10);
     // Tight clusters, where Qhull drops extreme points (tests/qhull_crosscheck.rs).
     let clusters = Family::Clusters {
         clusters: 0,
@@ -96,7 +79,7 @@ fn cddlib_and_pqhull_agree_on_degenerate_families() {
     same_as_cddlib(&generate::<4>(&lattice, 1000, 1), "lattice-4d");
     // Corners, face centres and inside points: the 6-cube.
     let corners = generate::<6>(&Family::CubeCornersDiamond, 20, 1);
-    assert_eq!(same_as_cddlib(&corners, "corners-6d"), 12);
+    assert_eq!(same_as_cddlib(&corners, "corners-6d").cdd_facets, 12);
     let shell = Family::ThinShell { width: 1e-13 };
     same_as_cddlib(&generate::<4>(&shell, 200, 1), "shell-4d");
 }
