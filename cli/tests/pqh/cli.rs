@@ -776,7 +776,8 @@ fn the_sample_grasps_file_evaluates_by_every_metric() {
             .map(|l| serde_json::from_str(l).unwrap())
             .collect()
     };
-    // (Q∞ by the full method would hull 8^4 and 16^3 Minkowski points here: minutes per grasp.)
+    // (Q∞ by the full method would hull 8^4 and 16^3 Minkowski points here: a second or more a
+    // grasp.)
     for (metric, method) in [("q1", "full"), ("qinf", "partial")] {
         let partial = lines(&["grasp", "--metric", metric, path]);
         let full = lines(&["grasp", "--metric", metric, "--method", method, path]);

@@ -505,8 +505,8 @@ fn notes_on_stderr_are_not_errors() {
 
 #[test]
 fn full_qinf_of_a_large_minkowski_sum_needs_force() {
-    // Two antipodal contacts × 40 edges: 1,600 Minkowski points (> 1,000), quick to hull.
-    let grasp = r#"{"contacts":[{"position":[1,0,0],"normal":[-1,0,0]},{"position":[-1,0,0],"normal":[1,0,0]}],"friction":0.5,"cone_edges":40}"#;
+    // Two antipodal contacts × 65 edges: 4,225 Minkowski points (> 4,096), quick to hull.
+    let grasp = r#"{"contacts":[{"position":[1,0,0],"normal":[-1,0,0]},{"position":[-1,0,0],"normal":[1,0,0]}],"friction":0.5,"cone_edges":65}"#;
     let refused = pqh(
         &["grasp", "--metric", "qinf", "--method", "full"],
         Some(grasp),
@@ -514,7 +514,7 @@ fn full_qinf_of_a_large_minkowski_sum_needs_force() {
     assert_eq!(refused.status.code(), Some(2));
     let err = String::from_utf8_lossy(&refused.stderr);
     assert!(
-        err.contains("grasp 0") && err.contains("1600 Minkowski points") && err.contains("--force"),
+        err.contains("grasp 0") && err.contains("4225 Minkowski points") && err.contains("--force"),
         "{err}"
     );
     assert!(

@@ -64,7 +64,7 @@ pub struct PlanArgs {
     #[arg(long, default_value_t = 200, value_parser = crate::limits::samples())]
     pub samples: usize,
     /// Samples for the full-hull run, the first ones, 0 (skip it) to 1000000 (default: --samples;
-    /// for qinf 2, or 0 above 1000 Minkowski points per grasp, all hulled exactly: docs/limits.md)
+    /// for qinf 2, or 0 above 4096 Minkowski points per grasp, all hulled exactly: docs/limits.md)
     #[arg(long, value_parser = crate::limits::count(0, crate::limits::MAX_SAMPLES))]
     pub full_samples: Option<usize>,
     /// Metric to maximise among the force-closure samples
@@ -122,7 +122,7 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
     };
     let partial = progress::plan(&mesh, space.as_ref(), &config, Method::Partial, "partial")?;
     // Q∞ by the full method hulls all k^m Minkowski points of each sample, exactly and slowly
-    // (they are highly degenerate): above FULL_QINF_POINTS (4 × 8 is already 4,096 points) the
+    // (they are highly degenerate): above FULL_QINF_POINTS (4 × 8, about a second a sample) the
     // comparison runs only when asked for.
     let minkowski = args.edges.checked_pow(args.contacts as u32);
     let default_full = match args.metric {
@@ -130,7 +130,7 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
             if args.full_samples.is_none() {
                 eprintln!(
                     "pqh: note: no full-hull comparison: Q∞ by the full method hulls {} Minkowski \
-                     points per sample (minutes each); --full-samples N runs it on N samples",
+                     points per sample (seconds to minutes each); --full-samples N runs it on N samples",
                     minkowski.map_or("more than 2^64".to_string(), |n| n.to_string())
                 );
             }
