@@ -15,6 +15,7 @@
 //! ```
 
 pub mod ellipsoid;
+pub(crate) mod exact_int;
 mod gjk;
 pub mod gram;
 mod nearest;

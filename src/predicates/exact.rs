@@ -8,9 +8,10 @@
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{One, Signed, Zero};
+use num_traits::{Signed, Zero};
 
 use super::Sign;
+use crate::geometry::exact_int::{bareiss_determinant, odd_mantissa};
 
 /// Coordinates inside `[2^-EXP_LIMIT, 2^EXP_LIMIT]` (in absolute value) or zero are safe for the
 /// adaptive expansion arithmetic of `robust` (no underflow nor overflow can occur in its
@@ -48,24 +49,7 @@ pub(in crate::predicates) fn decompose(x: f64) -> (i64, i32) {
         x.is_finite(),
         "pqhull::predicates: non-finite coordinate {x} given to an exact predicate"
     );
-    if x == 0.0 {
-        return (0, 0);
-    }
-    let bits = x.to_bits();
-    let exp_field = ((bits >> 52) & 0x7ff) as i32;
-    let frac = (bits & ((1u64 << 52) - 1)) as i64;
-    let (mut m, mut e) = if exp_field == 0 {
-        (frac, -1074)
-    } else {
-        (frac | (1i64 << 52), exp_field - 1075)
-    };
-    let tz = m.trailing_zeros();
-    m >>= tz;
-    e += tz as i32;
-    if bits >> 63 == 1 {
-        m = -m;
-    }
-    (m, e)
+    odd_mantissa(x).unwrap_or((0, 0))
 }
 
 /// The decomposed coordinates of a set of points, all to be scaled to the common exponent `emin`.
@@ -208,9 +192,9 @@ pub(in crate::predicates) fn orientation_big<const D: usize>(
     bareiss_big(matrix)
 }
 
-/// Bareiss elimination in `BigInt` (see [`bareiss_value`]).
+/// Bareiss elimination in `BigInt` (the geometry layer's, `exact_int::bareiss_determinant`).
 fn bareiss_big(a: Vec<Vec<BigInt>>) -> Sign {
-    sign_of_int(&bareiss_value(a))
+    sign_of_int(&bareiss_determinant(a))
 }
 
 pub(in crate::predicates) fn flip(s: Sign) -> Sign {
@@ -317,7 +301,7 @@ pub(in crate::predicates) fn distance_big<const D: usize>(
         return 0.0;
     }
     // Units: the determinant is in grid^D, the cofactors in grid^(D−1), grid = 2^emin.
-    let (value, e1) = big_to_parts(&bareiss_value(rows));
+    let (value, e1) = big_to_parts(&bareiss_determinant(rows));
     let (mut m2, mut e2) = big_to_parts(&norm2);
     if e2 % 2 != 0 {
         m2 *= 2.0;
@@ -351,7 +335,7 @@ fn cofactors_big<const D: usize>(edges: &[Vec<BigInt>]) -> Vec<BigInt> {
                 .iter()
                 .map(|row| (0..D).filter(|&c| c != j).map(|c| row[c].clone()).collect())
                 .collect();
-            let det = bareiss_value(minor);
+            let det = bareiss_determinant(minor);
             if (D - 1 + j) % 2 == 1 { -det } else { det }
         })
         .collect()
@@ -378,43 +362,11 @@ pub(in crate::predicates) fn orientation_parts<const D: usize>(
     let mut all: Vec<&[f64]> = vertices.iter().map(|v| &v[..]).collect();
     all.push(&p[..]);
     let s = scale(&all);
-    let det = bareiss_value(integer_differences(&s, D));
+    let det = bareiss_determinant(integer_differences(&s, D));
     if det.is_zero() {
         return (0.0, 0);
     }
     // The rows are in units of 2^emin: the determinant in units of 2^(D·emin).
     let (m, e) = big_to_parts(&det);
     (m, i64::from(e) + D as i64 * i64::from(s.emin))
-}
-
-/// The exact determinant of a square integer matrix (Bareiss elimination with row swaps: after
-/// step k every remaining entry is a (k+1)×(k+1) minor, so the division by the previous pivot is
-/// exact).
-fn bareiss_value(mut a: Vec<Vec<BigInt>>) -> BigInt {
-    let n = a.len();
-    if n == 0 {
-        return BigInt::one();
-    }
-    let mut negate = false;
-    let mut prev = BigInt::one();
-    for k in 0..n {
-        if a[k][k].is_zero() {
-            match (k + 1..n).find(|&r| !a[r][k].is_zero()) {
-                Some(r) => {
-                    a.swap(k, r);
-                    negate = !negate;
-                }
-                None => return BigInt::zero(),
-            }
-        }
-        for i in k + 1..n {
-            for j in k + 1..n {
-                let x = &a[i][j] * &a[k][k] - &a[i][k] * &a[k][j];
-                a[i][j] = x / &prev;
-            }
-        }
-        prev = a[k][k].clone();
-    }
-    let det = a[n - 1][n - 1].clone();
-    if negate { -det } else { det }
 }

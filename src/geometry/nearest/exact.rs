@@ -13,6 +13,7 @@
 //! determinants a few times that: each operation on them costs far more than one in `f64`.
 
 use super::{Nearest, dot, power_of_two_below};
+use crate::geometry::exact_int::{bareiss_determinant as determinant, odd_mantissa};
 use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -282,53 +283,11 @@ fn decompose(x: f64) -> Option<(i64, i32)> {
         x.is_finite(),
         "min_norm_point_exact: a coordinate is not finite"
     );
-    if x == 0.0 {
-        return None;
-    }
-    let bits = x.to_bits();
-    let biased = ((bits >> 52) & 0x7ff) as i32;
-    let fraction = (bits & ((1u64 << 52) - 1)) as i64;
-    let (mantissa, exponent) = if biased == 0 {
-        (fraction, -1074)
-    } else {
-        (fraction | (1i64 << 52), biased - 1075)
-    };
-    let zeros = mantissa.trailing_zeros();
-    let mantissa = mantissa >> zeros;
-    let signed = if x < 0.0 { -mantissa } else { mantissa };
-    Some((signed, exponent + zeros as i32))
+    odd_mantissa(x)
 }
 
 fn idot<const D: usize>(a: &[BigInt; D], b: &[BigInt; D]) -> BigInt {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
-}
-
-/// Determinant by Bareiss's fraction-free elimination (every division is exact).
-fn determinant(mut m: Vec<Vec<BigInt>>) -> BigInt {
-    let n = m.len();
-    if n == 0 {
-        return BigInt::one();
-    }
-    let mut negate = false;
-    let mut previous = BigInt::one();
-    for k in 0..n - 1 {
-        if m[k][k].is_zero() {
-            let Some(row) = (k + 1..n).find(|&r| !m[r][k].is_zero()) else {
-                return BigInt::zero();
-            };
-            m.swap(k, row);
-            negate = !negate;
-        }
-        for i in k + 1..n {
-            for j in k + 1..n {
-                let value = (&m[i][j] * &m[k][k] - &m[i][k] * &m[k][j]) / &previous;
-                m[i][j] = value;
-            }
-        }
-        previous = m[k][k].clone();
-    }
-    let det = m[n - 1][n - 1].clone();
-    if negate { -det } else { det }
 }
 
 /// `|v|` without overflow or underflow of the squares (`+∞` only when the length itself exceeds
@@ -345,23 +304,7 @@ fn length<const D: usize>(v: &[f64; D]) -> f64 {
 
 #[cfg(test)]
 mod tests {
-    use super::{determinant, min_norm_point_exact};
-    use num_bigint::BigInt;
-
-    #[test]
-    fn bareiss_determinant() {
-        let m = |rows: &[&[i64]]| -> Vec<Vec<BigInt>> {
-            rows.iter()
-                .map(|r| r.iter().map(|&x| BigInt::from(x)).collect())
-                .collect()
-        };
-        assert_eq!(determinant(m(&[&[2, 1], &[1, 3]])), BigInt::from(5));
-        assert_eq!(
-            determinant(m(&[&[0, 1, 2], &[1, 0, 3], &[4, -3, 8]])),
-            BigInt::from(-2)
-        );
-        assert_eq!(determinant(m(&[&[1, 2], &[2, 4]])), BigInt::from(0));
-    }
+    use super::min_norm_point_exact;
 
     #[test]
     fn far_queries_on_the_square() {
