@@ -35,6 +35,15 @@ pub const MAX_BENCH_REPEATS: usize = pqhull_cli::bench::hull::MAX_REPEATS;
 /// the same value in milliseconds without materialising the sum.
 pub const FULL_QINF_POINTS: usize = 4096;
 
+/// The most Minkowski points per sample for which `pqh plan --metric qinf` compares with the
+/// full method by default (on its first 2 samples; `--full-samples` asks for it above).
+///
+/// Why lower than [`FULL_QINF_POINTS`]: the default comparison is a side result that few samples
+/// make meaningful (5 of the 200 default samples on the built-in object are force closure, so
+/// the first 2 rarely are). At 4 contacts × 8 edges it spent 1.6 s of a 1.7 s plan comparing
+/// nothing; below 1,000 points it costs a fraction of that.
+pub const PLAN_FULL_QINF_POINTS: usize = 1000;
+
 /// The parser of a whole-number option from `min` to `max` inclusive, run while the command line
 /// is parsed; its error names the bound (clap adds the option and the value).
 pub fn count(

@@ -1,7 +1,7 @@
 //! `pqh plan`: a GraspIt!-like random planner, partial vs full-hull quality evaluation.
 
 use crate::error::CliError;
-use crate::limits::FULL_QINF_POINTS;
+use crate::limits::PLAN_FULL_QINF_POINTS;
 use crate::methods::MetricArg;
 use crate::progress;
 use clap::Args;
@@ -64,7 +64,7 @@ pub struct PlanArgs {
     #[arg(long, default_value_t = 200, value_parser = crate::limits::samples())]
     pub samples: usize,
     /// Samples for the full-hull run, the first ones, 0 (skip it) to 1000000 (default: --samples;
-    /// for qinf 2, or 0 above 4096 Minkowski points per grasp, all hulled exactly: docs/limits.md)
+    /// for qinf 2, or 0 above 1000 Minkowski points per grasp, all hulled exactly: docs/limits.md)
     #[arg(long, value_parser = crate::limits::count(0, crate::limits::MAX_SAMPLES))]
     pub full_samples: Option<usize>,
     /// Metric to maximise among the force-closure samples
@@ -122,15 +122,15 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
     };
     let partial = progress::plan(&mesh, space.as_ref(), &config, Method::Partial, "partial")?;
     // Q∞ by the full method hulls all k^m Minkowski points of each sample, exactly and slowly
-    // (they are highly degenerate): above FULL_QINF_POINTS (4 × 8, about a second a sample) the
-    // comparison runs only when asked for.
+    // (they are highly degenerate): above PLAN_FULL_QINF_POINTS (4 × 8, about 0.8 s a sample,
+    // is above it) the comparison runs only when asked for.
     let minkowski = args.edges.checked_pow(args.contacts as u32);
     let default_full = match args.metric {
-        MetricArg::Qinf if minkowski.is_none_or(|n| n > FULL_QINF_POINTS) => {
+        MetricArg::Qinf if minkowski.is_none_or(|n| n > PLAN_FULL_QINF_POINTS) => {
             if args.full_samples.is_none() {
                 eprintln!(
                     "pqh: note: no full-hull comparison: Q∞ by the full method hulls {} Minkowski \
-                     points per sample (seconds to minutes each); --full-samples N runs it on N samples",
+                     points per sample (a second or more each); --full-samples N runs it on N samples",
                     minkowski.map_or("more than 2^64".to_string(), |n| n.to_string())
                 );
             }
