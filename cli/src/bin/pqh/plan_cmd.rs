@@ -130,7 +130,8 @@ pub fn run(args: &PlanArgs) -> Result<(), CliError> {
             if args.full_samples.is_none() {
                 eprintln!(
                     "pqh: note: no full-hull comparison: Q∞ by the full method hulls {} Minkowski \
-                     points per sample (a second or more each); --full-samples N runs it on N samples",
+                     points per sample (0.15 s at 1,296 points, 1 s at 4,096, 35 s at 65,536); \
+                     --full-samples N runs it on N samples",
                     minkowski.map_or("more than 2^64".to_string(), |n| n.to_string())
                 );
             }
