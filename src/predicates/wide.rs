@@ -90,38 +90,24 @@ impl Wide {
         }
     }
 
-    /// `self ± (f · m) · 2^(64·offset)`: the product limb by limb into one carry (addition)
-    /// or one borrow (subtraction), so no temporary is built.
-    ///
-    /// Why one: `m_i·f + self_i + carry ≤ (2^64 − 1)² + 2(2^64 − 1) = 2^128 − 1` fits in
-    /// `u128`, so the sum's high half is the next carry; for subtraction, `p = m_i·f + borrow ≤
-    /// 2^128 − 2^64`, and `self_i − low(p)` borrows at most one more, so the next borrow,
-    /// `high(p) + 1 ≤ 2^64 − 1`, fits in `u64`. One dependency chain per limb instead of a
-    /// product carry and an addition carry.
+    /// `self ± (f · m) · 2^(64·offset)` in the low `len` limbs ([`scaled_into`]).
     fn add_scaled(&mut self, f: u64, offset: usize, negative: bool, m: &Wide, len: usize) {
         if f == 0 {
             return;
         }
-        let factor = u128::from(f);
-        // Arithmetic modulo 2^(64·len): the unsigned product of f and m's two's-complement
-        // limbs is f·m modulo it, added or subtracted according to the sign.
-        let limbs = self.0[offset..len].iter_mut().zip(&m.0);
-        if negative {
-            let mut borrow = 0u64;
-            for (limb, &factor_limb) in limbs {
-                let p = u128::from(factor_limb) * factor + u128::from(borrow);
-                let (d, b) = limb.overflowing_sub(p as u64);
-                *limb = d;
-                borrow = (p >> 64) as u64 + u64::from(b);
-            }
-        } else {
-            let mut carry = 0u64;
-            for (limb, &factor_limb) in limbs {
-                let t = u128::from(factor_limb) * factor + u128::from(*limb) + u128::from(carry);
-                *limb = t as u64;
-                carry = (t >> 64) as u64;
-            }
+        let target = &mut self.0[offset..len];
+        macro_rules! fixed {
+            ($($n:literal)*) => {
+                match target.len() {
+                    $($n => scaled_fixed::<$n>(target, f, negative, &m.0),)*
+                    _ => scaled_into(target, f, negative, &m.0),
+                }
+            };
         }
+        // A width known at compile time unrolls the limb loop: the widths are few (1 to
+        // LIMBS) and each call's is fixed by the caller's entries. Cachegrind counts 2 % fewer
+        // instructions on the wrench hulls and 3.5 % fewer on the Minkowski sums.
+        fixed!(1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17);
     }
 
     /// `(mantissa, exponent)` with `self ≈ mantissa · 2^exponent`, the mantissa holding the top 64
@@ -142,6 +128,49 @@ impl Wide {
         let exponent = 64 * top as i32 - lead as i32;
         let value = bits as f64;
         (if negative { -value } else { value }, exponent)
+    }
+}
+
+/// `target ± f · m` modulo 2^(64·target.len()): the product limb by limb into one carry
+/// (addition) or one borrow (subtraction), so no temporary is built.
+///
+/// Why one: `m_i·f + target_i + carry ≤ (2^64 − 1)² + 2(2^64 − 1) = 2^128 − 1` fits in `u128`,
+/// so the sum's high half is the next carry; for subtraction, `p = m_i·f + borrow ≤ 2^128 −
+/// 2^64`, and `target_i − low(p)` borrows at most one more, so the next borrow, `high(p) + 1 ≤
+/// 2^64 − 1`, fits in `u64`. One dependency chain per limb instead of a product carry and an
+/// addition carry. The unsigned product of `f` and `m`'s two's-complement limbs is `f·m` modulo
+/// that power of two, added or subtracted according to the sign.
+#[inline(always)]
+fn scaled_into(target: &mut [u64], f: u64, negative: bool, m: &[u64]) {
+    let factor = u128::from(f);
+    let limbs = target.iter_mut().zip(m);
+    if negative {
+        let mut borrow = 0u64;
+        for (limb, &factor_limb) in limbs {
+            let p = u128::from(factor_limb) * factor + u128::from(borrow);
+            let (d, b) = limb.overflowing_sub(p as u64);
+            *limb = d;
+            borrow = (p >> 64) as u64 + u64::from(b);
+        }
+    } else {
+        let mut carry = 0u64;
+        for (limb, &factor_limb) in limbs {
+            let t = u128::from(factor_limb) * factor + u128::from(*limb) + u128::from(carry);
+            *limb = t as u64;
+            carry = (t >> 64) as u64;
+        }
+    }
+}
+
+/// [`scaled_into`] over exactly `N` limbs, so the loop's trip count is a constant.
+#[inline(always)]
+fn scaled_fixed<const N: usize>(target: &mut [u64], f: u64, negative: bool, m: &[u64]) {
+    match (
+        <&mut [u64; N]>::try_from(&mut *target),
+        m.get(..N).map(<&[u64; N]>::try_from),
+    ) {
+        (Ok(target), Some(Ok(m))) => scaled_into(target, f, negative, m),
+        _ => scaled_into(target, f, negative, m),
     }
 }
 
