@@ -86,6 +86,33 @@ pub fn scdd_program() -> PathBuf {
     std::env::var_os("PQHULL_SCDD").map_or_else(|| PathBuf::from("scdd_gmp"), PathBuf::from)
 }
 
+/// Writes `points` as a cddlib V-representation (`V-representation`, `begin`, `n D+1 rational`,
+/// rows `1 x_1 … x_D`, `end`) to `path`, each coordinate as the exact rational it is: the input
+/// of `scdd_gmp`, and of the CGAL comparison `compare/cgal/hull.cpp`.
+///
+/// # Errors
+/// [`CddError::Io`] when the file cannot be written.
+///
+/// # Panics
+/// If a coordinate is not finite.
+pub fn write_ext<const D: usize>(points: &[[f64; D]], path: &Path) -> Result<(), CddError> {
+    let mut text = format!(
+        "V-representation\nbegin\n {} {} rational\n",
+        points.len(),
+        D + 1
+    );
+    for p in points {
+        text.push_str(" 1");
+        for &x in p {
+            let exact = BigRational::from_float(x).expect("a finite coordinate");
+            let _ = write!(text, " {exact}");
+        }
+        text.push('\n');
+    }
+    text.push_str("end\n");
+    std::fs::write(path, text).map_err(|e| CddError::Io(path.to_path_buf(), e))
+}
+
 /// Runs cddlib's `program` (`scdd_gmp`, or a path to it) on `points`, each coordinate written
 /// as the exact rational it is, in a file `points.ext` under `scratch`, and reads the facets it
 /// writes to `points.ine`.
@@ -104,21 +131,7 @@ pub fn run_scdd<const D: usize>(
     std::fs::create_dir_all(scratch).map_err(|e| CddError::Io(scratch.to_path_buf(), e))?;
     let input = scratch.join("points.ext");
     let output = scratch.join("points.ine");
-    let mut text = format!(
-        "V-representation\nbegin\n {} {} rational\n",
-        points.len(),
-        D + 1
-    );
-    for p in points {
-        text.push_str(" 1");
-        for &x in p {
-            let exact = BigRational::from_float(x).expect("a finite coordinate");
-            let _ = write!(text, " {exact}");
-        }
-        text.push('\n');
-    }
-    text.push_str("end\n");
-    std::fs::write(&input, text).map_err(|e| CddError::Io(input.clone(), e))?;
+    write_ext(points, &input)?;
     // A stale answer must not pass for this one.
     let _ = std::fs::remove_file(&output);
     let started = Instant::now();
