@@ -18,20 +18,16 @@
 use pqhull::Hull;
 use pqhull_cli::bench::cdd::{compare, run_scdd, scdd_program};
 use pqhull_cli::bench::hull::grasp_points;
-use std::time::{Duration, Instant};
+use pqhull_cli::bench::stats::{best_of, numeric_args};
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let usage = "usage: compare_cdd minkowski|wrenches [edges] [rounds]";
-    let number = |i: usize, default: usize| -> usize {
-        args.get(i).map_or(default, |s| {
-            s.parse().unwrap_or_else(|_| {
-                eprintln!("{usage}: not a number: {s}");
-                std::process::exit(2);
-            })
-        })
-    };
-    let (edges, rounds) = (number(1, 4), number(2, 3).max(1));
+    let [edges, rounds] = numeric_args(&args, 1, [4, 3]).unwrap_or_else(|e| {
+        eprintln!("{usage}: {e}");
+        std::process::exit(2);
+    });
+    let rounds = rounds.max(1);
     let (contacts, full_sum) = match args.first().map(String::as_str) {
         Some("minkowski") => (3, true),
         Some("wrenches") => (4, false),
@@ -41,18 +37,10 @@ fn main() {
         }
     };
     let (_, _, points) = grasp_points(1, contacts, edges, full_sum);
-    let best = |run: &mut dyn FnMut()| -> Duration {
-        (0..rounds)
-            .map(|_| {
-                let started = Instant::now();
-                run();
-                started.elapsed()
-            })
-            .min()
-            .expect("at least one round")
-    };
     let mut hull = None;
-    let pqhull_time = best(&mut || hull = Some(Hull::try_new(&points).expect("a 6-D hull")));
+    let pqhull_time = best_of(rounds, || {
+        hull = Some(Hull::try_new(&points).expect("a 6-D hull"))
+    });
     let hull = hull.expect("built");
     hull.check().expect("Hull::check");
     let scratch = std::env::temp_dir().join(format!("pqhull-compare-cdd-{}", std::process::id()));
@@ -82,8 +70,9 @@ fn main() {
     #[cfg(feature = "qhull")]
     {
         let mut facets = None;
-        let qhull_time =
-            best(&mut || facets = Some(pqhull::qhull_baseline::qhull_facet_count(&points)));
+        let qhull_time = best_of(rounds, || {
+            facets = Some(pqhull::qhull_baseline::qhull_facet_count(&points))
+        });
         let verdict = match facets.expect("run") {
             // Each facet hyperplane of the exact hull holds at least one simplex of any
             // triangulation of it.

@@ -21,23 +21,19 @@ use pqhull::Hull;
 use pqhull::rbox::{self, Family};
 use pqhull_cli::bench::cdd::write_ext;
 use pqhull_cli::bench::hull::grasp_points;
+use pqhull_cli::bench::stats::{best_of, numeric_args};
 use std::path::PathBuf;
 use std::process::Command;
-use std::time::{Duration, Instant};
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let usage = "usage: compare_cgal minkowski|wrenches [edges] [rounds], \
                  or compare_cgal sphere|cube [points] [rounds]";
-    let number = |i: usize, default: usize| -> usize {
-        args.get(i).map_or(default, |s| {
-            s.parse().unwrap_or_else(|_| {
-                eprintln!("{usage}: not a number: {s}");
-                std::process::exit(2);
-            })
-        })
-    };
-    let (size, rounds) = (number(1, 6), number(2, 3).max(1));
+    let [size, rounds] = numeric_args(&args, 1, [6, 3]).unwrap_or_else(|e| {
+        eprintln!("{usage}: {e}");
+        std::process::exit(2);
+    });
+    let rounds = rounds.max(1);
     let set = args.first().map_or("", String::as_str);
     let (label, points): (String, Vec<[f64; 6]>) = match set {
         "minkowski" | "wrenches" => {
@@ -62,18 +58,10 @@ fn main() {
             std::process::exit(2);
         }
     };
-    let best = |run: &mut dyn FnMut()| -> Duration {
-        (0..rounds)
-            .map(|_| {
-                let started = Instant::now();
-                run();
-                started.elapsed()
-            })
-            .min()
-            .expect("at least one round")
-    };
     let mut hull = None;
-    let pqhull_time = best(&mut || hull = Some(Hull::try_new(&points).expect("a 6-D hull")));
+    let pqhull_time = best_of(rounds, || {
+        hull = Some(Hull::try_new(&points).expect("a 6-D hull"))
+    });
     let hull = hull.expect("built");
     hull.check().expect("Hull::check");
     println!(
@@ -87,8 +75,9 @@ fn main() {
     #[cfg(feature = "qhull")]
     {
         let mut facets = None;
-        let qhull_time =
-            best(&mut || facets = Some(pqhull::qhull_baseline::qhull_facet_count(&points)));
+        let qhull_time = best_of(rounds, || {
+            facets = Some(pqhull::qhull_baseline::qhull_facet_count(&points))
+        });
         match facets.expect("run") {
             Ok(n) => println!(
                 "Qhull qhull_facet_count (best of {rounds}) {:.3} ms: {n} triangulated facets{}",

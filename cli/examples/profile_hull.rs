@@ -2,7 +2,7 @@
 //! `perf record` sees only that call (the bench also runs Qhull and, untimed, `Hull::check`).
 //!
 //! ```sh
-//! cargo build --release --example profile_hull
+//! cargo build --release -p pqhull-cli --example profile_hull
 //! perf record -e cpu-clock -g ./target/release/examples/profile_hull minkowski-hull 8 5
 //! perf report --no-children
 //! ```
@@ -20,6 +20,7 @@ use pqhull::grasp::{Evaluator, Method, Metric};
 use pqhull::hull::Hull;
 use pqhull_cli::bench::census;
 use pqhull_cli::bench::hull::grasp_points;
+use pqhull_cli::bench::stats::numeric_args;
 use std::time::Instant;
 
 fn main() {
@@ -27,15 +28,11 @@ fn main() {
     let usage = "usage: profile_hull wrenches-hull|wrenches-volume|wrenches-census|\
                  minkowski-hull|minkowski-qinf|minkowski-census [edges] [rounds]";
     let row = args.first().map(String::as_str).unwrap_or("");
-    let number = |i: usize, default: usize| -> usize {
-        args.get(i).map_or(default, |s| {
-            s.parse().unwrap_or_else(|_| {
-                eprintln!("{usage}: not a number: {s}");
-                std::process::exit(2);
-            })
-        })
-    };
-    let (edges, rounds) = (number(1, 8), number(2, 5).max(1));
+    let [edges, rounds] = numeric_args(&args, 1, [8, 5]).unwrap_or_else(|e| {
+        eprintln!("{usage}: {e}");
+        std::process::exit(2);
+    });
+    let rounds = rounds.max(1);
     let (contacts, full_sum) = match row {
         "wrenches-hull" | "wrenches-volume" | "wrenches-census" => (4, false),
         "minkowski-hull" | "minkowski-qinf" | "minkowski-census" => (3, true),

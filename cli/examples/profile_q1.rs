@@ -3,7 +3,7 @@
 //! kind of grasp asked for.
 //!
 //! ```sh
-//! cargo build --release --example profile_q1
+//! cargo build --release -p pqhull-cli --example profile_q1
 //! perf record -e cpu-clock -g ./target/release/examples/profile_q1 force-closure 32 200 30
 //! perf report --no-children
 //! ```
@@ -13,6 +13,7 @@
 //! grasp and the work counters.
 
 use pqhull::grasp::{Evaluator, FrictionModel, Grasp, Method, Metric};
+use pqhull_cli::bench::stats::numeric_args;
 use pqhull_cli::bench::workloads::{GwsObject, object_grasps};
 use std::time::Instant;
 
@@ -27,15 +28,10 @@ fn main() {
             std::process::exit(2);
         }
     };
-    let number = |i: usize, default: usize| -> usize {
-        args.get(i).map_or(default, |s| {
-            s.parse().unwrap_or_else(|_| {
-                eprintln!("{usage}: not a number: {s}");
-                std::process::exit(2);
-            })
-        })
-    };
-    let (edges, count, rounds) = (number(1, 32), number(2, 200), number(3, 30));
+    let [edges, count, rounds] = numeric_args(&args, 1, [32, 200, 30]).unwrap_or_else(|e| {
+        eprintln!("{usage}: {e}");
+        std::process::exit(2);
+    });
     let friction = FrictionModel::try_new(0.5, edges).unwrap_or_else(|e| {
         eprintln!("{usage}: {e}");
         std::process::exit(2);

@@ -112,9 +112,62 @@ pub fn micros(elapsed: std::time::Duration) -> f64 {
     elapsed.as_secs_f64() * 1e6
 }
 
+/// The shortest of `rounds` timed calls of `run` (at least one), as the comparison examples
+/// report an engine's time.
+pub fn best_of(rounds: usize, mut run: impl FnMut()) -> std::time::Duration {
+    (0..rounds.max(1))
+        .map(|_| {
+            let started = std::time::Instant::now();
+            run();
+            started.elapsed()
+        })
+        .min()
+        .unwrap_or_default()
+}
+
+/// The `N` optional numeric arguments `args[first..first + N]` of an example's command line,
+/// each `defaults[i]` when absent.
+///
+/// # Errors
+/// The first argument that is not a non-negative integer, named.
+pub fn numeric_args<const N: usize>(
+    args: &[String],
+    first: usize,
+    defaults: [usize; N],
+) -> Result<[usize; N], String> {
+    let mut values = defaults;
+    for (i, value) in values.iter_mut().enumerate() {
+        if let Some(s) = args.get(first + i) {
+            *value = s.parse().map_err(|_| format!("not a number: {s}"))?;
+        }
+    }
+    Ok(values)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn numeric_args_take_defaults_and_name_the_bad_one() {
+        let args: Vec<String> = ["set", "7"].iter().map(|s| s.to_string()).collect();
+        assert_eq!(numeric_args(&args, 1, [4, 3]), Ok([7, 3]));
+        assert_eq!(numeric_args(&args, 2, [4]), Ok([4]));
+        let bad: Vec<String> = ["set", "x1"].iter().map(|s| s.to_string()).collect();
+        assert_eq!(
+            numeric_args(&bad, 1, [4, 3]),
+            Err("not a number: x1".to_string())
+        );
+    }
+
+    #[test]
+    fn best_of_runs_every_round_and_at_least_one() {
+        let mut calls = 0;
+        let _ = best_of(3, || calls += 1);
+        assert_eq!(calls, 3);
+        let _ = best_of(0, || calls += 1);
+        assert_eq!(calls, 4);
+    }
 
     #[test]
     fn empty_samples_give_nan_or_none() {
