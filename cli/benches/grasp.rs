@@ -22,7 +22,7 @@
 //! * `gradient/k=8`, `gradient/k=32` (16 grasps each): Q1 by the partial hull alone, and with
 //!   its exact gradient (`grasp::q1_gradient`) after it.
 //!
-//! Run with `cargo bench --features qhull --bench grasp` (or without the feature for pqhull
+//! Run with `cargo bench -p pqhull-cli --features qhull --bench grasp` (or without the feature for pqhull
 //! only); about 4 minutes on 2 quiet cores. One group: `... --bench grasp -- '^batch/'`.
 
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};

@@ -13,7 +13,7 @@
 //!
 //! Inputs are fixed-seed `pqhull::rbox` families (and `pqhull_cli::bench::hull`'s grid and grasp).
 //! Run with
-//! `cargo bench --features qhull --bench hull` (or without the feature for pqhull only).
+//! `cargo bench -p pqhull-cli --features qhull --bench hull` (or without the feature for pqhull only).
 
 use criterion::{Criterion, criterion_group, criterion_main};
 use pqhull::grasp::FrictionModel;

@@ -1,6 +1,6 @@
 //! What each grasp metric costs per grasp, beside Q1 on the same grasps.
 //!
-//! `cargo run --release --example metric_costs [GRASPS] [EDGES]` (defaults 200 and 8): random
+//! `cargo run --release -p pqhull-cli --example metric_costs [GRASPS] [EDGES]` (defaults 200 and 8): random
 //! 4-contact grasps on the benchmarks' bar (μ = 0.5, seed 1), each metric timed per grasp with
 //! `Instant` around the library call; medians and means in µs, and the median's ratio to Q1's.
 //! The soft rows give every contact torsion γ = 0.01 (a tenth of the bar's half-thickness).
