@@ -3,7 +3,8 @@
 //! coordinate, for ε from 1e−14 to 1e−3: pqhull's exact hull beside Qhull's (with
 //! `--features qhull`), each the best of the same rounds, with both engines' final and created
 //! facets and, untimed, how many of Qhull's facets are wrong: not facets of the exact hull (an
-//! input point strictly beyond, or a flat simplex through the centroid; exact orientation).
+//! input point strictly beyond, or a flat simplex through the centroid; exact orientation:
+//! `pqhull_cli::bench::perturb`).
 //!
 //! What it measures: how much of each engine's time on the raw sum is the size of the answer
 //! and how much the precision of its decisions. A perturbed sum has an exact hull of about the
@@ -24,8 +25,8 @@
 //! is fixed, so every run hulls the same points.
 
 use pqhull::Hull;
-use pqhull::geometry::Rng;
 use pqhull_cli::bench::hull::grasp_points;
+use pqhull_cli::bench::perturb::perturbed;
 use pqhull_cli::bench::stats::{best_of, numeric_args};
 
 /// The relative perturbations, 0 (the raw sum itself) first.
@@ -53,21 +54,26 @@ fn main() {
         std::process::exit(2);
     }
     let (_, _, raw) = grasp_points(1, 3, edges, true);
-    let largest = raw.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
     println!(
         "raw Minkowski sum 3x{edges} ({} points), best of {rounds}; us/created = time per created facet",
         raw.len()
     );
     println!(
         "{:>8} {:>10} {:>7} {:>8} {:>6} {:>10} {:>7} {:>8} {:>6} {:>6} {:>7}",
-        "eps", "pqhull ms", "facets", "created", "us/cr", "qhull ms", "facets", "created", "us/cr", "q/pq", "wrong"
+        "eps",
+        "pqhull ms",
+        "facets",
+        "created",
+        "us/cr",
+        "qhull ms",
+        "facets",
+        "created",
+        "us/cr",
+        "q/pq",
+        "wrong"
     );
     for eps in scales {
-        let mut rng = Rng::new(7);
-        let points: Vec<[f64; 6]> = raw
-            .iter()
-            .map(|p| p.map(|x| x + eps * largest * rng.uniform_in(-1.0, 1.0)))
-            .collect();
+        let points = perturbed(&raw, eps, 7);
         let mut built = None;
         let elapsed = best_of(rounds, || built = Some(Hull::try_new(&points)));
         let ms = elapsed.as_secs_f64() * 1e3;
@@ -103,36 +109,19 @@ fn qhull_columns(points: &[[f64; 6]], rounds: usize, pqhull_ms: f64) {
             q.facets_created,
             ms * 1e3 / q.facets_created.max(1) as f64,
             ms / pqhull_ms,
-            not_hull_facets(points).map_or_else(|| "-".to_string(), |n| n.to_string())
+            // Untimed, on a second run of Qhull.
+            pqhull_cli::bench::perturb::qhull_wrong_facets(points)
+                .map_or_else(|_| "-".to_string(), |(wrong, _)| wrong.to_string())
         ),
         Err(e) => {
             let e = e.to_string();
             let first = e.lines().next().unwrap_or_default();
-            println!("  qhull fails: {}", first.chars().take(90).collect::<String>());
+            println!(
+                "  qhull fails: {}",
+                first.chars().take(90).collect::<String>()
+            );
         }
     }
-}
-
-/// How many of Qhull's (triangulated) facets are not facets of the exact hull, untimed: those
-/// with an input point strictly beyond them or the centroid on them (a flat simplex), by exact
-/// orientation (`pqhull::predicates::orientation`), as `qhull_crosscheck.rs` counts on the raw
-/// sums; `None` if Qhull fails on this second run.
-#[cfg(feature = "qhull")]
-fn not_hull_facets(points: &[[f64; 6]]) -> Option<usize> {
-    use pqhull::predicates::{Sign, orientation};
-    let hull = pqhull::qhull_baseline::qhull_full_hull(points).ok()?;
-    let n = points.len() as f64;
-    let centroid: [f64; 6] = std::array::from_fn(|c| points.iter().map(|p| p[c]).sum::<f64>() / n);
-    let bad = hull
-        .facets
-        .iter()
-        .filter(|facet| {
-            let vertices: [[f64; 6]; 6] = std::array::from_fn(|i| points[facet.vertices[i]]);
-            let inside = orientation(&vertices, &centroid);
-            inside == Sign::Zero || points.iter().any(|p| orientation(&vertices, p) == inside.flip())
-        })
-        .count();
-    Some(bad)
 }
 
 #[cfg(not(feature = "qhull"))]

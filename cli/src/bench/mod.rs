@@ -36,6 +36,7 @@ pub mod compare;
 pub mod gws;
 pub mod hull;
 pub mod ows;
+pub mod perturb;
 pub mod runs;
 pub mod stats;
 pub mod workloads;

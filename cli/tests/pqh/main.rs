@@ -15,6 +15,7 @@ mod cli_stream;
 mod fuzz_bounded;
 mod hull_queries;
 mod penetration_cmd;
+mod perturbed_sum;
 mod plan_descent;
 mod reproduce;
 mod ridge_census;
