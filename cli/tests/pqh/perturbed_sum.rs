@@ -34,10 +34,7 @@ fn well_above_rounding_qhulls_hull_is_pqhulls_facet_for_facet() {
         let points = sum(eps);
         let hull = Hull::try_new(&points).unwrap();
         hull.check().unwrap();
-        let ours = facet_set(
-            hull.facets()
-                .map(|(_, f)| f.vertices().iter().map(|&v| v as usize).collect()),
-        );
+        let ours = facet_set(hull.facets().map(|(_, f)| f.vertices().to_vec()));
         let qhull = qhull_full_hull(&points).unwrap();
         let theirs = facet_set(qhull.facets.iter().map(|f| f.vertices.clone()));
         // Thousands of slivers, every one the same simplex in both (a simplicial polytope's
