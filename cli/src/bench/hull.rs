@@ -17,32 +17,34 @@
 //! | [`Workload::Wrenches`] | [`Grasp::wrenches`] of a force-closure bar grasp | [`Hull::try_new`]; [`gws_volume`] |
 //! | [`Workload::Minkowski`] | the raw Minkowski sum of a force-closure bar grasp's contacts, materialised | [`Hull::try_new`]; Q∞ by [`Method::Full`] |
 //!
-//! Q∞ is the plain variant (no zero wrench: `Metric::QInf { with_zero_wrench: false }`), the sum
-//! of the cone-edge sets alone, whose materialised sum (`k^m` points, not `(k + 1)^m`) is the set
+//! Q∞ is the plain variant (no zero wrench: `Metric::QInf { with_zero_wrench: false }`), the sum of
+//! the cone-edge sets alone, whose materialised sum (`k^m` points, not `(k + 1)^m`) is the set
 //! Qhull and the `hull` row get: `Σ_i w_i(j_i)` of the raw wrenches, summed in contact order.
-//! [`Method::Full`] materialises the *snapped* sum itself and hulls it with the exact engine,
-//! then certifies the value on the raw sum, or (origin outside) runs GJK on the raw sum
-//! (docs/ARCHITECTURE.md). The grasps are the first of [`bar_grasps`] whose Q1 (partial method,
-//! untimed) is force closure, and for a sum also whose sum spans 6-D with room to spare (three
-//! contacts on faces of one axis give a flat sum: Qhull refuses it, the full method settles it
-//! without a hull). Plain Q∞ of three contacts on the bar is never force closure — three unit
-//! normal forces on a box's faces balance only with a tangential force as large as a normal
-//! one, beyond μ = 0.5 — so its row is the full method on a grasp that is not force closure: the
-//! whole snapped sum is hulled, then GJK measures the distance. A report says when no candidate
+//! [`Method::Full`] materialises the *snapped* sum itself and hulls it with the exact engine, then
+//! certifies the value on the raw sum, or (origin outside) runs GJK on the raw sum
+//! (docs/ARCHITECTURE.md). The grasps are the first of [`bar_grasps`](super::workloads::bar_grasps)
+//! whose Q1 (partial method, untimed) is force closure, and for a sum also whose sum spans 6-D with
+//! room to spare (three contacts on faces of one axis give a flat sum: Qhull refuses it, the full
+//! method settles it without a hull). Plain Q∞ of three contacts on the bar is never force closure
+//! — three unit normal forces on a box's faces balance only with a tangential force as large as a
+//! normal one, beyond μ = 0.5 — so its row is the full method on a grasp that is not force closure:
+//! the whole snapped sum is hulled, then GJK measures the distance. A report says when no candidate
 //! qualified ([`CaseRow::force_closure`]).
 //!
 //! Times are wall clock on whatever else the machine is doing: compare rows of one run.
 
 use super::Progress;
 use super::stats::ratio;
-use super::workloads::{BAR_FRICTION, bar_grasps};
 use pqhull::grasp::metrics::gws_volume;
-use pqhull::grasp::{Evaluator, FrictionModel, Grasp, Method, Metric};
+use pqhull::grasp::{Evaluator, Grasp, Method, Metric};
 use pqhull::hull::Hull;
 use pqhull::rbox::{self, Family};
 use serde_json::{Value, json};
 use std::fmt;
 use std::time::Instant;
+
+mod inputs;
+pub use inputs::{grasp_for, grasp_points, grid, minkowski_sum};
 
 /// The most timed runs per case ([`HullBenchConfig::repeats`]).
 pub const MAX_REPEATS: usize = 1000;
@@ -109,7 +111,8 @@ pub enum Workload {
         side: usize,
     },
     /// The raw wrenches ([`Grasp::wrenches`]) of a force-closure random grasp on the GWS
-    /// benchmark's bar ([`bar_grasps`], μ = [`BAR_FRICTION`]): `contacts · edges` points in 6-D.
+    /// benchmark's bar ([`bar_grasps`](super::workloads::bar_grasps), μ =
+    /// [`BAR_FRICTION`](super::workloads::BAR_FRICTION)): `contacts · edges` points in 6-D.
     Wrenches {
         /// Contacts of the grasp.
         contacts: usize,
@@ -637,147 +640,6 @@ fn measure_case(case: &Case, config: &HullBenchConfig) -> Vec<CaseRow> {
     }
 }
 
-/// Every point of `{0, …, side − 1}^D`, last coordinate fastest.
-///
-/// ```
-/// use pqhull_cli::bench::hull::grid;
-/// let g = grid::<2>(3);
-/// assert_eq!(g.len(), 9);
-/// assert_eq!((g[0], g[1], g[8]), ([0.0, 0.0], [0.0, 1.0], [2.0, 2.0]));
-/// ```
-pub fn grid<const D: usize>(side: usize) -> Vec<[f64; D]> {
-    let count = (0..D).try_fold(1usize, |n, _| n.checked_mul(side));
-    let count = count.expect("grid: side^D overflows usize");
-    (0..count)
-        .map(|mut i| {
-            let mut p = [0.0; D];
-            for x in p.iter_mut().rev() {
-                *x = (i % side) as f64;
-                i /= side;
-            }
-            p
-        })
-        .collect()
-}
-
-/// The materialised Minkowski sum of `grasp`'s contact wrench sets ([`Grasp::contact_wrenches`],
-/// no zero wrench): one point per choice of one wrench per contact, `w_0(j_0) + w_1(j_1) + …`
-/// summed in contact order, choices in odometer order (the last contact's fastest).
-///
-/// ```
-/// use pqhull_cli::bench::hull::minkowski_sum;
-/// use pqhull_cli::bench::workloads::{BAR_FRICTION, bar_grasps};
-/// use pqhull::grasp::FrictionModel;
-/// let friction = FrictionModel::try_new(BAR_FRICTION, 4)?;
-/// let grasp = &bar_grasps(1, 1, 3, friction)[0];
-/// let sum = minkowski_sum(grasp);
-/// assert_eq!(Some(sum.len()), grasp.minkowski_points(false)); // 4^3
-/// # Ok::<(), pqhull::grasp::GraspError>(())
-/// ```
-pub fn minkowski_sum(grasp: &Grasp) -> Vec<[f64; 6]> {
-    let sets: Vec<Vec<[f64; 6]>> = (0..grasp.contact_count())
-        .map(|i| {
-            let mut set = vec![[0.0; 6]; grasp.contact_wrench_count(i)];
-            grasp.contact_wrenches(i, &mut set);
-            set
-        })
-        .collect();
-    let mut out: Vec<[f64; 6]> = vec![[0.0; 6]];
-    for set in &sets {
-        out = out
-            .iter()
-            .flat_map(|partial| {
-                set.iter()
-                    .map(move |w| std::array::from_fn(|c| partial[c] + w[c]))
-            })
-            .collect();
-    }
-    out
-}
-
-/// The first of [`GRASP_CANDIDATES`] random bar grasps of `contacts` fingers and `edges` cone
-/// edges whose Q1 (partial method) is force closure — and, with `full_sum`, whose plain
-/// Minkowski sum spans 6-D (`sum_spans_6d`, private) — and `true`; the first grasp and `false` when
-/// none is. Public for the profiling example (`cli/examples/profile_hull.rs`).
-pub fn grasp_for(seed: u64, contacts: usize, edges: usize, full_sum: bool) -> (Grasp, bool) {
-    let friction = FrictionModel::try_new(BAR_FRICTION, edges).expect("the suite's cone edges");
-    let grasps = bar_grasps(seed, GRASP_CANDIDATES, contacts, friction);
-    let mut evaluator =
-        Evaluator::new(Metric::Q1, Method::Partial, None).expect("Q1 by the partial method");
-    match grasps.iter().position(|g| {
-        (!full_sum || sum_spans_6d(g)) && evaluator.evaluate(g).is_ok_and(|q| q.force_closure)
-    }) {
-        Some(i) => (grasps[i].clone(), true),
-        None => (grasps[0].clone(), false),
-    }
-}
-
-/// The point set of a grasp row of the suite: the raw wrenches of [`grasp_for`]'s grasp, or with
-/// `full_sum` their materialised Minkowski sum ([`minkowski_sum`]); with the grasp and whether it
-/// is force closure. Public for the examples that time or check one row alone.
-pub fn grasp_points(
-    seed: u64,
-    contacts: usize,
-    edges: usize,
-    full_sum: bool,
-) -> (Grasp, bool, Vec<[f64; 6]>) {
-    let (grasp, closure) = grasp_for(seed, contacts, edges, full_sum);
-    let points = if full_sum {
-        minkowski_sum(&grasp)
-    } else {
-        grasp.wrenches()
-    };
-    (grasp, closure, points)
-}
-
-/// Whether the plain Minkowski sum of `grasp`'s contact wrench sets spans 6-D with room to
-/// spare: the differences `w_i(j) − w_i(0)` (which span the sum's affine hull) have numerical
-/// rank 6 by Gaussian elimination with complete pivoting, every pivot above `1e−6` of the first.
-/// On the bar, three contacts on faces of one axis fail it exactly (every sum has the same force
-/// along that axis), and some others within rounding: sets Qhull refuses as flat and the exact
-/// engine hulls as slivers of rounding noise.
-fn sum_spans_6d(grasp: &Grasp) -> bool {
-    let mut rows: Vec<[f64; 6]> = Vec::new();
-    for i in 0..grasp.contact_count() {
-        let mut set = vec![[0.0; 6]; grasp.contact_wrench_count(i)];
-        grasp.contact_wrenches(i, &mut set);
-        rows.extend(
-            set[1..]
-                .iter()
-                .map(|w| std::array::from_fn(|c| w[c] - set[0][c])),
-        );
-    }
-    let mut cols: Vec<usize> = (0..6).collect();
-    let mut first = 0.0;
-    for step in 0..6 {
-        let mut best = (0.0, step, 0);
-        for (r, row) in rows.iter().enumerate().skip(step) {
-            for (ci, &c) in cols.iter().enumerate().skip(step) {
-                if row[c].abs() > best.0 {
-                    best = (row[c].abs(), r, ci);
-                }
-            }
-        }
-        let (pivot, r, ci) = best;
-        if step == 0 {
-            first = pivot;
-        }
-        if pivot <= 1e-6 * first || pivot == 0.0 {
-            return false;
-        }
-        rows.swap(step, r);
-        cols.swap(step, ci);
-        let (c, top) = (cols[step], rows[step]);
-        for row in rows.iter_mut().skip(step + 1) {
-            let factor = row[c] / top[c];
-            for &k in &cols[step..] {
-                row[k] -= factor * top[k];
-            }
-        }
-    }
-    true
-}
-
 /// Milliseconds since `started`.
 fn ms_since(started: Instant) -> f64 {
     started.elapsed().as_secs_f64() * 1e3
@@ -989,69 +851,4 @@ fn row(
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn filters_select_and_refuse() {
-        let config = HullBenchConfig {
-            preset: Preset::Quick,
-            families: vec!["grid".into(), "wrenches".into()],
-            dimensions: vec![6],
-            ..HullBenchConfig::default()
-        };
-        let names: Vec<String> = config.cases().unwrap().iter().map(Case::name).collect();
-        assert_eq!(names, ["grid-m3", "wrenches-4x8"]);
-        let bad = |c: HullBenchConfig| c.cases().unwrap_err();
-        assert_eq!(
-            bad(HullBenchConfig {
-                families: vec!["cubes".into()],
-                ..config.clone()
-            }),
-            HullBenchError::UnknownFamily("cubes".into())
-        );
-        assert_eq!(
-            bad(HullBenchConfig {
-                dimensions: vec![7],
-                ..config.clone()
-            }),
-            HullBenchError::Dimension(7)
-        );
-        assert_eq!(
-            bad(HullBenchConfig {
-                dimensions: vec![3],
-                families: vec!["minkowski".into()],
-                ..config.clone()
-            }),
-            HullBenchError::NoCases
-        );
-        assert_eq!(
-            bad(HullBenchConfig {
-                repeats: 0,
-                ..config
-            }),
-            HullBenchError::Repeats(0)
-        );
-    }
-
-    #[test]
-    fn every_family_name_has_cases() {
-        let all = cases(Preset::Quick);
-        for name in FAMILY_NAMES {
-            assert!(all.iter().any(|c| c.family() == name), "{name}");
-        }
-    }
-
-    #[test]
-    fn minkowski_sum_is_every_choice() {
-        let friction = FrictionModel::try_new(BAR_FRICTION, 3).unwrap();
-        let grasp = &bar_grasps(2, 1, 2, friction)[0];
-        let sum = minkowski_sum(grasp);
-        let w = grasp.wrenches();
-        assert_eq!(sum.len(), 9);
-        for (i, p) in sum.iter().enumerate() {
-            let (a, b) = (w[i / 3], w[3 + i % 3]);
-            assert_eq!(*p, std::array::from_fn(|c| a[c] + b[c]));
-        }
-    }
-}
+mod tests;

@@ -1,0 +1,107 @@
+use crate::geometry::Rng;
+use crate::{ClosestToOrigin, FarthestPoint, Hull};
+
+/// Random points in [−1, 1]^6, and the cross-polytope's twelve vertices ±e_i after them.
+fn points(rng: &mut Rng) -> Vec<[f64; 6]> {
+    let mut points: Vec<[f64; 6]> = (0..40)
+        .map(|_| std::array::from_fn(|_| rng.uniform_in(-1.0, 1.0)))
+        .collect();
+    for i in 0..12 {
+        let mut e = [0.0; 6];
+        e[i / 2] = if i % 2 == 0 { 1.0 } else { -1.0 };
+        points.push(e);
+    }
+    points
+}
+
+#[test]
+fn colliding_ridge_keys_are_caught_and_the_cone_linked_right() {
+    let mut rng = Rng::new(5);
+    for _ in 0..10 {
+        let p = points(&mut rng);
+        let mut plain = Hull::empty();
+        plain
+            .rebuild_with_strategy(&p, FarthestPoint::new())
+            .unwrap();
+        let mut colliding = Hull::empty();
+        colliding.scratch.colliding_shares = true;
+        colliding
+            .rebuild_with_strategy(&p, FarthestPoint::new())
+            .unwrap();
+        assert!(
+            colliding.scratch.colliding_shares,
+            "kept across the rebuild"
+        );
+        assert!(
+            colliding.scratch.confirming_passes > 0,
+            "the collisions were caught"
+        );
+        assert_eq!(plain.scratch.confirming_passes, 0);
+        colliding.check().unwrap();
+        assert_eq!(colliding.vertex_indices(), plain.vertex_indices());
+        assert_eq!(colliding.facet_count(), plain.facet_count());
+        assert_eq!(
+            colliding.stats().facets_created,
+            plain.stats().facets_created
+        );
+    }
+}
+
+#[test]
+fn a_chosen_start_gives_the_same_hull_and_a_bad_one_is_ignored() {
+    let mut rng = Rng::new(3);
+    let mut other_work = 0;
+    for _ in 0..20 {
+        let p = points(&mut rng);
+        let mut greedy = Hull::empty();
+        greedy
+            .rebuild_with_strategy(&p, FarthestPoint::new())
+            .unwrap();
+        let nearest = Hull::empty()
+            .rebuild_with_strategy(&p, ClosestToOrigin::new())
+            .unwrap();
+        // A simplex around the origin's side (the six +e_i and −e_1) and two bad ones (a
+        // repeated index, an index out of range).
+        let around: Vec<usize> = (0..6).map(|i| 40 + 2 * i).chain([41]).collect();
+        let repeated = [0, 0, 1, 2, 3, 4, 5];
+        let out_of_range = [0, 1, 2, 3, 4, 5, p.len()];
+        for start in [&around[..], &repeated[..], &out_of_range[..]] {
+            let mut hull = Hull::empty();
+            hull.start_next_build_from(start);
+            hull.rebuild_with_strategy(&p, FarthestPoint::new())
+                .unwrap();
+            hull.check().unwrap();
+            assert_eq!(hull.vertex_indices(), greedy.vertex_indices());
+            assert_eq!(hull.facet_count(), greedy.facet_count());
+            // The partial strategy finds the same nearest facet from any start.
+            let mut partial = Hull::empty();
+            partial.start_next_build_from(start);
+            let r = partial
+                .rebuild_with_strategy(&p, ClosestToOrigin::new())
+                .unwrap();
+            partial.check().unwrap();
+            // The same facet; its distance computed from its vertices in another order.
+            let sorted = |mut v: [usize; 6]| {
+                v.sort_unstable();
+                v
+            };
+            assert_eq!(
+                sorted(r.closest_facet_vertices),
+                sorted(nearest.closest_facet_vertices)
+            );
+            let (a, b) = (r.signed_distance, nearest.signed_distance);
+            assert!((a - b).abs() <= 4.0 * f64::EPSILON * b.abs(), "{a} vs {b}");
+            // The chosen start is used: the search does other work from it.
+            if start == &around[..] && r.stats.facets_created != nearest.stats.facets_created {
+                other_work += 1;
+            }
+        }
+        // The start is for the next build only.
+        let mut hull = Hull::empty();
+        hull.start_next_build_from(&around);
+        hull.rebuild_with_strategy(&p, FarthestPoint::new())
+            .unwrap();
+        assert!(hull.start.is_none());
+    }
+    assert!(other_work > 0);
+}
