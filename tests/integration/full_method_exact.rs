@@ -12,6 +12,7 @@
 //! with small pivots: −0.264 where the exact value is −0.140 on a cylinder grasp with torque
 //! scale 1e−8).
 
+use crate::support::grasps::minkowski_points;
 use crate::support::min_norm::exact_min_norm_distance;
 use pqhull::geometry::Rng;
 use pqhull::grasp::{Contact, Evaluator, FrictionModel, Grasp, Method, Metric};
@@ -35,23 +36,6 @@ fn reframed(grasp: &Grasp, factor: f64, rho: f64) -> Grasp {
         .torque_scale(rho)
         .build()
         .expect("a valid grasp")
-}
-
-/// The contact wrench sets of `grasp` summed tuple by tuple in f64, contact order, the last
-/// contact's choice fastest: the points the Q∞ metrics hull.
-fn minkowski_sum(grasp: &Grasp) -> Vec<[f64; 6]> {
-    let k = grasp.friction().cone_edges();
-    let mut out = vec![[0.0; 6]];
-    for set in grasp.wrenches().chunks(k) {
-        out = out
-            .iter()
-            .flat_map(|partial| {
-                set.iter()
-                    .map(move |w| std::array::from_fn(|c| partial[c] + w[c]))
-            })
-            .collect();
-    }
-    out
 }
 
 /// Seeded grasps on a box and on a faceted sphere, 3 or 4 contacts, k and μ varied.
@@ -165,7 +149,7 @@ fn q_inf_of_every_method_is_exact_outside_at_every_scale() {
             (1e6, 1e6),
         ] {
             let grasp = reframed(base, factor, rho);
-            let sum = minkowski_sum(&grasp);
+            let sum = minkowski_points(&grasp, false);
             let points: Vec<Vec<f64>> = sum.iter().map(|p| p.to_vec()).collect();
             let distance = exact_min_norm_distance(&points, &[0.0; 6]);
             if distance == 0.0 {
@@ -219,7 +203,10 @@ fn subnormal_torques_are_evaluated_exactly() {
     let points: Vec<Vec<f64>> = w.iter().map(|p| p.to_vec()).collect();
     let distance = exact_min_norm_distance(&points, &[0.0; 6]);
     let scale = w.iter().map(norm).fold(0.0, f64::max);
-    let sum: Vec<Vec<f64>> = minkowski_sum(&grasp).iter().map(|p| p.to_vec()).collect();
+    let sum: Vec<Vec<f64>> = minkowski_points(&grasp, false)
+        .iter()
+        .map(|p| p.to_vec())
+        .collect();
     let sum_distance = exact_min_norm_distance(&sum, &[0.0; 6]);
     let sum_scale = 2.0 * scale;
     // Two opposed contacts: a flat set, which the slab test settles without a hull.

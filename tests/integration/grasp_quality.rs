@@ -1,7 +1,7 @@
 //! Grasp quality metrics: known answers, invariances, partial = full on many random grasps, Q∞
 //! implicit = materialised, batch order.
 
-use crate::support::grasps::random_bar_grasp;
+use crate::support::grasps::{minkowski_points, random_bar_grasp};
 use pqhull::geometry::Rng;
 use pqhull::grasp::quality::q1_of_wrenches;
 use pqhull::grasp::{
@@ -480,28 +480,6 @@ fn with_contacts(grasp: &Grasp, copies: &[usize]) -> Grasp {
         .torque_scale(grasp.torque_scale())
         .build()
         .unwrap()
-}
-
-/// Every point of the Minkowski sum of the grasp's contact wrench sets (with the zero wrench if
-/// asked), contact by contact as listed: the sum written out in the test, no merging.
-fn minkowski_points(grasp: &Grasp, with_zero_wrench: bool) -> Vec<[f64; 6]> {
-    let k = grasp.friction().cone_edges();
-    let mut sums = vec![[0.0; 6]];
-    for i in 0..grasp.contact_count() {
-        let mut set = vec![[0.0; 6]; k];
-        grasp.contact_wrenches(i, &mut set);
-        if with_zero_wrench {
-            set.push([0.0; 6]);
-        }
-        sums = sums
-            .iter()
-            .flat_map(|s| {
-                set.iter()
-                    .map(move |w| std::array::from_fn(|c| s[c] + w[c]))
-            })
-            .collect();
-    }
-    sums
 }
 
 /// Issue 12, item 4: repeated contacts cost nothing. Q∞ of contacts each listed r times is r

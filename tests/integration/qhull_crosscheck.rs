@@ -128,29 +128,13 @@ fn crosscheck_6d() {
 /// that of a different, inexact answer.
 #[test]
 fn qhull_is_not_exact_on_a_raw_minkowski_sum() {
-    use super::support::grasps::{BAR_FRICTION, bar_grasps};
+    use super::support::grasps::{BAR_FRICTION, bar_grasps, minkowski_points};
     use pqhull::grasp::FrictionModel;
     use pqhull::predicates::{Sign, orientation};
     let friction = FrictionModel::try_new(BAR_FRICTION, 6).unwrap();
     let mut found = 0;
     for grasp in bar_grasps(5, 40, 3, friction) {
-        let sets: Vec<Vec<[f64; 6]>> = (0..grasp.contact_count())
-            .map(|i| {
-                let mut set = vec![[0.0; 6]; grasp.contact_wrench_count(i)];
-                grasp.contact_wrenches(i, &mut set);
-                set
-            })
-            .collect();
-        let mut sum: Vec<[f64; 6]> = vec![[0.0; 6]];
-        for set in &sets {
-            sum = sum
-                .iter()
-                .flat_map(|a| {
-                    set.iter()
-                        .map(move |w| std::array::from_fn(|c| a[c] + w[c]))
-                })
-                .collect();
-        }
+        let sum = minkowski_points(&grasp, false);
         let (Ok(qhull), Ok(hull)) = (qhull_full_hull(&sum), Hull::try_new(&sum)) else {
             continue; // flat to Qhull or to the exact engine
         };

@@ -230,17 +230,7 @@ fn explicit_minkowski_sum(g: &Grasp, with_zero_wrench: bool) -> Vec<[f64; 6]> {
         sets.push(set);
         at += n;
     }
-    let mut sums = vec![[0.0; 6]];
-    for set in &sets {
-        sums = sums
-            .iter()
-            .flat_map(|s| {
-                set.iter()
-                    .map(move |w| std::array::from_fn(|a| s[a] + w[a]))
-            })
-            .collect();
-    }
-    sums
+    crate::support::grasps::sum_of_sets(&sets)
 }
 
 fn qinf(g: &Grasp, with_zero_wrench: bool, method: Method) -> Evaluation {

@@ -188,3 +188,36 @@ pub fn with_contact_moved(grasp: &Grasp, i: usize, v: [f64; 3], s: f64) -> Grasp
         .build()
         .expect("a valid grasp")
 }
+
+/// Every sum of one point from each of `sets`, the first set's choice slowest: a Minkowski sum
+/// written out in the test, no merging (`Σ_i w_i(j_i)`, summed in set order).
+pub fn sum_of_sets(sets: &[Vec<[f64; 6]>]) -> Vec<[f64; 6]> {
+    let mut sums = vec![[0.0; 6]];
+    for set in sets {
+        sums = sums
+            .iter()
+            .flat_map(|s| {
+                set.iter()
+                    .map(move |w| std::array::from_fn(|c| s[c] + w[c]))
+            })
+            .collect();
+    }
+    sums
+}
+
+/// The materialised Minkowski sum of `grasp`'s contact wrench sets
+/// ([`Grasp::contact_wrenches`]), each with the zero wrench when `with_zero_wrench`: the points
+/// the Q∞ metrics hull, in contact order.
+pub fn minkowski_points(grasp: &Grasp, with_zero_wrench: bool) -> Vec<[f64; 6]> {
+    let sets: Vec<Vec<[f64; 6]>> = (0..grasp.contact_count())
+        .map(|i| {
+            let mut set = vec![[0.0; 6]; grasp.contact_wrench_count(i)];
+            grasp.contact_wrenches(i, &mut set);
+            if with_zero_wrench {
+                set.push([0.0; 6]);
+            }
+            set
+        })
+        .collect();
+    sum_of_sets(&sets)
+}
