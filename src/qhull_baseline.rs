@@ -136,8 +136,48 @@ impl From<QhError<'_>> for QhullError {
     }
 }
 
+/// How Qhull handles its precision problems: the options of a run (see [`qhull_full_hull_with`]).
+///
+/// Qhull decides in `f64` with tolerances, so on nearly degenerate input it must do something
+/// about facets it cannot orient reliably. Its manual's answers are merging nearly coplanar
+/// facets (the default), joggling the input (`QJ`) and neither (`Q0`, which these bindings
+/// cannot pass: they check options as `qconvex` does, which hides it). None of them is exact:
+/// on the grasp layer's raw Minkowski sums each answers with facets that are not facets of the
+/// hull of the caller's points (docs/benchmarks.md, "Qhull's three answers").
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum QhullOptions {
+    /// Qhull's defaults plus `Qt` (what every function of this module without `_with` runs, and
+    /// what scipy's `ConvexHull` runs): nearly coplanar facets merged (`C-0`, `Qx` from 5-D
+    /// on), the merged facets reported as simplices.
+    #[default]
+    Merged,
+    /// `QJ`: every coordinate joggled by a random amount (about 1e−11 of the largest, more on
+    /// a retry; Qhull's seed is fixed, so every run joggles alike), so that no merging is
+    /// needed: a simplicial hull of *other* points.
+    Joggled,
+}
+
+impl QhullOptions {
+    /// The option words passed to Qhull.
+    pub fn words(self) -> &'static [&'static str] {
+        match self {
+            QhullOptions::Merged => &["Qt"],
+            QhullOptions::Joggled => &["QJ"],
+        }
+    }
+}
+
 /// Checks what Qhull does not, then runs Qhull (default options plus `Qt`, stderr captured).
 fn run_qhull<const D: usize>(points: &[[f64; D]]) -> Result<Qh<'static>, QhullError> {
+    run_qhull_with(points, QhullOptions::Merged)
+}
+
+/// [`run_qhull`] with `options`.
+fn run_qhull_with<const D: usize>(
+    points: &[[f64; D]],
+    options: QhullOptions,
+) -> Result<Qh<'static>, QhullError> {
     if D < 2 {
         return Err(QhullError::DimensionTooLow { dimension: D });
     }
@@ -153,8 +193,8 @@ fn run_qhull<const D: usize>(points: &[[f64; D]]) -> Result<Qh<'static>, QhullEr
     let builder = Qh::builder()
         .compute(true)
         .capture_stderr(true)
-        .qhull_args(["Qt"])
-        .expect("static option string");
+        .qhull_args(options.words())
+        .expect("static option words without NUL");
     Ok(builder.build_from_iter(points.iter().copied())?)
 }
 
@@ -183,7 +223,29 @@ fn run_qhull<const D: usize>(points: &[[f64; D]]) -> Result<Qh<'static>, QhullEr
 /// # Ok::<(), pqhull::qhull_baseline::QhullError>(())
 /// ```
 pub fn qhull_full_hull<const D: usize>(points: &[[f64; D]]) -> Result<QhullHull, QhullError> {
-    let qh = run_qhull(points)?;
+    qhull_full_hull_with(points, QhullOptions::Merged)
+}
+
+/// [`qhull_full_hull`] with Qhull's `options` (see [`QhullOptions`]).
+///
+/// # Errors
+///
+/// As [`qhull_full_hull`].
+///
+/// ```
+/// use pqhull::qhull_baseline::{QhullOptions, qhull_full_hull_with};
+///
+/// let square = [[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0], [0.2, 0.1]];
+/// for options in [QhullOptions::Merged, QhullOptions::Joggled] {
+///     assert_eq!(qhull_full_hull_with(&square, options)?.vertices, vec![0, 1, 2, 3]);
+/// }
+/// # Ok::<(), pqhull::qhull_baseline::QhullError>(())
+/// ```
+pub fn qhull_full_hull_with<const D: usize>(
+    points: &[[f64; D]],
+    options: QhullOptions,
+) -> Result<QhullHull, QhullError> {
+    let qh = run_qhull_with(points, options)?;
 
     let mut vertices = qh
         .vertices()
@@ -310,7 +372,19 @@ pub struct QhullStats {
 /// # Ok::<(), pqhull::qhull_baseline::QhullError>(())
 /// ```
 pub fn qhull_stats<const D: usize>(points: &[[f64; D]]) -> Result<QhullStats, QhullError> {
-    let qh = run_qhull(points)?;
+    qhull_stats_with(points, QhullOptions::Merged)
+}
+
+/// [`qhull_stats`] with Qhull's `options` (see [`QhullOptions`]).
+///
+/// # Errors
+///
+/// As [`qhull_full_hull_with`].
+pub fn qhull_stats_with<const D: usize>(
+    points: &[[f64; D]],
+    options: QhullOptions,
+) -> Result<QhullStats, QhullError> {
+    let qh = run_qhull_with(points, options)?;
     Ok(QhullStats {
         facets: qh.num_facets(),
         vertices: qh.num_vertices(),

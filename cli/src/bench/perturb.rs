@@ -41,21 +41,54 @@ pub fn perturbed<const D: usize>(points: &[[f64; D]], eps: f64, seed: u64) -> Ve
 pub fn qhull_wrong_facets<const D: usize>(
     points: &[[f64; D]],
 ) -> Result<(usize, usize), pqhull::qhull_baseline::QhullError> {
+    qhull_wrong_facets_with(points, pqhull::qhull_baseline::QhullOptions::Merged)
+}
+
+/// [`qhull_wrong_facets`] for a run of Qhull with `options`: with
+/// [`QhullOptions::Joggled`](pqhull::qhull_baseline::QhullOptions::Joggled), Qhull's facets of
+/// the joggled points judged against the caller's `points`.
+///
+/// # Errors
+/// Qhull's, when it fails on `points`.
+#[cfg(feature = "qhull")]
+pub fn qhull_wrong_facets_with<const D: usize>(
+    points: &[[f64; D]],
+    options: pqhull::qhull_baseline::QhullOptions,
+) -> Result<(usize, usize), pqhull::qhull_baseline::QhullError> {
+    let hull = pqhull::qhull_baseline::qhull_full_hull_with(points, options)?;
+    let facets: Vec<&[usize]> = hull.facets.iter().map(|f| f.vertices.as_slice()).collect();
+    Ok((wrong_facets(points, &facets), facets.len()))
+}
+
+/// How many of `facets` (each D indices into `points`, in any order) are not facets of the
+/// exact hull of `points`: those with a point strictly beyond them, or with the centroid of
+/// the points on them (a flat simplex), by exact orientation
+/// ([`pqhull::predicates::orientation`]). A facet with other than D indices, or an index out
+/// of range, counts as wrong. Costs one orientation per point and facet.
+///
+/// ```
+/// use pqhull_cli::bench::perturb::wrong_facets;
+/// let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+/// let sides: [&[usize]; 4] = [&[0, 1], &[1, 2], &[2, 3], &[3, 0]];
+/// assert_eq!(wrong_facets(&square, &sides), 0);
+/// assert_eq!(wrong_facets(&square, &[&[0, 2], &[0, 1], &[0, 0]]), 2); // a diagonal, a point
+/// ```
+pub fn wrong_facets<const D: usize>(points: &[[f64; D]], facets: &[&[usize]]) -> usize {
     use pqhull::predicates::{Sign, orientation};
-    let hull = pqhull::qhull_baseline::qhull_full_hull(points)?;
     let n = points.len() as f64;
     let centroid: [f64; D] = std::array::from_fn(|c| points.iter().map(|p| p[c]).sum::<f64>() / n);
-    let wrong = hull
-        .facets
+    facets
         .iter()
         .filter(|facet| {
-            let vertices: [[f64; D]; D] = std::array::from_fn(|i| points[facet.vertices[i]]);
+            if facet.len() != D || facet.iter().any(|&i| i >= points.len()) {
+                return true;
+            }
+            let vertices: [[f64; D]; D] = std::array::from_fn(|i| points[facet[i]]);
             let inside = orientation(&vertices, &centroid);
             inside == Sign::Zero
                 || points
                     .iter()
                     .any(|p| orientation(&vertices, p) == inside.flip())
         })
-        .count();
-    Ok((wrong, hull.facets.len()))
+        .count()
 }
