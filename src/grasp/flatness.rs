@@ -87,7 +87,7 @@ impl std::fmt::Debug for Flatness {
 
 impl Flatness {
     /// Whether a slab `{x : |u·x| ≤ limit}` through the origin (`u` a unit vector) holds every
-    /// point of `points`: [`slab`](Self::slab)`(points) <= limit`, the same answer, but without
+    /// point of `points`: `slab(points) <= limit` (the test-only rigorous half-width), the same answer, but without
     /// the eigensolver for a set that is certainly far from flat (a force-closure grasp's, the
     /// common case): a Cholesky factorisation of the Gram matrix less a shift proves that every
     /// slab holding the points is more than twice `limit` wide.

@@ -10,7 +10,7 @@
 //! 2. **Flatness**: a raw set within [`FLAT`](super::flatness::FLAT) of a hyperplane through the
 //!    origin is not force closure; its value comes from the set's own nearest-point routine.
 //! 3. **The snapped hull** (partial or full), when the set has a snapped copy: when it holds the
-//!    origin strictly inside, the rigorous bracket of [`certify`](super::certify) on the raw set
+//!    origin strictly inside, the rigorous bracket of [`certify`] on the raw set
 //!    gives the value when narrow enough.
 //! 4. **The boundary case**: the origin within `δ` of the snapped surface. The raw simplex of the
 //!    snapped hull's nearest facet bounds the value from above, the set's outside bound from

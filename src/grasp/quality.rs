@@ -324,7 +324,7 @@ impl HullEvaluator {
     /// [`QualityError::NonFiniteWrench`] when the torque scale overflows the wrenches;
     /// [`QualityError::WrenchTooLarge`] above [`MAX_WRENCH_COORDINATE`];
     /// [`QualityError::MinkowskiTooLarge`] for Q∞ by a full method with too many points;
-    /// [`QualityError::Qhull`] when Qhull fails.
+    /// `QualityError::Qhull` when Qhull fails (feature `qhull`).
     pub(in crate::grasp) fn evaluate(&mut self, grasp: &Grasp) -> Result<Quality, QualityError> {
         let started = Instant::now();
         if !self.method.supports(self.metric) {

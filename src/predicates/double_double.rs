@@ -260,7 +260,7 @@ pub(in crate::predicates) struct DdPlane<const D: usize> {
 impl<const D: usize> DdPlane<D> {
     /// The plane through `vertices`, every coordinate in `[−1, 1]` (`None` otherwise), with the
     /// permanents of |minor| behind each cofactor as the filter computed them; from the rows
-    /// `v_k − v_(k−1)` when `chained` (as [`FacetPlane`]'s chained plane), else `v_k − v0`.
+    /// `v_k − v_(k−1)` when `chained` (as [`FacetPlane`](super::FacetPlane)'s chained plane), else `v_k − v0`.
     ///
     /// Error analysis: the rows `v_k − v0` are exact double-doubles, so only the expansion and the
     /// final dot product round. Under the model `fl(x ∘ y) = (x ∘ y)(1 + δ)`, `|δ| ≤ U2`, the

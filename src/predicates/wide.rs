@@ -223,7 +223,7 @@ struct IntegerColumns<const D: usize> {
 }
 
 /// `⌈log2 r!⌉` for r = 0…8: a minor of order r, and every partial sum of its expansion (bounded
-/// by the permanent), is below r!·Π_{c∈S} 2^(bits_c) ≤ 2^(LOG2_FACTORIAL[r] + Σ bits_c).
+/// by the permanent), is below r!·Π_{c∈S} 2^(bits_c) ≤ 2^(LOG2_FACTORIAL\[r\] + Σ bits_c).
 const LOG2_FACTORIAL: [u32; 9] = [0, 0, 1, 3, 5, 7, 10, 13, 16];
 
 /// Limbs for the minors of each order r = 1…D of a matrix whose columns' largest entries have

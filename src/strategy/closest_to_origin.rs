@@ -20,7 +20,7 @@ pub use source::{NoSource, PointSource, SourceError};
 ///
 /// Facets wait in a priority queue keyed by how far the query point lies beyond their plane. The
 /// strategy pops the top facet; if any point lies strictly beyond it (its outside set, after
-/// [`StrategyHooks::claim_beyond`](crate::hull::StrategyHooks::claim_beyond)), the facet is expanded and its replacements queued. Otherwise the facet's
+/// [`StrategyHooks::claim_beyond`]), the facet is expanded and its replacements queued. Otherwise the facet's
 /// plane supports *every* input point, and:
 ///
 /// * **query inside** (checked exactly against every live facet): the partial hull `P` is inside the
@@ -124,7 +124,7 @@ impl<const D: usize> DistanceResult<D> {
 }
 
 /// Whether every coordinate of `point` is finite and at most `bound` in magnitude (the range
-/// [`StrategyHooks::insert_beyond`](crate::hull::StrategyHooks::insert_beyond) accepts).
+/// [`StrategyHooks::insert_beyond`] accepts).
 fn in_range<const D: usize>(point: &[f64; D], bound: f64) -> bool {
     point.iter().all(|x| x.abs() <= bound)
 }
@@ -372,7 +372,7 @@ impl<const D: usize, S: Implicit<D>> ClosestToOrigin<D, S> {
     }
 
     /// Adds a point strictly beyond facet `id` — an input point (after
-    /// [`StrategyHooks::claim_beyond`](crate::hull::StrategyHooks::claim_beyond)) or one of the source's — and queues the new facets; `false` when
+    /// [`StrategyHooks::claim_beyond`]) or one of the source's — and queues the new facets; `false` when
     /// nothing lies beyond it, so that its plane supports the full hull.
     fn grow_beyond(&mut self, hull: &mut Hull<D>, id: FacetId) -> bool {
         if hull.facet(id).outside_len() > 0 || hull.claim_beyond(id) {

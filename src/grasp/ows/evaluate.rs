@@ -181,7 +181,7 @@ fn ows_with(
     }
 }
 
-/// Q_OWS by the grasp cascade's steps ([`pipeline`](crate::grasp::pipeline)) with the
+/// Q_OWS by the grasp cascade's steps ([`pipeline`]) with the
 /// disturbances' gauge: the separation and slab tests of the wrench set (no value: not force
 /// closure); the search on the snapped wrenches, certified on the raw ones by the same bracket
 /// as Q1's; failing that, Q1's cascade for the verdict, then the search on the caller's own

@@ -66,7 +66,7 @@ fn tuple_count(sets: &[Vec<[f64; 6]>]) -> Option<usize> {
         .try_fold(1usize, |n, set| n.checked_mul(set.len()))
 }
 
-/// The raw side of a Minkowski sum for [`certify::bracket`]: `δ` (the distance between a
+/// The raw side of a Minkowski sum for [`certify::bracket`](crate::grasp::certify::bracket): `δ` (the distance between a
 /// snapped Minkowski point as computed and the exact sum of the same raw wrenches) and the
 /// rounding of a raw sum computed in `f64`.
 fn raw_bounds(cones: &SnappedCones, raw_sets: &[Vec<[f64; 6]>]) -> (f64, f64) {
@@ -304,7 +304,7 @@ fn seed_points(seeds: &mut Vec<[f64; 6]>, mut support: impl FnMut(&[f64; 6]) -> 
 }
 
 /// Q∞'s wrench set for the partial method: the implicit Minkowski sum, answered through its
-/// support function (never materialised). The cascade's steps ([`pipeline`]) on it:
+/// support function (never materialised). The cascade's steps ([`pipeline`](crate::grasp::pipeline)) on it:
 /// 1. with the zero wrench, GJK on the *union* of the raw cone edges: a certified separation
 ///    means the grasp is not force closure, and then Q∞ = 0 exactly (the origin, a point of the
 ///    sum, is on its boundary: the two hulls have the same force closure); then GJK on the raw
