@@ -20,9 +20,9 @@
 //! ./target/release/examples/perturbed_sum 8 3
 //! ```
 //!
-//! Arguments: cone edges (6), rounds (3), and optionally one ε (a number such as `1e-8`) to run
-//! that scale alone (for a profiler). The grasp is the suite's (seed 1); the perturbation's seed
-//! is fixed, so every run hulls the same points.
+//! Arguments: cone edges (6), rounds (3), optionally one ε (a number such as `1e-8`) to run
+//! that scale alone (for a profiler), and then the perturbation's seed (7). The grasp is the
+//! suite's (seed 1); with the same seed, every run hulls the same points.
 
 use pqhull::Hull;
 use pqhull_cli::bench::hull::grasp_points;
@@ -36,7 +36,7 @@ const SCALES: [f64; 11] = [
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let usage = "usage: perturbed_sum [edges] [rounds] [eps]";
+    let usage = "usage: perturbed_sum [edges] [rounds] [eps] [seed]";
     let [edges, rounds] = numeric_args(&args[..args.len().min(2)], 0, [6, 3]).unwrap_or_else(|e| {
         eprintln!("{usage}: {e}");
         std::process::exit(2);
@@ -46,6 +46,15 @@ fn main() {
         Some(Ok(eps)) if (0.0..=1.0).contains(&eps) => vec![eps],
         Some(_) => {
             eprintln!("{usage}: eps must be a number from 0 to 1, got {}", args[2]);
+            std::process::exit(2);
+        }
+    };
+    // The perturbation's seed (7 unless a fourth argument names another).
+    let seed = match args.get(3).map(|a| a.parse::<u64>()) {
+        None => 7,
+        Some(Ok(seed)) => seed,
+        Some(Err(_)) => {
+            eprintln!("{usage}: seed must be a whole number, got {}", args[3]);
             std::process::exit(2);
         }
     };
@@ -73,7 +82,7 @@ fn main() {
         "wrong"
     );
     for eps in scales {
-        let points = perturbed(&raw, eps, 7);
+        let points = perturbed(&raw, eps, seed);
         let mut built = None;
         let elapsed = best_of(rounds, || built = Some(Hull::try_new(&points)));
         let ms = elapsed.as_secs_f64() * 1e3;
