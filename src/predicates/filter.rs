@@ -260,24 +260,34 @@ macro_rules! plane_through {
         let minors = minors_of(&rows);
 
 
-        // Error analysis (why these constants are safe; u = 2^-53).
-        // * Entries: ê = fl(v_k − v0) = (v_k − v0)(1 + δ), |δ| ≤ u (a difference that underflows is
-        //   exact). Replacing the exact rows by ê perturbs a (D−1)-minor by at most
-        //   ((1+u)^(D−1) − 1)·P ≈ (D−1)u·P, P the permanent of |ê|.
-        // * Laplace level k (a sum of k products of an entry by a computed (k−1)-minor): the product
-        //   and the recursive summation add at most γ_k = ku/(1−ku) relative to the sum of absolute
-        //   terms, which is bounded by the permanent; errors of the sub-minors are carried over
-        //   weighted by |entry|, i.e. again relative to the permanent. Summing levels 2..D−1 gives at
-        //   most Σ k·u ≈ D²/2·u·P to first order.
-        // * Final dot product Σ Ĉ_j·d̂_j with d̂_j = fl(p_j − v0_j): the relative error of d̂_j (u),
-        //   and the D-term dot product (γ_D) add (D+1)u·|Ĉ_j| per |d_j|, plus second-order terms.
-        // First order: err_j ≈ (D²/2 + D)·u·P_j + (D+1)·u·|C_j|. We take
-        // c_D = 2(D² + 4D + 8) (over four times the first-order coefficient, which absorbs all
-        // second-order terms, the use of computed instead of exact permanents and |d̂| instead of
-        // |d|) and (D+3) for the cofactor term.
+        // Error analysis (why these constants are safe; u = 2^-53, γ_n = nu/(1 − nu)). Every
+        // rounding below attaches a factor (1 + δ), |δ| ≤ u, to whole product terms, so a
+        // product of at most n of them is 1 + θ with |θ| ≤ γ_n (Higham, Lemma 3.1).
+        // * Entries: ê = fl(v_k − v0) = e(1 + δ) (a difference that underflows is exact).
+        // * A minor of size k is fl(Σ_i ±ê_(k,j_i)·m̂_i), the first term added to zero (exact):
+        //   each of its k products carries at most k roundings (its own and the k − 1 sums), so
+        //   level k adds at most k factors to each elementary term of the expansion (a product
+        //   of k entries, one per row). Size-1 minors are the entries, exact.
+        // * So each term of a computed cofactor (size D − 1) carries at most
+        //   n = Σ_(k=2..D−1) k + (D − 1) = (D − 1)(D + 2)/2 − 1 factors (19 in 6-D), and
+        //   |Ĉ_j − C_j| ≤ γ_n·P_j, P_j the permanent of the exact |e| behind cofactor j. The
+        //   computed permanent P̂_j (the same expansion on |ê|, sums of non-negative terms)
+        //   is at least (1 − γ_n)·P_j, so |Ĉ_j − C_j| ≤ γ_n/(1 − γ_n)·P̂_j = nu/(1 − 2nu)·P̂_j.
+        // * The value Σ_j Ĉ_j·d̂_j (d̂_j = fl(p_j − v0_j) = d_j(1 + δ), the first term added to
+        //   zero) differs from Σ_j Ĉ_j·d_j by at most γ_(D+1)·Σ_j |Ĉ_j|·|d_j|, and |d_j| ≤
+        //   |d̂_j|/(1 − u): so |value − det| ≤ Σ_j err_j·|d̂_j| with
+        //   err_j = [nu/(1 − 2nu)·P̂_j + γ_(D+1)·|Ĉ_j|]/(1 − u).
+        // We take (n + 1)u and (D + 2)u: their excess over those coefficients, 1/n and 1/(D + 1)
+        // relative, covers the second-order terms and the two roundings of err_j's own
+        // computation ((n + 1)(1 − u)² ≥ n/((1 − 2nu)(1 − u)) for n ≤ 34, D = 8). The
+        // per-point sum Σ err_j·|d̂_j| is covered by `BOUND_INFLATION`, underflow by `slack`.
+        // (Before 2026-12-07 the coefficient was 2(D² + 4D + 8)u, a first-order estimate
+        // inflated fourfold: 136u against 20u in 6-D. The tight one lets the filter decide
+        // values 6.8 times nearer the plane, and certify the normals of more thin facets.)
         let d = D as f64;
-        let c_perm = 2.0 * (d * d + 4.0 * d + 8.0) * U;
-        let c_cof = (d + 3.0) * U;
+        let n = ((D - 1) * (D + 2) / 2).saturating_sub(1) as f64;
+        let c_perm = (n + 1.0) * U;
+        let c_cof = (d + 2.0) * U;
         let mut cofactors = [0.0; D];
         let mut error = [0.0; D];
         let mut permanents = [0.0; D];
