@@ -10,7 +10,7 @@
 //! Double-double arithmetic (each value an unevaluated sum `hi + lo` of two `f64`) carries about
 //! 2^-101 relative accuracy at ~20 `f64` operations per operation, so it decides those signs with
 //! a margin of ~2^48, and leaves to the exact path only the determinants that are zero or within
-//! ~2^-95 of the permanent.
+//! ~2^-97 of the permanent.
 //!
 //! No maintained crate offers double-double arithmetic with the *rigorous* per-operation bounds
 //! this certificate needs (the `twofloat` and `qd` ports document no bounds), hence the few
@@ -257,18 +257,34 @@ pub(in crate::predicates) struct DdPlane<const D: usize> {
     error: [f64; D],
 }
 
+/// The error coefficients of [`DdPlane::new`]: on the filter's permanent `P̂_j`, and on `|C_j|`.
+///
+/// Why they are safe, under the model `fl(x ∘ y) = (x ∘ y)(1 + δ)`, `|δ| ≤ U2` (the counting of
+/// [`FacetPlane::new`](super::FacetPlane::new)'s analysis, `γ_n = n·U2/(1 − n·U2)`): the rows are
+/// exact, a minor of size k carries at most k factors on each of its terms (one product, at most
+/// k − 1 sums; a first term is the product alone, a size-1 minor one product by one), so each
+/// term of a cofactor carries at most `n = 1 + Σ_(k=2..D−1) k = (D − 1)D/2` (15 in 6-D) and
+/// `|Ĉ_j − C_j| ≤ γ_n·P_j`, `P_j` the exact permanent. The filter computed `P̂_j ≥ (1 −
+/// γ_m(u))·P_j` (`m ≤ 34` roundings of `f64`, its own analysis), a relative `2^-46` at most. The
+/// side test's dot product (a product and at most D sums per term, on exact differences) adds
+/// `γ_(D+1)·Σ|C_j|·|d_j|`. So `(n + 1)·U2` and `(D + 2)·U2`: their excess over `γ_n/(1 − 2^-46)`
+/// and `γ_(D+1)`, a relative `1/n` and `1/(D + 1)`, covers the second-order terms and the few
+/// `f64` roundings of the errors' own computation. (Until 2026-12-07 they were
+/// `2(D² + 4D + 8)·U2` and `(D + 3)·U2`, the filter's old first-order estimate: 136 against
+/// 16 in 6-D.)
+fn coefficients<const D: usize>() -> (f64, f64) {
+    let n = ((D - 1) * D / 2) as f64;
+    ((n + 1.0) * U2, (D as f64 + 2.0) * U2)
+}
+
 impl<const D: usize> DdPlane<D> {
     /// The plane through `vertices`, every coordinate in `[−1, 1]` (`None` otherwise), with the
     /// permanents of |minor| behind each cofactor as the filter computed them; from the rows
     /// `v_k − v_(k−1)` when `chained` (as [`FacetPlane`](super::FacetPlane)'s chained plane), else `v_k − v0`.
     ///
     /// Error analysis: the rows `v_k − v0` are exact double-doubles, so only the expansion and the
-    /// final dot product round. Under the model `fl(x ∘ y) = (x ∘ y)(1 + δ)`, `|δ| ≤ U2`, the
-    /// analysis of [`FacetPlane::new`](super::FacetPlane::new) applies word for word with `u`
-    /// replaced by `U2` and without the rounding of the entries: the same coefficients
-    /// `2(D² + 4D + 8)·U2` on the permanent and `(D + 3)·U2` on |C_j| are safe. The permanents
-    /// are the filter's, computed in `f64` from rounded entries: their relative error (below
-    /// `(D² + D)u`) is absorbed by the factor-four margin.
+    /// final dot product round; the coefficients and why they are safe are [`coefficients`]'s.
+    /// The permanents are the filter's, computed in `f64` from rounded entries.
     pub(in crate::predicates) fn new(
         vertices: &[[f64; D]; D],
         permanents: &[f64; D],
@@ -286,8 +302,7 @@ impl<const D: usize> DdPlane<D> {
             }
         }
         let minors = dd_minors(&rows);
-        let d = D as f64;
-        let (c_perm, c_cof) = (2.0 * (d * d + 4.0 * d + 8.0) * U2, (d + 3.0) * U2);
+        let (c_perm, c_cof) = coefficients::<D>();
         let mut cofactors = [Dd::ZERO; D];
         let mut error = [0.0; D];
         for j in 0..D {
@@ -321,8 +336,7 @@ impl<const D: usize> DdPlane<D> {
         tolerance: f64,
     ) -> bool {
         debug_assert!(tolerance < 1.0 / (1u64 << 42) as f64);
-        let d = D as f64;
-        let c_perm = 2.0 * (d * d + 4.0 * d + 8.0) * U2;
+        let (c_perm, _) = coefficients::<D>();
         let least_error = permanents.iter().fold(0.0f64, |m, &q| m.max(c_perm * q));
         tolerance * largest * (1.0 + 1.0 / (1u64 << 40) as f64) < least_error
     }
