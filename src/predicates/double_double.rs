@@ -280,7 +280,8 @@ fn coefficients<const D: usize>() -> (f64, f64) {
 impl<const D: usize> DdPlane<D> {
     /// The plane through `vertices`, every coordinate in `[−1, 1]` (`None` otherwise), with the
     /// permanents of |minor| behind each cofactor as the filter computed them; from the rows
-    /// `v_k − v_(k−1)` when `chained` (as [`FacetPlane`](super::FacetPlane)'s chained plane), else `v_k − v0`.
+    /// `v_k − v_(k−1)` when `chained` (as [`FacetPlane`](super::FacetPlane)'s chained plane),
+    /// else `v_k − v0`.
     ///
     /// Error analysis: the rows `v_k − v0` are exact double-doubles, so only the expansion and the
     /// final dot product round; the coefficients and why they are safe are [`coefficients`]'s.
