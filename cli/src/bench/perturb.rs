@@ -1,6 +1,7 @@
 //! Point sets moved off their degeneracy by a chosen amount, and how many of Qhull's facets are
-//! not facets of the exact hull: the measurements of `cli/examples/perturbed_sum.rs` (issue 24,
-//! docs/benchmarks.md, "the raw sums perturbed"), shared with its tests.
+//! not facets of the exact hull: the measurements of the `perturbed_sum` and `qhull_options`
+//! examples (`cli/examples/`; issue 24, docs/benchmarks.md, "the raw sums perturbed" and
+//! "Qhull's three answers"), shared with their tests.
 
 use pqhull::geometry::Rng;
 

@@ -66,7 +66,8 @@ fn joggled_qhull_answers_with_facets_of_other_points() {
     use pqhull_cli::bench::perturb::qhull_wrong_facets_with;
     // The raw 3 × 4 sum (64 points; 3,786 exact facets, 3,414 of QJ's 3,654 wrong in the docs'
     // run): Qhull's joggled triangulation is simplicial and needs no merging, but it is the hull
-    // of the joggled points, and most of its facets have a caller's point strictly beyond them.
+    // of the joggled points, and most of its facets are not facets of the caller's hull (a
+    // caller's point strictly beyond, or flat).
     let (_, _, points) = grasp_points(1, 3, 4, true);
     let hull = Hull::try_new(&points).unwrap();
     hull.check().unwrap();
