@@ -108,6 +108,7 @@ fn main() {
 #[cfg(feature = "qhull")]
 fn qhull_columns(points: &[[f64; 6]], rounds: usize, pqhull_ms: f64) {
     use pqhull::qhull_baseline::qhull_stats;
+    use pqhull_cli::bench::stats::first_line;
     let mut run = None;
     let elapsed = best_of(rounds, || run = Some(qhull_stats(points)));
     let ms = elapsed.as_secs_f64() * 1e3;
@@ -122,14 +123,7 @@ fn qhull_columns(points: &[[f64; 6]], rounds: usize, pqhull_ms: f64) {
             pqhull_cli::bench::perturb::qhull_wrong_facets(points)
                 .map_or_else(|_| "-".to_string(), |(wrong, _)| wrong.to_string())
         ),
-        Err(e) => {
-            let e = e.to_string();
-            let first = e.lines().next().unwrap_or_default();
-            println!(
-                "  qhull fails: {}",
-                first.chars().take(90).collect::<String>()
-            );
-        }
+        Err(e) => println!("  qhull fails: {}", first_line(&e.to_string(), 90)),
     }
 }
 

@@ -14,7 +14,7 @@
 
 use pqhull::Hull;
 use pqhull_cli::bench::hull::grasp_points;
-use pqhull_cli::bench::stats::{best_of, numeric_args};
+use pqhull_cli::bench::stats::{best_of, first_line, numeric_args};
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
@@ -73,7 +73,10 @@ fn qhull_rows(lead: &str, points: &[[f64; 6]], rounds: usize, pqhull_ms: f64) {
                     ms / pqhull_ms
                 );
             }
-            Err(e) => println!("{lead} {label:<9} fails: {}", first_line(&e.to_string())),
+            Err(e) => println!(
+                "{lead} {label:<9} fails: {}",
+                first_line(&e.to_string(), 90)
+            ),
         }
     }
     unmerged_row(lead, points, rounds, pqhull_ms);
@@ -119,7 +122,7 @@ fn unmerged_row(lead: &str, points: &[[f64; 6]], rounds: usize, pqhull_ms: f64) 
             all.push_str(&String::from_utf8_lossy(&output.stderr));
             Ok(all)
         } else {
-            Err(first_line(&String::from_utf8_lossy(&output.stderr)))
+            Err(first_line(&String::from_utf8_lossy(&output.stderr), 90))
         }
     };
     let mut best = f64::INFINITY;
@@ -166,10 +169,4 @@ fn unmerged_row(lead: &str, points: &[[f64; 6]], rounds: usize, pqhull_ms: f64) 
         }
         Err(e) => println!("{lead} {label:<9} fails: {e}"),
     }
-}
-
-/// The first line of an error, at most 90 characters.
-fn first_line(e: &str) -> String {
-    let first = e.lines().find(|l| !l.trim().is_empty()).unwrap_or_default();
-    first.chars().take(90).collect()
 }

@@ -34,6 +34,8 @@
 //! Times are wall clock on whatever else the machine is doing: compare rows of one run.
 
 use super::Progress;
+#[cfg(feature = "qhull")]
+use super::stats::first_line;
 use pqhull::grasp::metrics::gws_volume;
 use pqhull::grasp::{Evaluator, Grasp, Method, Metric};
 use pqhull::hull::Hull;
@@ -538,7 +540,9 @@ fn qhull_time<const D: usize>(points: &[[f64; D]]) -> Result<f64, String> {
     let started = Instant::now();
     let facets = pqhull::qhull_baseline::qhull_facet_count(std::hint::black_box(points));
     let ms = ms_since(started);
-    facets.map(|_| ms).map_err(|e| first_line(&e.to_string()))
+    facets
+        .map(|_| ms)
+        .map_err(|e| first_line(&e.to_string(), 200))
 }
 
 /// Without the `qhull` feature: never called (the rows have no Qhull columns).
@@ -552,25 +556,13 @@ fn qhull_time<const D: usize>(_points: &[[f64; D]]) -> Result<f64, String> {
 fn qhull_counts<const D: usize>(points: &[[f64; D]]) -> Result<(usize, usize), String> {
     pqhull::qhull_baseline::qhull_stats(points)
         .map(|s| (s.vertices, s.facets))
-        .map_err(|e| first_line(&e.to_string()))
+        .map_err(|e| first_line(&e.to_string(), 200))
 }
 
 /// Without the `qhull` feature: never called.
 #[cfg(not(feature = "qhull"))]
 fn qhull_counts<const D: usize>(_points: &[[f64; D]]) -> Result<(usize, usize), String> {
     Err("built without the qhull feature".to_string())
-}
-
-/// Qhull's messages run to pages: their first line names the error.
-#[cfg(feature = "qhull")]
-fn first_line(message: &str) -> String {
-    message
-        .lines()
-        .next()
-        .unwrap_or("")
-        .chars()
-        .take(200)
-        .collect()
 }
 
 /// The row of a point-set case: [`Hull::try_new`] against Qhull.

@@ -112,6 +112,19 @@ pub fn micros(elapsed: std::time::Duration) -> f64 {
     elapsed.as_secs_f64() * 1e6
 }
 
+/// The first non-empty line of an error `message`, at most `limit` characters: Qhull's
+/// messages run to pages, and their first line names the error.
+///
+/// ```
+/// use pqhull_cli::bench::stats::first_line;
+/// assert_eq!(first_line("\nQH6271 qhull topology error\nWhile executing: ...", 12), "QH6271 qhull");
+/// assert_eq!(first_line("", 10), "");
+/// ```
+pub fn first_line(message: &str, limit: usize) -> String {
+    let first = message.lines().find(|l| !l.trim().is_empty()).unwrap_or("");
+    first.chars().take(limit).collect()
+}
+
 /// The shortest of `rounds` timed calls of `run` (at least one), as the comparison examples
 /// report an engine's time.
 pub fn best_of(rounds: usize, mut run: impl FnMut()) -> std::time::Duration {
