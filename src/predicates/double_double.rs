@@ -201,7 +201,7 @@ fn dd_minors<const D: usize>(rows: &[[Dd; D]; D]) -> [Dd; D] {
     {
         if std::arch::is_x86_feature_detected!("fma") && std::arch::is_x86_feature_detected!("avx")
         {
-            // The one `unsafe` of the library (lib.rs says why it is allowed here).
+            // One of the library's two `unsafe` calls (lib.rs says why they are allowed).
             #[allow(unsafe_code)]
             // SAFETY: `fused_minors_x86` only requires the `avx` and `fma` target features,
             // which the processor was just found to have.

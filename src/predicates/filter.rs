@@ -1,6 +1,6 @@
 //! The floating-point filter: a cached hyperplane with a certified error bound.
 
-use super::minors::{MinorScalar, Tracked, minors_of};
+use super::minors::{MinorScalar, Tracked, tracked_minors};
 use super::{Sign, double_double::DdPlane, exact, wide::ExactPlane};
 use std::mem::ManuallyDrop;
 use std::sync::OnceLock;
@@ -257,7 +257,7 @@ macro_rules! plane_through {
                 };
             }
         }
-        let minors = minors_of(&rows);
+        let minors = tracked_minors(&rows);
 
 
         // Error analysis (why these constants are safe; u = 2^-53, γ_n = nu/(1 − nu)). Every
