@@ -54,6 +54,7 @@ impl<const D: usize> Hull<D> {
             flat_of: Vec::new(),
             flat_dim: 0,
             grid: None,
+            in_box: true,
             partition: Partition::FirstFound,
             start: None,
             trace: None,
@@ -112,6 +113,7 @@ impl<const D: usize> Hull<D> {
         self.points
             .extend(input.iter().map(|p| p.map(|x| x * scale)));
         self.grid = ExactGrid::of(&self.points);
+        self.in_box = self.points.iter().all(in_box);
         self.mark_repeats();
         let chosen = start;
         let mut simplex = match chosen.filter(|s| independent(&self.points, &s[..=D])) {
@@ -330,7 +332,7 @@ impl<const D: usize> Hull<D> {
     #[allow(clippy::type_complexity)]
     fn new_plane(&mut self, vertices: [u32; D]) -> (u32, FacetPlane<D>, f64, [f64; D], bool, f64) {
         let coords = self.coords(&vertices);
-        let plane = FacetPlane::new(&coords);
+        let plane = FacetPlane::new_in_range(&coords, self.in_box);
         // Without overflow or underflow of the squares: the cofactors of a wide-ranging input
         // (one axis 1e40 times the others, in 6-D) are products of D − 1 small coordinates, whose
         // squares underflowed to give NaN normals.

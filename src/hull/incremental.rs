@@ -8,7 +8,7 @@
 
 use super::build::first_non_finite;
 use super::{FacetId, FarthestPoint, Hull, HullError, Partition, Strategy};
-use crate::predicates::Sign;
+use crate::predicates::{Sign, in_box};
 use std::ops::Range;
 use std::time::Instant;
 
@@ -120,6 +120,7 @@ impl<const D: usize> Hull<D> {
                 self.grid = None; // the certificate covered the old points alone
             }
             let index = self.points.len() as u32;
+            self.in_box &= in_box(&scaled);
             self.points.push(scaled);
             let located = locator
                 .as_mut()

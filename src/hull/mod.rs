@@ -95,6 +95,10 @@ pub struct Hull<const D: usize> {
     /// When every point lies on one coarse power-of-two grid, the proof that the filter's value
     /// is exact for every side test among them ([`ExactGrid`]); `None` otherwise.
     grid: Option<ExactGrid<D>>,
+    /// Whether every point is in `[−1, 1]^D` (as the scale makes them, unless scaling would not
+    /// have been exact): a new facet's plane then need not check its vertices again
+    /// ([`FacetPlane::new_in_range`](crate::predicates::FacetPlane::new_in_range)).
+    in_box: bool,
     /// Which new facet an outside point goes to ([`StrategyHooks::set_partition`]).
     partition: Partition<D>,
     /// The initial simplex the next build starts from, when a caller knows a better one than the
