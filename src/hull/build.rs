@@ -246,7 +246,11 @@ impl<const D: usize> Hull<D> {
     }
 
     pub(in crate::hull) fn coords(&self, vertices: &[u32; D]) -> [[f64; D]; D] {
-        vertices.map(|v| self.points[v as usize])
+        let mut coords = [[0.0; D]; D];
+        for (to, &v) in coords.iter_mut().zip(vertices) {
+            *to = self.points[v as usize];
+        }
+        coords
     }
 
     /// The engine's side of [`StrategyHooks::refine_normal`](crate::hull::StrategyHooks::refine_normal).
