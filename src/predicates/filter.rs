@@ -510,7 +510,12 @@ impl<const D: usize> FacetPlane<D> {
             }
             if D >= 4 {
                 let dd = rebased.dd.get_or_init(|| {
-                    DdPlane::new(&rebased.vertices, &rebased.plane.permanents, true)
+                    DdPlane::new(
+                        &rebased.vertices,
+                        &rebased.plane.permanents,
+                        true,
+                        rebased.plane.slack.is_finite(),
+                    )
                 });
                 if let Some(sign) = dd
                     .as_ref()
@@ -520,10 +525,9 @@ impl<const D: usize> FacetPlane<D> {
                 }
             }
         } else if D >= 4 && finite {
-            let dd = self
-                .refined()
-                .dd
-                .get_or_init(|| DdPlane::new(vertices, &self.permanents, false));
+            let dd = self.refined().dd.get_or_init(|| {
+                DdPlane::new(vertices, &self.permanents, false, self.slack.is_finite())
+            });
             if let Some(sign) = dd
                 .as_ref()
                 .and_then(|plane| plane.sign(&self.base, p, self.slack))
@@ -624,9 +628,9 @@ impl<const D: usize> FacetPlane<D> {
             if refined.dd.get().is_none() && self.dd_normal_surely_uncertified() {
                 return self.exact_normal_direction(vertices);
             }
-            let dd = refined
-                .dd
-                .get_or_init(|| DdPlane::new(vertices, &self.permanents, false));
+            let dd = refined.dd.get_or_init(|| {
+                DdPlane::new(vertices, &self.permanents, false, self.slack.is_finite())
+            });
             if let Some(plane) = dd {
                 let (cofactors, error) = plane.cofactors_with_error();
                 let largest = cofactors.iter().fold(0.0f64, |m, c| m.max(c.abs()));
@@ -688,7 +692,7 @@ impl<const D: usize> FacetPlane<D> {
         vertices: &[[f64; D]; D],
     ) -> (Option<DdPlane<D>>, [f64; D], f64) {
         (
-            DdPlane::new(vertices, &self.permanents, false),
+            DdPlane::new(vertices, &self.permanents, false, self.slack.is_finite()),
             self.base,
             self.slack,
         )
