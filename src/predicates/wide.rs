@@ -187,19 +187,27 @@ fn integer_columns<const D: usize>(points: &[&[f64; D]]) -> Option<IntegerColumn
     let mut matrix = [[0i128; D]; D];
     let mut exponents = [0i32; D];
     let mut column_bits = [0u32; D];
+    let mut base = [0i128; D];
+    // Each coordinate decomposed once per column, for its exponent and then its integer (two
+    // decompositions each were a third of this function on raw sums, which build an exact
+    // plane for two facets in five).
+    let mut parts = [(0i64, 0i32); 9];
+    debug_assert!(points.len() <= parts.len(), "at most D + 1 ≤ 9 points");
     for c in 0..D {
-        let emin = points
-            .iter()
-            .map(|p| decompose(p[c]))
-            .filter(|&(m, _)| m != 0)
-            .map(|(_, e)| e)
-            .min()
-            .unwrap_or(0);
+        let mut emin = i32::MAX;
+        for (part, p) in parts.iter_mut().zip(points) {
+            *part = decompose(p[c]);
+            if part.0 != 0 {
+                emin = emin.min(part.1);
+            }
+        }
+        let emin = if emin == i32::MAX { 0 } else { emin };
         exponents[c] = emin;
-        let base = column_integer(points[0][c], emin)?;
+        let origin = column_integer(parts[0], emin)?;
+        base[c] = origin;
         let mut largest = 0u128;
         for r in 1..points.len() {
-            let entry = column_integer(points[r][c], emin)? - base;
+            let entry = column_integer(parts[r], emin)? - origin;
             matrix[r - 1][c] = entry;
             largest = largest.max(entry.unsigned_abs());
         }
@@ -209,6 +217,7 @@ fn integer_columns<const D: usize>(points: &[&[f64; D]]) -> Option<IntegerColumn
         matrix,
         exponents,
         column_bits,
+        base,
     })
 }
 
@@ -220,6 +229,8 @@ struct IntegerColumns<const D: usize> {
     exponents: [i32; D],
     /// Bit length of each column's largest entry.
     column_bits: [u32; D],
+    /// The first point in column units.
+    base: [i128; D],
 }
 
 /// `⌈log2 r!⌉` for r = 0…8: a minor of order r, and every partial sum of its expansion (bounded
@@ -322,6 +333,7 @@ impl<const D: usize> ExactPlane<D> {
             matrix,
             exponents,
             column_bits,
+            base,
         } = integer_columns(&points)?;
         // Every cofactor is a minor of order D − 1 over all columns but one: below
         // (D − 1)!·2^(Σ bits − the fewest bits of a column).
@@ -343,8 +355,6 @@ impl<const D: usize> ExactPlane<D> {
                 c.sign_extend(len);
             }
         });
-        let base = std::array::from_fn(|j| column_integer(vertices[0][j], exponents[j]))
-            .map(|b: Option<i128>| b.expect("integer_columns checked every vertex coordinate"));
         Some(ExactPlane {
             cofactors,
             cofactor_bits,
@@ -365,15 +375,16 @@ impl<const D: usize> ExactPlane<D> {
     /// point cost a whole exact determinant instead of D products.
     fn differences(&self, p: &[f64; D]) -> Option<([i128; D], u32, usize)> {
         let mut shift = 0u32;
-        for (&coordinate, &exponent) in p.iter().zip(&self.exponents) {
-            let (m, e) = decompose(coordinate);
+        // Each coordinate decomposed once, for the shift and then its integer.
+        let parts = p.map(decompose);
+        for (&(m, e), &exponent) in parts.iter().zip(&self.exponents) {
             if m != 0 && e < exponent {
                 shift = shift.max(u32::try_from(exponent - e).ok()?);
             }
         }
         let mut differences = [0i128; D];
         let mut largest = 0u128;
-        for (j, &coordinate) in p.iter().enumerate() {
+        for (j, &part) in parts.iter().enumerate() {
             // The base vertex in the finer units: exact, or `None` if it no longer fits.
             let base = if shift == 0 {
                 self.base[j]
@@ -383,7 +394,7 @@ impl<const D: usize> ExactPlane<D> {
                 return None;
             };
             let unit = self.exponents[j].checked_sub(i32::try_from(shift).ok()?)?;
-            let x = column_integer(coordinate, unit)?.checked_sub(base)?;
+            let x = column_integer(part, unit)?.checked_sub(base)?;
             differences[j] = x;
             largest = largest.max(x.unsigned_abs());
         }
@@ -469,13 +480,9 @@ pub fn times_power_of_two(mut x: f64, mut e: i32) -> f64 {
     x * 2f64.powi(e)
 }
 
-/// `x / 2^exponent` when it is an integer of magnitude below 2^126 (so that a difference of two
-/// fits in `i128`).
-///
-/// # Panics
-/// If `x` is not finite.
-fn column_integer(x: f64, exponent: i32) -> Option<i128> {
-    let (m, e) = decompose(x);
+/// `x / 2^exponent`, for `x` [`decompose`]d into `(m, e)`, when it is an integer of magnitude
+/// below 2^126 (so that a difference of two fits in `i128`).
+fn column_integer((m, e): (i64, i32), exponent: i32) -> Option<i128> {
     if m == 0 {
         return Some(0);
     }
