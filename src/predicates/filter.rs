@@ -336,7 +336,7 @@ impl<const D: usize> FacetPlane<D> {
 
     /// [`new`](Self::new) for a caller that knows whether every coordinate of `vertices` is in
     /// `[−1, 1]` (a hull whose points all are: `in_range`), without checking the D² coordinates
-    /// again (a seventh of the 6-D plane's instructions); `in_range == false` checks them.
+    /// again (a fifth of the 6-D plane's instructions); `in_range == false` checks them.
     ///
     /// # Panics
     /// In debug builds, if `in_range` is true and a coordinate is not in `[−1, 1]` (in release
