@@ -30,8 +30,8 @@
 //! Splitting is exact for `|x| ≤ 2^996`; the plane is only built for coordinates in `[−1, 1]`,
 //! where every minor is below `D!·2^D`.
 
-use super::Sign;
 use super::minors::{MinorScalar, minors_inlined, minors_of};
+use super::{FacetPlane, Sign};
 
 #[cfg(target_arch = "x86_64")]
 mod lanes;
@@ -279,28 +279,30 @@ fn coefficients<const D: usize>() -> (f64, f64) {
 
 impl<const D: usize> DdPlane<D> {
     /// The plane through `vertices`, every coordinate in `[−1, 1]` (`None` otherwise), with the
-    /// permanents of |minor| behind each cofactor as the filter computed them; from the rows
-    /// `v_k − v_(k−1)` when `chained` (as [`FacetPlane`](super::FacetPlane)'s chained plane),
-    /// else `v_k − v0`. `in_range` says whether the coordinates are in `[−1, 1]`: the filter's
-    /// plane through the same vertices knows (its slack is finite), and checking the D²
-    /// coordinates again cost a twentieth of this plane.
+    /// permanents of |minor| behind each cofactor as `filter`, the filter's plane through the same
+    /// `vertices`, computed them; from the rows `v_k − v_(k−1)` when `chained` (as
+    /// [`FacetPlane`]'s chained plane), else `v_k − v0`. Whether the coordinates are in range is
+    /// `filter`'s answer ([`FacetPlane::in_range`]): checking the D² coordinates again cost a
+    /// twentieth of this plane.
     ///
     /// # Panics
-    /// In debug builds, if `in_range` is not whether every coordinate is in `[−1, 1]`.
+    /// In debug builds, if `filter` was not built from coordinates in range exactly when these
+    /// are.
     ///
     /// Error analysis: the rows `v_k − v0` are exact double-doubles, so only the expansion and the
     /// final dot product round; the coefficients and why they are safe are [`coefficients`]'s.
     /// The permanents are the filter's, computed in `f64` from rounded entries.
     pub(in crate::predicates) fn new(
         vertices: &[[f64; D]; D],
-        permanents: &[f64; D],
+        filter: &FacetPlane<D>,
         chained: bool,
-        in_range: bool,
     ) -> Option<Self> {
+        let in_range = filter.in_range();
         debug_assert_eq!(in_range, vertices.iter().flatten().all(|x| x.abs() <= 1.0));
         if !in_range {
             return None;
         }
+        let permanents = &filter.permanents;
         let base = vertices[0];
         let mut rows = [[Dd::ZERO; D]; D];
         for k in 1..D {

@@ -420,6 +420,12 @@ impl<const D: usize> FacetPlane<D> {
         value
     }
 
+    /// Whether every coordinate of the vertices this plane was built from is in `[−1, 1]` (its
+    /// filter's bound is then finite): the later stages need to know, and need not check again.
+    pub(in crate::predicates) fn in_range(&self) -> bool {
+        self.slack.is_finite()
+    }
+
     /// A copy of the plane without its exact-arithmetic cache (which a clone would copy, and
     /// allocate for): the floating-point part alone, for a second facet in the same hyperplane.
     pub(crate) fn clone_uncached(&self) -> Self {
@@ -509,14 +515,9 @@ impl<const D: usize> FacetPlane<D> {
                 return orient(Sign::Negative);
             }
             if D >= 4 {
-                let dd = rebased.dd.get_or_init(|| {
-                    DdPlane::new(
-                        &rebased.vertices,
-                        &rebased.plane.permanents,
-                        true,
-                        rebased.plane.slack.is_finite(),
-                    )
-                });
+                let dd = rebased
+                    .dd
+                    .get_or_init(|| DdPlane::new(&rebased.vertices, &rebased.plane, true));
                 if let Some(sign) = dd
                     .as_ref()
                     .and_then(|plane| plane.sign(&rebased.plane.base, p, rebased.plane.slack))
@@ -525,9 +526,10 @@ impl<const D: usize> FacetPlane<D> {
                 }
             }
         } else if D >= 4 && finite {
-            let dd = self.refined().dd.get_or_init(|| {
-                DdPlane::new(vertices, &self.permanents, false, self.slack.is_finite())
-            });
+            let dd = self
+                .refined()
+                .dd
+                .get_or_init(|| DdPlane::new(vertices, self, false));
             if let Some(sign) = dd
                 .as_ref()
                 .and_then(|plane| plane.sign(&self.base, p, self.slack))
@@ -628,9 +630,9 @@ impl<const D: usize> FacetPlane<D> {
             if refined.dd.get().is_none() && self.dd_normal_surely_uncertified() {
                 return self.exact_normal_direction(vertices);
             }
-            let dd = refined.dd.get_or_init(|| {
-                DdPlane::new(vertices, &self.permanents, false, self.slack.is_finite())
-            });
+            let dd = refined
+                .dd
+                .get_or_init(|| DdPlane::new(vertices, self, false));
             if let Some(plane) = dd {
                 let (cofactors, error) = plane.cofactors_with_error();
                 let largest = cofactors.iter().fold(0.0f64, |m, c| m.max(c.abs()));
@@ -691,11 +693,7 @@ impl<const D: usize> FacetPlane<D> {
         &self,
         vertices: &[[f64; D]; D],
     ) -> (Option<DdPlane<D>>, [f64; D], f64) {
-        (
-            DdPlane::new(vertices, &self.permanents, false, self.slack.is_finite()),
-            self.base,
-            self.slack,
-        )
+        (DdPlane::new(vertices, self, false), self.base, self.slack)
     }
 
     /// The slower stages' cache, allocated on first use.

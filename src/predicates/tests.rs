@@ -1039,7 +1039,7 @@ fn clustered_facets_are_rebuilt_in_chain_order() {
                 "D = {D}: chained filter bound, {v:?}, {p:?}"
             );
             if D >= 4 {
-                let dd = DdPlane::new(&w, &rebuilt.permanents, true, true).expect("in the box");
+                let dd = DdPlane::new(&w, &rebuilt, true).expect("in the box");
                 let ((hi, lo), dd_bound) =
                     dd.evaluate(rebuilt.base(), &p, 0.0).expect("in the box");
                 assert!(
