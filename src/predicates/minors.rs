@@ -109,10 +109,10 @@ pub(in crate::predicates) fn minors_inlined<T: MinorScalar, const D: usize>(
 /// two-operand form needs. Why: the filter's plane is the largest single cost of a hull on
 /// generic input (half of a 6-D sphere's instructions). Measured in instructions
 /// (docs/benchmarks.md, "the filter's minors compiled for AVX"): the 6-D sphere of 300 points
-/// −17.7 %, the 5-D sphere −7.8 %, the 4-D −2.1 %; in 3-D the call the dispatch needs cost more
-/// than it saved (+1.8 %), hence 4-D and up. The whole plane compiled for AVX, rather than its
-/// minors alone, saved less than half as much. `tests::avx_minors_are_the_portable_ones_bit_for_bit`
-/// checks the sameness.
+/// −17.7 %, the 5-D sphere −7.8 %, the 4-D −2.1 %. In 3-D the call the dispatch needs cost more
+/// than it saved, hence 4-D and up, and the whole plane compiled for AVX, rather than its minors
+/// alone, saved less (both builds uncommitted: their figures are in issue 24's note of
+/// 2026-12-07). `tests::avx_minors_are_the_portable_ones_bit_for_bit` checks the sameness.
 #[inline(always)]
 pub(in crate::predicates) fn tracked_minors<const D: usize>(
     rows: &[[Tracked; D]; D],
