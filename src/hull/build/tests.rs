@@ -105,3 +105,60 @@ fn a_chosen_start_gives_the_same_hull_and_a_bad_one_is_ignored() {
     }
     assert!(other_work > 0);
 }
+
+#[test]
+fn the_integer_key_orders_as_total_cmp() {
+    let values = [
+        f64::NEG_INFINITY,
+        f64::MIN,
+        -1.0,
+        -f64::MIN_POSITIVE,
+        -5e-324,
+        -0.0,
+        0.0,
+        5e-324,
+        f64::MIN_POSITIVE,
+        1.0,
+        1.0 + f64::EPSILON,
+        f64::MAX,
+        f64::INFINITY,
+    ];
+    for &a in &values {
+        for &b in &values {
+            assert_eq!(
+                super::total_order_key(a).cmp(&super::total_order_key(b)),
+                a.total_cmp(&b),
+                "{a:e} against {b:e}"
+            );
+        }
+    }
+}
+
+/// The one-pass extremes pick the indices that a `min_by` and a `max_by` per axis under
+/// `total_cmp` pick (a brute force written here), ties and signed zeros included.
+#[test]
+fn the_axis_extremes_are_those_of_min_by_and_max_by() {
+    fn reference<const D: usize>(points: &[[f64; D]]) -> Vec<usize> {
+        let mut extremes = Vec::new();
+        for axis in 0..D {
+            let by =
+                |a: &(usize, &[f64; D]), b: &(usize, &[f64; D])| a.1[axis].total_cmp(&b.1[axis]);
+            extremes.push(points.iter().enumerate().min_by(by).unwrap().0);
+            extremes.push(points.iter().enumerate().max_by(by).unwrap().0);
+        }
+        extremes
+    }
+    let mut rng = Rng::new(11);
+    // Few distinct values (many ties), zeros of both signs.
+    let grid = [-1.0, -0.0, 0.0, 0.5, 1.0];
+    for n in [1, 2, 7, 60] {
+        let points: Vec<[f64; 4]> = (0..n)
+            .map(|_| std::array::from_fn(|_| grid[(rng.next_u64() % 5) as usize]))
+            .collect();
+        assert_eq!(super::axis_extremes(&points)[..8], reference(&points)[..]);
+        let points: Vec<[f64; 3]> = (0..n)
+            .map(|_| std::array::from_fn(|_| rng.uniform_in(-1.0, 1.0)))
+            .collect();
+        assert_eq!(super::axis_extremes(&points)[..6], reference(&points)[..]);
+    }
+}
