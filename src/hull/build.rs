@@ -91,8 +91,12 @@ impl<const D: usize> Hull<D> {
         if !(MIN_DIMENSION..=MAX_DIMENSION).contains(&D) {
             return Err(HullError::DimensionOutOfRange { dimension: D });
         }
-        if let Some((index, coordinate)) = first_non_finite(input) {
-            return Err(HullError::NonFinite { index, coordinate });
+        // One pass over the input for its finiteness and both ends of its magnitudes.
+        let extent = Extent::of(input);
+        if !extent.finite {
+            if let Some((index, coordinate)) = first_non_finite(input) {
+                return Err(HullError::NonFinite { index, coordinate });
+            }
         }
         if input.len() < D + 1 {
             return Err(HullError::TooFewPoints {
@@ -107,13 +111,16 @@ impl<const D: usize> Hull<D> {
                 got: input.len(),
             });
         }
-        let scale = exact_power_of_two_scale(input);
+        let scale = extent.exact_power_of_two_scale();
         self.scale = scale;
         self.inv_scale = 1.0 / scale;
         self.points
             .extend(input.iter().map(|p| p.map(|x| x * scale)));
         self.grid = ExactGrid::of(&self.points);
-        self.in_box = self.points.iter().all(in_box);
+        // Scaling by a power of two is exact and monotone (or not done): the largest scaled
+        // magnitude is the largest magnitude scaled, so no pass over the points is needed.
+        self.in_box = extent.max_abs * scale <= 1.0;
+        debug_assert_eq!(self.in_box, self.points.iter().all(in_box));
         self.mark_repeats();
         let chosen = start;
         let mut simplex = match chosen.filter(|s| independent(&self.points, &s[..=D])) {
@@ -585,45 +592,68 @@ pub(in crate::hull) fn first_non_finite<const D: usize>(
         .find_map(|(i, p)| p.iter().position(|x| !x.is_finite()).map(|c| (i, c)))
 }
 
-/// The power of two that brings the largest coordinate into [0.5, 1), if scaling by it is exact
-/// for every coordinate; otherwise 1 (the predicates then skip their filter and stay exact).
-fn exact_power_of_two_scale<const D: usize>(points: &[[f64; D]]) -> f64 {
-    // One pass for both ends: the largest magnitude sets the scale, the smallest non-zero one
-    // says whether scaling is exact (`fl(|x|·scale)` is monotone in |x|, so the smallest
-    // decides for all).
-    let (max_abs, min_abs) =
-        points
-            .iter()
-            .flat_map(|p| p.iter())
-            .fold((0.0f64, f64::INFINITY), |(high, low), x| {
-                let a = x.abs();
-                (high.max(a), if a == 0.0 { low } else { low.min(a) })
-            });
-    if max_abs == 0.0 {
-        return 1.0;
+/// The magnitudes of an input's coordinates, found in one pass.
+struct Extent {
+    /// Whether every coordinate is finite.
+    finite: bool,
+    /// The largest magnitude (meaningful when `finite`).
+    max_abs: f64,
+    /// The smallest non-zero magnitude (infinite when every coordinate is zero).
+    min_abs: f64,
+}
+
+impl Extent {
+    fn of<const D: usize>(points: &[[f64; D]]) -> Self {
+        let mut finite = true;
+        let (mut high, mut low) = (0.0f64, f64::INFINITY);
+        for x in points.iter().flatten() {
+            let a = x.abs();
+            // False for infinities and NaN.
+            finite &= a <= f64::MAX;
+            if a > high {
+                high = a;
+            }
+            if a < low && a != 0.0 {
+                low = a;
+            }
+        }
+        Extent {
+            finite,
+            max_abs: high,
+            min_abs: low,
+        }
     }
-    // frexp: max_abs = m · 2^e with m in [0.5, 1); scale = 2^−e, built in two halves so that
-    // neither factor overflows or underflows.
-    let mut e = 0i32;
-    let mut m = max_abs;
-    while m >= 1.0 {
-        m *= 0.5;
-        e += 1;
-    }
-    while m < 0.5 {
-        m *= 2.0;
-        e -= 1;
-    }
-    let half = -e / 2;
-    let scale = 2f64.powi(half) * 2f64.powi(-e - half);
-    if !scale.is_finite() || scale == 0.0 {
-        return 1.0;
-    }
-    // Multiplying by a power of two is exact unless the result leaves the normal range.
-    if min_abs * scale >= f64::MIN_POSITIVE {
-        scale
-    } else {
-        1.0
+
+    /// The power of two that brings the largest coordinate into [0.5, 1), if scaling by it is exact
+    /// for every coordinate; otherwise 1 (the predicates then skip their filter and stay exact).
+    fn exact_power_of_two_scale(&self) -> f64 {
+        let (max_abs, min_abs) = (self.max_abs, self.min_abs);
+        if max_abs == 0.0 {
+            return 1.0;
+        }
+        // frexp: max_abs = m · 2^e with m in [0.5, 1); scale = 2^−e, built in two halves so that
+        // neither factor overflows or underflows.
+        let mut e = 0i32;
+        let mut m = max_abs;
+        while m >= 1.0 {
+            m *= 0.5;
+            e += 1;
+        }
+        while m < 0.5 {
+            m *= 2.0;
+            e -= 1;
+        }
+        let half = -e / 2;
+        let scale = 2f64.powi(half) * 2f64.powi(-e - half);
+        if !scale.is_finite() || scale == 0.0 {
+            return 1.0;
+        }
+        // Multiplying by a power of two is exact unless the result leaves the normal range.
+        if min_abs * scale >= f64::MIN_POSITIVE {
+            scale
+        } else {
+            1.0
+        }
     }
 }
 
