@@ -93,10 +93,10 @@ impl<const D: usize> Hull<D> {
         }
         // One pass over the input for its finiteness and both ends of its magnitudes.
         let extent = Extent::of(input);
-        if !extent.finite {
-            if let Some((index, coordinate)) = first_non_finite(input) {
-                return Err(HullError::NonFinite { index, coordinate });
-            }
+        if !extent.finite
+            && let Some((index, coordinate)) = first_non_finite(input)
+        {
+            return Err(HullError::NonFinite { index, coordinate });
         }
         if input.len() < D + 1 {
             return Err(HullError::TooFewPoints {

@@ -120,60 +120,6 @@ fn crosscheck_6d() {
     crosscheck::<6>();
 }
 
-/// The materialised Minkowski sum of three contacts' raw wrenches (each contact's friction
-/// pyramid is planar only up to rounding): Qhull merges the nearly coplanar facets of the sum
-/// and reports a triangulated hull with fewer facets than the exact one, some of whose facets
-/// have input points strictly beyond them (exact orientation); pqhull's hull passes
-/// `Hull::check`. Issue 24's argument for `Hull::try_new` on raw sums: Qhull's time there is
-/// that of a different, inexact answer.
-#[test]
-fn qhull_is_not_exact_on_a_raw_minkowski_sum() {
-    use super::support::grasps::{BAR_FRICTION, bar_grasps, minkowski_points};
-    use pqhull::grasp::FrictionModel;
-    use pqhull::predicates::{Sign, orientation};
-    let friction = FrictionModel::try_new(BAR_FRICTION, 6).unwrap();
-    let mut found = 0;
-    for grasp in bar_grasps(5, 40, 3, friction) {
-        let sum = minkowski_points(&grasp, false);
-        let (Ok(qhull), Ok(hull)) = (qhull_full_hull(&sum), Hull::try_new(&sum)) else {
-            continue; // flat to Qhull or to the exact engine
-        };
-        hull.check().unwrap();
-        let n = sum.len() as f64;
-        let centroid: [f64; 6] = std::array::from_fn(|c| sum.iter().map(|p| p[c]).sum::<f64>() / n);
-        // A facet of the exact hull has the centroid strictly inside and no point strictly
-        // beyond; a flat simplex (Qhull's triangulation makes some) or a plane through the
-        // interior has the centroid on it.
-        let (mut flat, mut beyond) = (0, 0);
-        for facet in &qhull.facets {
-            let vertices: [[f64; 6]; 6] = std::array::from_fn(|i| sum[facet.vertices[i]]);
-            let inside = orientation(&vertices, &centroid);
-            if inside == Sign::Zero {
-                flat += 1;
-            } else if sum
-                .iter()
-                .any(|p| orientation(&vertices, p) == inside.flip())
-            {
-                beyond += 1;
-            }
-        }
-        eprintln!(
-            "{} points: Qhull {} facets, {flat} through the centroid, {beyond} with a point \
-             strictly beyond; the exact hull {} facets",
-            sum.len(),
-            qhull.facets.len(),
-            hull.facet_count()
-        );
-        assert!(flat + beyond > 0);
-        assert!(hull.facet_count() > qhull.facets.len());
-        found += 1;
-        if found == 3 {
-            break;
-        }
-    }
-    assert_eq!(found, 3, "too few grasps whose sums span 6-D");
-}
-
 /// Tight clusters of nearly coincident points (`rbox C`, spread 1e−12): Qhull merges points
 /// within its tolerance and reports fewer vertices than pqhull. Each vertex of pqhull's hull
 /// that Qhull lacks is certified extreme here without either engine's word: a hyperplane

@@ -62,10 +62,7 @@ pub fn qhull_wrong_facets_with<const D: usize>(
 }
 
 /// How many of `facets` (each D indices into `points`, in any order) are not facets of the
-/// exact hull of `points`: those with a point strictly beyond them, or with the centroid of
-/// the points on them (a flat simplex), by exact orientation
-/// ([`pqhull::predicates::orientation`]). A facet with other than D indices, or an index out
-/// of range, counts as wrong. Costs one orientation per point and facet.
+/// exact hull of `points`: [`judge_facets`]'s total.
 ///
 /// ```
 /// use pqhull_cli::bench::perturb::wrong_facets;
@@ -75,21 +72,64 @@ pub fn qhull_wrong_facets_with<const D: usize>(
 /// assert_eq!(wrong_facets(&square, &[&[0, 2], &[0, 1], &[0, 0]]), 2); // a diagonal, a point
 /// ```
 pub fn wrong_facets<const D: usize>(points: &[[f64; D]], facets: &[&[usize]]) -> usize {
+    judge_facets(points, facets).total()
+}
+
+/// [`judge_facets`]'s counts of the facets that are not facets of the exact hull, by reason.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct WrongFacets {
+    /// With other than D indices, or an index out of range.
+    pub malformed: usize,
+    /// With the centroid of the points on their hyperplane: a flat simplex (Qhull's
+    /// triangulation of a merged facet makes some) or a plane through the interior.
+    pub flat: usize,
+    /// With a point strictly beyond them (and not flat).
+    pub beyond: usize,
+}
+
+impl WrongFacets {
+    /// All of them.
+    pub fn total(&self) -> usize {
+        self.malformed + self.flat + self.beyond
+    }
+}
+
+/// Which of `facets` (each D indices into `points`, in any order) are not facets of the exact
+/// hull of `points`, by exact orientation ([`pqhull::predicates::orientation`]): a facet of the
+/// exact hull has the centroid of the points strictly inside and no point strictly beyond.
+/// Costs one orientation per point and facet.
+///
+/// ```
+/// use pqhull_cli::bench::perturb::{WrongFacets, judge_facets};
+/// let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0], [0.5, 0.5]];
+/// let judged = judge_facets(&square, &[&[0, 2], &[0, 1], &[0, 0], &[0, 4]]);
+/// // the diagonal holds the centroid; (0, 0)–(0.5, 0.5) too; a repeated index is a point
+/// assert_eq!(judged, WrongFacets { malformed: 0, flat: 3, beyond: 0 });
+/// assert_eq!(judge_facets(&square, &[&[0, 1, 2], &[1, 9]]).malformed, 2);
+/// // (4, 0)–(1, 1) cuts the triangle: the centroid on one side, (0, 0) strictly beyond
+/// let triangle = [[0.0, 0.0], [4.0, 0.0], [0.0, 4.0], [1.0, 1.0]];
+/// assert_eq!(judge_facets(&triangle, &[&[1, 3]]).beyond, 1);
+/// ```
+pub fn judge_facets<const D: usize>(points: &[[f64; D]], facets: &[&[usize]]) -> WrongFacets {
     use pqhull::predicates::{Sign, orientation};
     let n = points.len() as f64;
     let centroid: [f64; D] = std::array::from_fn(|c| points.iter().map(|p| p[c]).sum::<f64>() / n);
-    facets
-        .iter()
-        .filter(|facet| {
-            if facet.len() != D || facet.iter().any(|&i| i >= points.len()) {
-                return true;
-            }
-            let vertices: [[f64; D]; D] = std::array::from_fn(|i| points[facet[i]]);
-            let inside = orientation(&vertices, &centroid);
-            inside == Sign::Zero
-                || points
-                    .iter()
-                    .any(|p| orientation(&vertices, p) == inside.flip())
-        })
-        .count()
+    let mut judged = WrongFacets::default();
+    for facet in facets {
+        if facet.len() != D || facet.iter().any(|&i| i >= points.len()) {
+            judged.malformed += 1;
+            continue;
+        }
+        let vertices: [[f64; D]; D] = std::array::from_fn(|i| points[facet[i]]);
+        let inside = orientation(&vertices, &centroid);
+        if inside == Sign::Zero {
+            judged.flat += 1;
+        } else if points
+            .iter()
+            .any(|p| orientation(&vertices, p) == inside.flip())
+        {
+            judged.beyond += 1;
+        }
+    }
+    judged
 }

@@ -87,3 +87,45 @@ fn joggled_qhull_answers_with_facets_of_other_points() {
         0
     );
 }
+
+/// The materialised Minkowski sum of three contacts' raw wrenches (each contact's friction
+/// pyramid is planar only up to rounding), unperturbed: Qhull merges the nearly coplanar facets
+/// of the sum and reports a triangulated hull with fewer facets than the exact one, some of
+/// whose facets have input points strictly beyond them or are flat (exact orientation,
+/// `judge_facets`); pqhull's hull passes `Hull::check`. Issue 24's argument for `Hull::try_new`
+/// on raw sums: Qhull's time there is that of a different, inexact answer.
+#[test]
+fn qhull_is_not_exact_on_a_raw_minkowski_sum() {
+    use pqhull::grasp::FrictionModel;
+    use pqhull_cli::bench::hull::minkowski_sum;
+    use pqhull_cli::bench::perturb::judge_facets;
+    use pqhull_cli::bench::workloads::{BAR_FRICTION, bar_grasps};
+    let friction = FrictionModel::try_new(BAR_FRICTION, 6).unwrap();
+    let mut found = 0;
+    for grasp in bar_grasps(5, 40, 3, friction) {
+        let sum = minkowski_sum(&grasp);
+        let (Ok(qhull), Ok(hull)) = (qhull_full_hull(&sum), Hull::try_new(&sum)) else {
+            continue; // flat to Qhull or to the exact engine
+        };
+        hull.check().unwrap();
+        let facets: Vec<&[usize]> = qhull.facets.iter().map(|f| f.vertices.as_slice()).collect();
+        let judged = judge_facets(&sum, &facets);
+        eprintln!(
+            "{} points: Qhull {} facets, {} through the centroid, {} with a point strictly \
+             beyond; the exact hull {} facets",
+            sum.len(),
+            qhull.facets.len(),
+            judged.flat,
+            judged.beyond,
+            hull.facet_count()
+        );
+        assert_eq!(judged.malformed, 0);
+        assert!(judged.total() > 0);
+        assert!(hull.facet_count() > qhull.facets.len());
+        found += 1;
+        if found == 3 {
+            break;
+        }
+    }
+    assert_eq!(found, 3, "too few grasps whose sums span 6-D");
+}
