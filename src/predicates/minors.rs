@@ -81,8 +81,8 @@ pub(in crate::predicates) fn minors_of<T: MinorScalar, const D: usize>(
 pub(in crate::predicates) fn minors_inlined<T: MinorScalar, const D: usize>(
     rows: &[[T; D]; D],
 ) -> [T; D] {
-    // D = 3 to 6 written out (`minors_small`, `minors6`). The copies in and out are of a
-    // constant size and vanish once inlined.
+    // D = 3 to 8 written out (`minors_small`, `minors6`, `minors78`). The copies in and out
+    // are of a constant size and vanish once inlined.
     macro_rules! written {
         ($n:literal, $f:path) => {{
             let rows: [[T; $n]; $n] = std::array::from_fn(|i| std::array::from_fn(|j| rows[i][j]));
@@ -90,14 +90,16 @@ pub(in crate::predicates) fn minors_inlined<T: MinorScalar, const D: usize>(
             std::array::from_fn(|j| minors[j])
         }};
     }
-    // Otherwise the table as small as 2^D allows: it is zeroed for every plane.
+    // Otherwise (2-D, and dimensions the hull refuses) the table as small as 2^D allows: it is
+    // zeroed for every plane.
     match D {
         3 => written!(3, super::minors_small::minors3),
         4 => written!(4, super::minors_small::minors4),
         5 => written!(5, super::minors_small::minors5),
         6 => written!(6, super::minors6::minors6),
         0..=2 => cofactor_minors::<T, D, 4>(rows),
-        7 => cofactor_minors::<T, D, 128>(rows),
+        7 => written!(7, super::minors78::minors7),
+        8 => written!(8, super::minors78::minors8),
         _ => cofactor_minors::<T, D, 256>(rows),
     }
 }

@@ -70,6 +70,7 @@ mod filter;
 mod grid;
 mod minors;
 mod minors6;
+mod minors78;
 mod minors_small;
 #[cfg(test)]
 mod tests;
