@@ -125,7 +125,7 @@ impl<const D: usize> Hull<D> {
         let chosen = start;
         let mut simplex = match chosen.filter(|s| independent(&self.points, &s[..=D])) {
             Some(simplex) => simplex,
-            None => initial_simplex(&self.points)?,
+            None => initial_simplex(&self.points, &mut self.scratch.residuals)?,
         };
         // Its vertices are distinct points: name each by its first copy, as every vertex is.
         for s in &mut simplex[..=D] {
@@ -662,12 +662,14 @@ impl Extent {
 /// chosen. Floating point only picks candidates; the result is verified with the exact predicate,
 /// and exact rank computation takes over when the greedy choice is flat.
 ///
-/// The first D + 1 entries are the simplex ([`MAX_SIMPLEX`] slots). Fixed arrays, not vectors:
-/// a rebuilt hull (one per grasp in a batch) allocates nothing here.
+/// The first D + 1 entries are the simplex ([`MAX_SIMPLEX`] slots). Fixed arrays, not vectors,
+/// and `residuals` (the hull's scratch, one vector per point) keeps its capacity: a rebuilt hull
+/// (one per grasp in a batch) allocates nothing here.
 pub(in crate::hull) fn initial_simplex<const D: usize>(
     points: &[[f64; D]],
+    residuals: &mut Vec<[f64; D]>,
 ) -> Result<[usize; MAX_SIMPLEX], HullError> {
-    if let Some(simplex) = greedy_simplex(points) {
+    if let Some(simplex) = greedy_simplex(points, residuals) {
         let mut vertices = [[0.0; D]; D];
         for (v, &s) in vertices.iter_mut().zip(&simplex) {
             *v = points[s];
@@ -701,7 +703,10 @@ fn independent<const D: usize>(points: &[[f64; D]], simplex: &[usize]) -> bool {
     orientation(&vertices, &points[simplex[D]]) != Sign::Zero
 }
 
-fn greedy_simplex<const D: usize>(points: &[[f64; D]]) -> Option<[usize; MAX_SIMPLEX]> {
+fn greedy_simplex<const D: usize>(
+    points: &[[f64; D]],
+    residuals: &mut Vec<[f64; D]>,
+) -> Option<[usize; MAX_SIMPLEX]> {
     if points.is_empty() {
         return None;
     }
@@ -726,11 +731,22 @@ fn greedy_simplex<const D: usize>(points: &[[f64; D]]) -> Option<[usize; MAX_SIM
     let mut basis = Basis::<D>::default();
     basis.push_direction(sub(points[best.2], points[best.1]));
     let origin = points[best.1];
+    // Each point's residual is kept from pass to pass, and a pass projects out only the
+    // directions added since the last: the operations of `Basis::residual` from scratch, in the
+    // same order (`project_out`), so the same numbers, at O(D) per point and pass instead of
+    // O(D·k). From scratch, the passes were 44 % of an 8-D build of 50,000 points in a simplex.
+    residuals.clear();
+    residuals.extend(points.iter().map(|p| sub(*p, origin)));
+    let mut projected = 0;
     for slot in &mut chosen[2..=D] {
+        let new = &basis.directions[projected..basis.len];
+        projected = basis.len;
         let mut far = (0.0, usize::MAX);
-        for (i, p) in points.iter().enumerate() {
-            let r = basis.residual(sub(*p, origin));
-            let d = dot(r, r);
+        for (i, r) in residuals.iter_mut().enumerate() {
+            for b in new {
+                project_out(r, b);
+            }
+            let d = dot(*r, *r);
             if d > far.0 {
                 far = (d, i);
             }
@@ -742,6 +758,15 @@ fn greedy_simplex<const D: usize>(points: &[[f64; D]]) -> Option<[usize; MAX_SIM
         basis.push_direction(sub(points[far.1], origin));
     }
     Some(chosen)
+}
+
+/// `v` minus its projection on the unit vector `b` (one step of modified Gram–Schmidt).
+#[inline(always)]
+fn project_out<const D: usize>(v: &mut [f64; D], b: &[f64; D]) {
+    let c = dot(*b, *v);
+    for (x, y) in v.iter_mut().zip(b) {
+        *x -= c * y;
+    }
 }
 
 /// An orthonormal basis of at most [`MAX_DIMENSION`] directions, in place.
@@ -763,10 +788,7 @@ impl<const D: usize> Basis<D> {
     /// `v` minus its projection on the basis.
     fn residual(&self, mut v: [f64; D]) -> [f64; D] {
         for b in &self.directions[..self.len] {
-            let c = dot(*b, v);
-            for (x, y) in v.iter_mut().zip(b) {
-                *x -= c * y;
-            }
+            project_out(&mut v, b);
         }
         v
     }

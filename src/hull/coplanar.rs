@@ -74,7 +74,7 @@ impl<const D: usize> Hull<D> {
             buffers
                 .coordinates
                 .extend(candidates.iter().map(|&p| self.points[p as usize]));
-            super::build::initial_simplex(&buffers.coordinates).ok()
+            super::build::initial_simplex(&buffers.coordinates, &mut self.scratch.residuals).ok()
         });
         self.scratch.examination = buffers;
         let Some(Some(local)) = simplex else {

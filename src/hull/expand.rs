@@ -41,6 +41,8 @@ pub(in crate::hull) struct Scratch<const D: usize> {
     /// see [`Hull::initialise`](super::Hull).
     pub(in crate::hull) copies: Vec<u32>,
     pub(in crate::hull) first_copy: Vec<u32>,
+    /// The points' residuals while the initial simplex is chosen (`build::initial_simplex`).
+    pub(in crate::hull) residuals: Vec<[f64; D]>,
     /// Tests only: ridge keys that collide all the time, so that the confirming pairing pass
     /// runs.
     #[cfg(test)]
