@@ -9,7 +9,7 @@
 //! ```
 //!
 //! Arguments: the family (`pqhull::rbox::Family`'s names: `cube`, `sphere`, `corners`,
-//! `lattice`, `clusters`, …), the dimension (3 to 6), `rbox`'s `n` and the rounds (5); the seed
+//! `lattice`, `clusters`, …), the dimension (2 to 8), `rbox`'s `n` and the rounds (5); the seed
 //! is the suite's (1), so `corners 6 2000` is the suite's 6-D corners row. Prints the best and
 //! mean time per build and the last build's work: its `Stats` (a build that ran a second phase,
 //! `hull/coplanar.rs`, processed 2(D + 1) points beyond its expansions), final facets and
@@ -56,7 +56,7 @@ fn run<const D: usize>(family: &Family, n: usize, rounds: usize) {
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let usage = "usage: profile_rbox FAMILY DIMENSION(3-6) N [ROUNDS]";
+    let usage = "usage: profile_rbox FAMILY DIMENSION(2-8) N [ROUNDS]";
     let fail = |message: String| -> ! {
         eprintln!("{usage}: {message}");
         std::process::exit(2);
@@ -77,10 +77,13 @@ fn main() {
     };
     let (dimension, n, rounds) = (number(1, None), number(2, None), number(3, Some(5)).max(1));
     match dimension {
+        2 => run::<2>(&family, n, rounds),
         3 => run::<3>(&family, n, rounds),
         4 => run::<4>(&family, n, rounds),
         5 => run::<5>(&family, n, rounds),
         6 => run::<6>(&family, n, rounds),
-        d => fail(format!("dimension {d} is not 3 to 6")),
+        7 => run::<7>(&family, n, rounds),
+        8 => run::<8>(&family, n, rounds),
+        d => fail(format!("dimension {d} is not 2 to 8")),
     }
 }

@@ -51,8 +51,13 @@ pub use report::{CaseRow, HullBenchReport, PqhullColumns, QhullColumns};
 /// The most timed runs per case ([`HullBenchConfig::repeats`]).
 pub const MAX_REPEATS: usize = 1000;
 
-/// The dimensions the suite has cases in.
+/// The dimensions the suite runs by default.
 pub const DIMENSIONS: [usize; 4] = [3, 4, 5, 6];
+
+/// The engine's other dimensions, whose `rbox` families and grids run only when asked for
+/// ([`HullBenchConfig::dimensions`]): the issue's targets are set in [`DIMENSIONS`], and these
+/// show the engine's range against Qhull's by the same command.
+pub const EXTRA_DIMENSIONS: [usize; 3] = [2, 7, 8];
 
 /// Candidate grasps searched for a force-closure one ([`Workload::Wrenches`],
 /// [`Workload::Minkowski`]).
@@ -207,25 +212,26 @@ impl Case {
     }
 }
 
-/// `rbox`'s `n` for `family` in dimension `d` (3 to 6) under `preset`: for the standard preset,
+/// `rbox`'s `n` for `family` in dimension `d` (2 to 8) under `preset`: for the standard preset,
 /// sizes that keep each case long enough to time and the suite short, smaller as the hulls'
 /// facets multiply with the dimension (the lattice and the clusters grow fastest with it; the
-/// simplex's hull is four to seven points at any size; the times are in docs/benchmarks.md, "Hull
+/// simplex's hull is three to nine points at any size; the times are in docs/benchmarks.md, "Hull
 /// suite against Qhull"), the quick preset a twentieth of them (at least 60).
 fn rbox_n(preset: Preset, family: &Family, d: usize) -> usize {
-    let by_dimension: [usize; 4] = match family {
-        Family::UniformCube => [100_000, 10_000, 5_000, 500],
+    // By dimension, 2-D to 8-D.
+    let by_dimension: [usize; 7] = match family {
+        Family::UniformCube => [1_000_000, 100_000, 10_000, 5_000, 500, 300, 120],
         Family::SphereSurface | Family::ThinShell { .. } | Family::NarrowLens { .. } => {
-            [20_000, 5_000, 1_000, 300]
+            [20_000, 20_000, 5_000, 1_000, 300, 120, 60]
         }
         Family::CubeCornersDiamond | Family::ManyDuplicates { .. } => {
-            [100_000, 10_000, 5_000, 2_000]
+            [1_000_000, 100_000, 10_000, 5_000, 2_000, 1_000, 500]
         }
-        Family::Simplex => [100_000, 50_000, 50_000, 50_000],
-        Family::IntegerLattice { .. } => [100_000, 10_000, 5_000, 250],
-        Family::Clusters { .. } => [100_000, 10_000, 2_000, 200],
+        Family::Simplex => [1_000_000, 100_000, 50_000, 50_000, 50_000, 50_000, 50_000],
+        Family::IntegerLattice { .. } => [1_000_000, 100_000, 10_000, 5_000, 250, 120, 80],
+        Family::Clusters { .. } => [1_000_000, 100_000, 10_000, 2_000, 200, 100, 60],
     };
-    let standard = by_dimension[d.clamp(3, 6) - 3];
+    let standard = by_dimension[d.clamp(2, 8) - 2];
     match preset {
         Preset::Standard => standard,
         Preset::Quick => (standard / 20).max(60),
@@ -235,6 +241,11 @@ fn rbox_n(preset: Preset, family: &Family, d: usize) -> usize {
 /// The grid's side in dimension `d`.
 fn grid_side(preset: Preset, d: usize) -> usize {
     match (preset, d) {
+        (Preset::Standard, 2) => 1000,
+        (Preset::Quick, 2) => 50,
+        (Preset::Quick, 7 | 8) => 2,
+        (Preset::Standard, 7) => 3,
+        (Preset::Standard, 8) => 2,
         (Preset::Standard, 3) => 20,
         (Preset::Standard, 4) => 8,
         (Preset::Standard, 5) => 5,
@@ -255,8 +266,17 @@ fn grid_side(preset: Preset, d: usize) -> usize {
 /// assert!(all.iter().any(|c| c.name() == "wrenches-4x8"));
 /// ```
 pub fn cases(preset: Preset) -> Vec<Case> {
+    cases_in(preset, &DIMENSIONS)
+}
+
+/// [`cases`] in `dimensions` (any of [`DIMENSIONS`] and [`EXTRA_DIMENSIONS`], run in increasing
+/// order): the `rbox` families and the grids in each, and the grasp workloads if 6 is among them.
+fn cases_in(preset: Preset, dimensions: &[usize]) -> Vec<Case> {
+    let mut dimensions = dimensions.to_vec();
+    dimensions.sort_unstable();
+    dimensions.dedup();
     let mut out = Vec::new();
-    for d in DIMENSIONS {
+    for &d in &dimensions {
         for family in Family::ALL {
             out.push(Case {
                 workload: Workload::Rbox {
@@ -267,13 +287,16 @@ pub fn cases(preset: Preset) -> Vec<Case> {
             });
         }
     }
-    for d in DIMENSIONS {
+    for &d in &dimensions {
         out.push(Case {
             workload: Workload::Grid {
                 side: grid_side(preset, d),
             },
             dimension: d,
         });
+    }
+    if !dimensions.contains(&6) {
+        return out;
     }
     let (wrench_edges, sum_edges): (&[usize], &[usize]) = match preset {
         Preset::Standard => (&[8, 16, 32], &[6, 8]),
@@ -338,13 +361,21 @@ impl HullBenchConfig {
         {
             return Err(HullBenchError::UnknownFamily(name.clone()));
         }
-        if let Some(&d) = self.dimensions.iter().find(|d| !DIMENSIONS.contains(d)) {
+        if let Some(&d) = self
+            .dimensions
+            .iter()
+            .find(|d| !DIMENSIONS.contains(d) && !EXTRA_DIMENSIONS.contains(d))
+        {
             return Err(HullBenchError::Dimension(d));
         }
-        let selected: Vec<Case> = cases(self.preset)
+        let dimensions: &[usize] = if self.dimensions.is_empty() {
+            &DIMENSIONS
+        } else {
+            &self.dimensions
+        };
+        let selected: Vec<Case> = cases_in(self.preset, dimensions)
             .into_iter()
             .filter(|c| self.families.is_empty() || self.families.iter().any(|f| f == c.family()))
-            .filter(|c| self.dimensions.is_empty() || self.dimensions.contains(&c.dimension))
             .collect();
         if selected.is_empty() {
             return Err(HullBenchError::NoCases);
@@ -361,7 +392,7 @@ pub enum HullBenchError {
     Repeats(usize),
     /// A family name not in [`FAMILY_NAMES`].
     UnknownFamily(String),
-    /// A dimension not in [`DIMENSIONS`].
+    /// A dimension in neither [`DIMENSIONS`] nor [`EXTRA_DIMENSIONS`].
     Dimension(usize),
     /// The filters leave no case.
     NoCases,
@@ -380,8 +411,9 @@ impl fmt::Display for HullBenchError {
             ),
             HullBenchError::Dimension(d) => write!(
                 f,
-                "the hull suite has no case in dimension {d} (it has {:?})",
-                DIMENSIONS
+                "the hull suite has no case in dimension {d} (it has {:?} by default, and {:?} \
+                 when asked)",
+                DIMENSIONS, EXTRA_DIMENSIONS
             ),
             HullBenchError::NoCases => {
                 write!(f, "no case matches the family and dimension filters")
@@ -437,6 +469,9 @@ pub fn run(
 fn measure_case(case: &Case, config: &HullBenchConfig) -> Vec<CaseRow> {
     let (seed, repeats) = (config.seed, config.repeats);
     match (case.workload, case.dimension) {
+        (Workload::Rbox { family, n }, 2) => {
+            points_row(case, &rbox::generate::<2>(&family, n, seed), repeats)
+        }
         (Workload::Rbox { family, n }, 3) => {
             points_row(case, &rbox::generate::<3>(&family, n, seed), repeats)
         }
@@ -446,13 +481,23 @@ fn measure_case(case: &Case, config: &HullBenchConfig) -> Vec<CaseRow> {
         (Workload::Rbox { family, n }, 5) => {
             points_row(case, &rbox::generate::<5>(&family, n, seed), repeats)
         }
-        (Workload::Rbox { family, n }, _) => {
+        (Workload::Rbox { family, n }, 6) => {
             points_row(case, &rbox::generate::<6>(&family, n, seed), repeats)
         }
+        (Workload::Rbox { family, n }, 7) => {
+            points_row(case, &rbox::generate::<7>(&family, n, seed), repeats)
+        }
+        // 8-D (`cases_in` makes no other).
+        (Workload::Rbox { family, n }, _) => {
+            points_row(case, &rbox::generate::<8>(&family, n, seed), repeats)
+        }
+        (Workload::Grid { side }, 2) => points_row(case, &grid::<2>(side), repeats),
         (Workload::Grid { side }, 3) => points_row(case, &grid::<3>(side), repeats),
         (Workload::Grid { side }, 4) => points_row(case, &grid::<4>(side), repeats),
         (Workload::Grid { side }, 5) => points_row(case, &grid::<5>(side), repeats),
-        (Workload::Grid { side }, _) => points_row(case, &grid::<6>(side), repeats),
+        (Workload::Grid { side }, 6) => points_row(case, &grid::<6>(side), repeats),
+        (Workload::Grid { side }, 7) => points_row(case, &grid::<7>(side), repeats),
+        (Workload::Grid { side }, _) => points_row(case, &grid::<8>(side), repeats),
         (Workload::Wrenches { contacts, edges }, _) => {
             let (grasp, closure) = grasp_for(seed, contacts, edges, false);
             grasp_rows(case, &grasp, closure, &grasp.wrenches(), repeats)

@@ -10,11 +10,12 @@ use std::io::Write;
 
 pub const LONG_ABOUT: &str = "\
 pqhull's full hull against Qhull on the same points, case by case, all generated in-process
-from --seed: the rbox families in 3-D to 6-D (corners: cube corners and face centres; shell: a
-thin shell; clusters: near-duplicates), the integer grids {0, ..., m-1}^D, the raw wrenches of a
-force-closure random 4-contact bar grasp (8, 16, 32 edges; timed as Hull::try_new and as the GWS
-volume) and the materialised Minkowski sum of a 3-contact one (6, 8 edges; timed as plain Q-inf
-by the full method and as Hull::try_new). Each call: the best of --repeats wall-clock runs on one
+from --seed: the rbox families in 3-D to 6-D, and in 2-D, 7-D and 8-D when --dimensions asks
+(corners: cube corners and face centres; shell: a thin shell; clusters: near-duplicates), the
+integer grids {0, ..., m-1}^D, the raw wrenches of a force-closure random 4-contact bar grasp
+(8, 16, 32 edges; timed as Hull::try_new and as the GWS volume) and the materialised Minkowski
+sum of a 3-contact one (6, 8 edges; timed as plain Q-inf by the full method and as
+Hull::try_new). Each call: the best of --repeats wall-clock runs on one
 thread, interleaved with Qhull's (absent without the `qhull` feature); vertex counts and
 Hull::check once, untimed. Compare rows of one run.
 
@@ -27,9 +28,10 @@ pub struct HullArgs {
     #[arg(long, value_delimiter = ',', value_name = "NAME,...",
           value_parser = PossibleValuesParser::new(FAMILY_NAMES))]
     pub families: Vec<String>,
-    /// Only these dimensions, comma separated, each 3 to 6
+    /// Only these dimensions, comma separated, each 2 to 8 (3 to 6 when not given; 2, 7 and 8
+    /// only when asked)
     #[arg(long, value_delimiter = ',', value_name = "D,...",
-          value_parser = crate::limits::count(3, 6))]
+          value_parser = crate::limits::count(2, 8))]
     pub dimensions: Vec<usize>,
     /// Small sizes: a twentieth of the point counts, smaller grids, fewer edges (what tests run)
     #[arg(long)]
