@@ -735,20 +735,38 @@ fn greedy_simplex<const D: usize>(
     // directions added since the last: the operations of `Basis::residual` from scratch, in the
     // same order (`project_out`), so the same numbers, at O(D) per point and pass instead of
     // O(D·k). From scratch, the passes were 44 % of an 8-D build of 50,000 points in a simplex.
+    // The first pass computes them (and keeps them only if a later pass will read them: not in
+    // 2-D, whose one pass would only add the writes).
     residuals.clear();
-    residuals.extend(points.iter().map(|p| sub(*p, origin)));
+    let keep = D > 2;
+    if keep {
+        residuals.reserve(points.len());
+    }
     let mut projected = 0;
-    for slot in &mut chosen[2..=D] {
+    for (pass, slot) in chosen[2..=D].iter_mut().enumerate() {
         let new = &basis.directions[projected..basis.len];
         projected = basis.len;
         let mut far = (0.0, usize::MAX);
-        for (i, r) in residuals.iter_mut().enumerate() {
+        let mut consider = |i: usize, r: &mut [f64; D]| {
             for b in new {
                 project_out(r, b);
             }
             let d = dot(*r, *r);
             if d > far.0 {
                 far = (d, i);
+            }
+        };
+        if pass == 0 {
+            for (i, p) in points.iter().enumerate() {
+                let mut r = sub(*p, origin);
+                consider(i, &mut r);
+                if keep {
+                    residuals.push(r);
+                }
+            }
+        } else {
+            for (i, r) in residuals.iter_mut().enumerate() {
+                consider(i, r);
             }
         }
         if far.1 == usize::MAX {
