@@ -4,7 +4,7 @@
 //! same numbers bit for bit and the filter's error analysis holds unchanged (the test below).
 //! Why: the programme's loop over its table of masks was nine tenths of a 7-D or 8-D hull's
 //! instructions (an 8-D sphere of 60 points: 25,800 instructions a plane), and an 8-D sphere
-//! took longer than Qhull's (docs/benchmarks.md, "7-D and 8-D minors written out").
+//! took longer to hull than Qhull (docs/benchmarks.md, "2-D, 7-D and 8-D").
 
 use super::minors::MinorScalar;
 
