@@ -121,30 +121,25 @@ impl<const D: usize> Hull<D> {
         // magnitude is the largest magnitude scaled, so no pass over the points is needed.
         self.in_box = extent.max_abs * scale <= 1.0;
         debug_assert_eq!(self.in_box, self.points.iter().all(in_box));
+        self.mark_repeats();
         let chosen = start;
-        let simplex = match chosen.filter(|s| independent(&self.points, &s[..=D])) {
+        let mut simplex = match chosen.filter(|s| independent(&self.points, &s[..=D])) {
             Some(simplex) => simplex,
             None => initial_simplex(&self.points, &mut self.scratch.residuals)?,
         };
+        // Its vertices are distinct points: name each by its first copy, as every vertex is.
+        for s in &mut simplex[..=D] {
+            *s = self.scratch.first_copy[*s] as usize;
+        }
         let simplex = &simplex[..=D];
         let all = self.found(simplex);
         let all = &all[..=D];
         self.stats.points_processed = D + 1;
-        // Copies are found among the points beyond the simplex only, after this pass, and
-        // among the points inside it only for the simplex's own vertices (see `repeats.rs`).
-        let mut first = [0usize; MAX_SIMPLEX];
-        first[..=D].copy_from_slice(simplex);
-        let last_vertex = simplex.iter().copied().max().unwrap_or(0);
         for p in 0..self.points.len() as u32 {
-            if simplex.contains(&(p as usize)) {
-                continue;
-            }
-            if !self.assign(p, all) && (p as usize) < last_vertex {
-                self.note_vertex_copy(p as usize, simplex, &mut first[..=D]);
+            if !simplex.contains(&(p as usize)) && self.scratch.first_copy[p as usize] == p {
+                self.assign(p, all);
             }
         }
-        self.name_simplex_by_first_copies(simplex, &first[..=D], all);
-        self.drop_repeats_beyond(all);
         Ok(())
     }
 
@@ -195,11 +190,56 @@ impl<const D: usize> Hull<D> {
         std::array::from_fn(|k| FacetId((first + k) as u32))
     }
 
-    /// Whether input `p` equals an input with a smaller index that lies beyond the initial
-    /// simplex (so never enters an outside set; a copy of a point inside the simplex is taken
-    /// as any inside point).
+    /// Whether input `p` equals an input with a smaller index (so never enters an outside set).
     pub(in crate::hull) fn is_repeat(&self, p: usize) -> bool {
-        self.scratch.repeats.is_later_copy(p)
+        self.scratch
+            .first_copy
+            .get(p)
+            .is_some_and(|&first| first as usize != p)
+    }
+
+    /// Writes, in `scratch.first_copy`, the smallest index of a point equal to each point (itself
+    /// if none is smaller). Only the first copy is ever assigned to an outside set: a copy is
+    /// never beyond a hull holding the first (equal points are on the same side of every plane),
+    /// so the hull is the same, and the time does not grow with repetition (copies would
+    /// otherwise follow the first through every outside-set redistribution).
+    ///
+    /// Equal points are found with an open-addressing table of first copies keyed by a hash of
+    /// the coordinates' bits, filled in index order (so the copy found is the first): one probe
+    /// per point, against the sort of (hash, index) pairs it replaces, which was a fifth of the
+    /// hull of 100,000 uniform 3-D points (and sorting the points themselves had been a quarter).
+    fn mark_repeats(&mut self) {
+        let Scratch {
+            copies, first_copy, ..
+        } = &mut self.scratch;
+        let points = &self.points;
+        // At most half full: short probe runs. Input sizes are bounded by `u32` indices.
+        let size = (2 * points.len()).next_power_of_two().max(2);
+        let mask = size - 1;
+        copies.clear();
+        copies.resize(size, EMPTY_SLOT);
+        first_copy.clear();
+        first_copy.extend(0..points.len() as u32);
+        for (i, p) in points.iter().enumerate() {
+            // SplitMix64's finaliser over FxHash's bits, so that structured input (grids, whose
+            // coordinates differ in few bits) does not cluster in the table.
+            let mut z = point_hash(p);
+            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+            let mut slot = (z ^ (z >> 31)) as usize & mask;
+            loop {
+                let a = copies[slot];
+                if a == EMPTY_SLOT {
+                    copies[slot] = i as u32;
+                    break;
+                }
+                if points[a as usize] == *p {
+                    first_copy[i] = a;
+                    break;
+                }
+                slot = (slot + 1) & mask;
+            }
+        }
     }
 
     /// `x / scale`: back in the caller's units.
@@ -504,7 +544,7 @@ impl<const D: usize> Hull<D> {
 
     /// The declared flats with at least `flat_dim + 1` points among `vertices` (so, the vertices
     /// being affinely independent, contained in their hyperplane), padded with [`NO_FLAT`].
-    pub(in crate::hull) fn flats_within(&self, vertices: &[u32; D]) -> [u32; MAX_FLATS] {
+    fn flats_within(&self, vertices: &[u32; D]) -> [u32; MAX_FLATS] {
         let mut flats = [NO_FLAT; MAX_FLATS];
         if self.flat_of.is_empty() {
             return flats;
@@ -527,9 +567,21 @@ impl<const D: usize> Hull<D> {
     }
 }
 
+/// An empty slot of the first-copy table (`Hull::mark_repeats`): no input index, since inputs
+/// are indexed by `u32` below it.
+const EMPTY_SLOT: u32 = u32::MAX;
+
 /// The smallest largest-cofactor trusted without refinement: about 2^−897, far above the
 /// subnormals (below 2^−1022) where the products and their error bounds lose bits.
 const MIN_PRECISE_COFACTOR: f64 = 1e-270;
+
+/// A hash of a point's coordinates (−0 read as 0, so that equal points hash alike): FxHash's
+/// multiply-rotate, enough to make runs of equal hashes nearly always true repeats.
+fn point_hash<const D: usize>(p: &[f64; D]) -> u64 {
+    p.iter().fold(0u64, |h, &x| {
+        (h.rotate_left(5) ^ (x + 0.0).to_bits()).wrapping_mul(0x517c_c1b7_2722_0a95)
+    })
+}
 
 pub(in crate::hull) fn first_non_finite<const D: usize>(
     points: &[[f64; D]],

@@ -29,7 +29,6 @@ mod incremental;
 mod locate;
 mod planes;
 mod record;
-mod repeats;
 mod strategy;
 mod trace;
 mod volume;
