@@ -103,10 +103,10 @@ pub struct FacetPlane<const D: usize> {
 /// The stages behind the filter, each built on first use.
 #[derive(Debug, Default)]
 struct Refined<const D: usize> {
-    /// The double-double plane (D ≥ 4; for D ≤ 3 `robust` is faster); `None` inside when a
-    /// vertex coordinate is outside `[−1, 1]`.
+    /// The double-double plane (D ≥ 3); `None` inside when a vertex coordinate is outside
+    /// `[−1, 1]`.
     dd: OnceLock<Option<DdPlane<D>>>,
-    /// Exact integer cofactors (D ≥ 4); `None` inside when the vertices do not fit (then every
+    /// Exact integer cofactors (D ≥ 3); `None` inside when the vertices do not fit (then every
     /// exact test computes a full determinant). Inline (about 1 KB in 6-D), so that a plane
     /// allocates once whatever the stages it needs.
     exact: OnceLock<Option<ExactPlane<D>>>,
@@ -514,7 +514,7 @@ impl<const D: usize> FacetPlane<D> {
             if -value > bound {
                 return orient(Sign::Negative);
             }
-            if D >= 4 {
+            if D >= 3 {
                 let dd = rebased
                     .dd
                     .get_or_init(|| DdPlane::new(&rebased.vertices, &rebased.plane, true));
@@ -525,7 +525,7 @@ impl<const D: usize> FacetPlane<D> {
                     return orient(sign);
                 }
             }
-        } else if D >= 4 && finite {
+        } else if D >= 3 && finite {
             let dd = self
                 .refined()
                 .dd
@@ -537,7 +537,7 @@ impl<const D: usize> FacetPlane<D> {
                 return sign;
             }
         }
-        if D >= 4
+        if D >= 3
             && finite
             && let Some(sign) = self.exact_plane(vertices).and_then(|plane| plane.side(p))
         {

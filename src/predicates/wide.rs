@@ -616,6 +616,7 @@ mod tests {
             }
         }
         run::<2>();
+        run::<3>();
         run::<4>();
         run::<6>();
         run::<8>();
@@ -739,6 +740,7 @@ mod tests {
             assert!(wide_cases > 250, "D = {D}: only {wide_cases} cases fit");
         }
         run::<2>();
+        run::<3>();
         run::<4>();
         run::<6>();
         run::<8>();
@@ -786,6 +788,7 @@ mod tests {
             );
         }
         run::<2>();
+        run::<3>();
         run::<4>();
         run::<6>();
         run::<8>();
