@@ -5,7 +5,7 @@
 //! `(family, n, seed)`. The families cover the easy case (uniform points), and the inputs that break
 //! hull codes that decide with floating tolerances: cospherical points, coplanar corners and face
 //! centres, points exactly on facets, thin shells, flat lenses, integer lattices, nearly coincident
-//! clusters and exact duplicates.
+//! clusters, exact duplicates, and faces coplanar only up to rounding.
 //!
 //! | family | `rbox` | points returned | geometry |
 //! | --- | --- | --- | --- |
@@ -18,6 +18,7 @@
 //! | [`Family::IntegerLattice`] | `rbox M` | `n` | small integer coordinates |
 //! | [`Family::Clusters`] | `rbox C` | `n` | tight clusters of nearly coincident points |
 //! | [`Family::ManyDuplicates`] | — | `n` | a few points, each repeated several times |
+//! | [`Family::TiltedFaces`] | `rbox W0`, turned | `n` | on the faces of a rotated cube, rounded |
 //!
 //! [`point_count`] gives the exact count. For `n ≥ 2D + 2` every family is full-dimensional
 //! (affine rank `D`) — with probability one for the continuous families, by construction for the
@@ -101,6 +102,15 @@ pub enum Family {
         /// How many times each point appears (about), `≥ 1` (default 4).
         copies: usize,
     },
+    /// `n` points uniform on the faces of the cube `[−0.5, 0.5]^D` (a face chosen uniformly, the
+    /// other coordinates uniform: `rbox W0`), then turned by one rotation drawn from the seed
+    /// (Gram–Schmidt on a matrix of normal deviates, computed before the points) and rounded.
+    /// The points of one face are coplanar only up to that rounding, a few units in the last
+    /// place either side of its hyperplane: a box in a general pose, densely sampled, as a CAD
+    /// model's surface is. The exact hull's vertices are the face points that rounding put
+    /// outside (hundreds in 3-D), not the cube's corners, which are not in the set; a hull code
+    /// that decides with a tolerance merges each face into one.
+    TiltedFaces,
 }
 
 impl Family {
@@ -116,7 +126,7 @@ impl Family {
     pub const DEFAULT_COPIES: usize = 4;
 
     /// Every family, with its default parameters, in a fixed order.
-    pub const ALL: [Family; 9] = [
+    pub const ALL: [Family; 10] = [
         Family::UniformCube,
         Family::SphereSurface,
         Family::CubeCornersDiamond,
@@ -137,10 +147,11 @@ impl Family {
         Family::ManyDuplicates {
             copies: Self::DEFAULT_COPIES,
         },
+        Family::TiltedFaces,
     ];
 
     /// The short name used by [`FromStr`] and [`fmt::Display`]: `cube`, `sphere`, `corners`,
-    /// `simplex`, `shell`, `lens`, `lattice`, `clusters` or `duplicates`.
+    /// `simplex`, `shell`, `lens`, `lattice`, `clusters`, `duplicates` or `tilted`.
     pub fn name(&self) -> &'static str {
         match self {
             Family::UniformCube => "cube",
@@ -152,6 +163,7 @@ impl Family {
             Family::IntegerLattice { .. } => "lattice",
             Family::Clusters { .. } => "clusters",
             Family::ManyDuplicates { .. } => "duplicates",
+            Family::TiltedFaces => "tilted",
         }
     }
 
@@ -222,7 +234,7 @@ impl FromStr for Family {
 
     /// Parses `name` or `name:parameters` (case-insensitive name): `cube`, `sphere`, `corners`,
     /// `simplex`, `shell[:width]`, `lens[:radius]`, `lattice[:half_width]`,
-    /// `clusters[:count[,spread]]`, `duplicates[:copies]`.
+    /// `clusters[:count[,spread]]`, `duplicates[:copies]`, `tilted`.
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         let err = |reason: String| ParseFamilyError {
             input: s.to_string(),
@@ -430,9 +442,48 @@ pub fn generate_flat(family: &Family, dimension: usize, n: usize, seed: u64) -> 
                 out.extend_from_slice(&distinct[(j % m) * d..(j % m + 1) * d]);
             }
         }
+        Family::TiltedFaces => {
+            let rotation = rotation(&mut rng, d);
+            let mut p = vec![0.0; d];
+            for _ in 0..n {
+                for x in &mut p {
+                    *x = rng.uniform() - 0.5;
+                }
+                let face = rng.index(d);
+                p[face] = if rng.below(2) == 0 { -0.5 } else { 0.5 };
+                for row in rotation.chunks_exact(d) {
+                    out.push(row.iter().zip(&p).map(|(r, x)| r * x).sum());
+                }
+            }
+        }
     }
     debug_assert_eq!(out.len(), point_count(family, d, n) * d);
     out
+}
+
+/// A `d × d` rotation, row-major: Gram–Schmidt (twice over, for orthogonality to rounding) on
+/// rows of normal deviates, each row then made unit. A proper rotation or a reflection, as the
+/// deviates fall: either turns the cube's faces into general position, which is all
+/// [`Family::TiltedFaces`] needs.
+fn rotation(rng: &mut Rng, d: usize) -> Vec<f64> {
+    let mut rows: Vec<f64> = Vec::with_capacity(d * d);
+    while rows.len() < d * d {
+        let mut row: Vec<f64> = (0..d).map(|_| rng.normal()).collect();
+        for _ in 0..2 {
+            for done in rows.chunks_exact(d) {
+                let along: f64 = done.iter().zip(&row).map(|(a, b)| a * b).sum();
+                for (x, a) in row.iter_mut().zip(done) {
+                    *x -= along * a;
+                }
+            }
+        }
+        let length = row.iter().map(|x| x * x).sum::<f64>().sqrt();
+        // A row (nearly) in the span of the others has no direction left: draw it again.
+        if length > 1e-3 {
+            rows.extend(row.iter().map(|x| x / length));
+        }
+    }
+    rows
 }
 
 /// [`Family::Simplex`]: vertices, then points on the grid `2^−20` of the simplex.

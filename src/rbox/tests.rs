@@ -351,3 +351,41 @@ fn duplicates_are_exact_copies() {
         assert_eq!(rows.len(), distinct, "n={n}");
     }
 }
+
+#[test]
+fn tilted_faces_are_coplanar_only_up_to_rounding() {
+    for d in [2, 3, 5] {
+        let n = 600;
+        let points = generate_flat(&Family::TiltedFaces, d, n, 9);
+        assert_eq!(points.len(), n * d);
+        // The rotation is the generator's first draw: turn the points back with it.
+        let rotation = rotation(&mut Rng::new(9), d);
+        for i in 0..d {
+            for j in 0..d {
+                let dot: f64 = (0..d).map(|k| rotation[i * d + k] * rotation[j * d + k]).sum();
+                let want = if i == j { 1.0 } else { 0.0 };
+                assert!((dot - want).abs() <= 1e-15, "d = {d}: rows {i}, {j}: {dot}");
+            }
+        }
+        let mut faces: Vec<Vec<f64>> = vec![Vec::new(); 2 * d];
+        for x in points.chunks_exact(d) {
+            let back: Vec<f64> = (0..d)
+                .map(|j| (0..d).map(|i| rotation[i * d + j] * x[i]).sum())
+                .collect();
+            let (face, largest) = back
+                .iter()
+                .enumerate()
+                .fold((0, 0.0f64), |m, (j, v)| if v.abs() > m.1 { (j, v.abs()) } else { m });
+            // On a face, to the rounding of the rotation (there and back).
+            assert!((largest - 0.5).abs() <= 1e-15, "d = {d}: {back:?}");
+            let side = usize::from(back[face] > 0.0);
+            faces[2 * face + side].extend_from_slice(x);
+        }
+        for (k, face) in faces.iter().enumerate() {
+            assert!(face.len() >= 20 * d, "d = {d}: face {k} has few points");
+            // Exactly, the points of one face span the whole space: rounding moved them off
+            // their hyperplane (in 2-D, off their line).
+            assert_eq!(affine_rank(face, d), d, "d = {d}: face {k} is exactly flat");
+        }
+    }
+}

@@ -65,7 +65,7 @@ pub const GRASP_CANDIDATES: usize = 500;
 
 /// The names [`HullBenchConfig::families`] accepts: the `rbox` families' ([`Family::name`]),
 /// then `grid`, `wrenches` and `minkowski`.
-pub const FAMILY_NAMES: [&str; 12] = [
+pub const FAMILY_NAMES: [&str; 13] = [
     "cube",
     "sphere",
     "corners",
@@ -75,6 +75,7 @@ pub const FAMILY_NAMES: [&str; 12] = [
     "lattice",
     "clusters",
     "duplicates",
+    "tilted",
     "grid",
     "wrenches",
     "minkowski",
@@ -230,6 +231,7 @@ fn rbox_n(preset: Preset, family: &Family, d: usize) -> usize {
         Family::Simplex => [1_000_000, 100_000, 50_000, 50_000, 50_000, 50_000, 50_000],
         Family::IntegerLattice { .. } => [1_000_000, 100_000, 10_000, 5_000, 250, 120, 80],
         Family::Clusters { .. } => [1_000_000, 100_000, 10_000, 2_000, 200, 100, 60],
+        Family::TiltedFaces => [200_000, 100_000, 20_000, 5_000, 1_000, 300, 120],
     };
     let standard = by_dimension[d.clamp(2, 8) - 2];
     match preset {

@@ -847,6 +847,7 @@ fn bench_hull_quick_json_has_every_case() {
             "lattice",
             "clusters",
             "duplicates",
+            "tilted",
         ] {
             expected.push((family.to_string(), d));
         }

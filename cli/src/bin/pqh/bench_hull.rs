@@ -11,7 +11,8 @@ use std::io::Write;
 pub const LONG_ABOUT: &str = "\
 pqhull's full hull against Qhull on the same points, case by case, all generated in-process
 from --seed: the rbox families in 3-D to 6-D, and in 2-D, 7-D and 8-D when --dimensions asks
-(corners: cube corners and face centres; shell: a thin shell; clusters: near-duplicates), the
+(corners: cube corners and face centres; shell: a thin shell; clusters: near-duplicates;
+tilted: the faces of a rotated cube, coplanar only up to rounding), the
 integer grids {0, ..., m-1}^D, the raw wrenches of a force-closure random 4-contact bar grasp
 (8, 16, 32 edges; timed as Hull::try_new and as the GWS volume) and the materialised Minkowski
 sum of a 3-contact one (6, 8 edges; timed as plain Q-inf by the full method and as

@@ -34,7 +34,7 @@ pub struct TraceArgs {
     file: Option<PathBuf>,
 
     /// Generate the points from this family instead of reading a file: cube, sphere, corners,
-    /// simplex, shell, lens, lattice, clusters or duplicates
+    /// simplex, shell, lens, lattice, clusters, duplicates or tilted
     #[arg(long, value_name = "NAME")]
     family: Option<String>,
 
