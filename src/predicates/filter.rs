@@ -525,7 +525,7 @@ impl<const D: usize> FacetPlane<D> {
                     return orient(sign);
                 }
             }
-        } else if D >= 3 && finite {
+        } else if finite {
             let dd = self
                 .refined()
                 .dd
@@ -537,10 +537,7 @@ impl<const D: usize> FacetPlane<D> {
                 return sign;
             }
         }
-        if D >= 3
-            && finite
-            && let Some(sign) = self.exact_plane(vertices).and_then(|plane| plane.side(p))
-        {
+        if finite && let Some(sign) = self.exact_plane(vertices).and_then(|plane| plane.side(p)) {
             return sign;
         }
         exact::orientation(vertices, p)

@@ -890,6 +890,7 @@ fn double_double_stage_is_certified_and_decides_near_coplanar_points() {
         assert_eq!(decided, decidable, "D = {D}");
         double_double_case::<D>(200, 2f64.powi(-900));
     }
+    dims::<2>();
     dims::<3>();
     dims::<4>();
     dims::<5>();

@@ -362,7 +362,9 @@ fn tilted_faces_are_coplanar_only_up_to_rounding() {
         let rotation = rotation(&mut Rng::new(9), d);
         for i in 0..d {
             for j in 0..d {
-                let dot: f64 = (0..d).map(|k| rotation[i * d + k] * rotation[j * d + k]).sum();
+                let dot: f64 = (0..d)
+                    .map(|k| rotation[i * d + k] * rotation[j * d + k])
+                    .sum();
                 let want = if i == j { 1.0 } else { 0.0 };
                 assert!((dot - want).abs() <= 1e-15, "d = {d}: rows {i}, {j}: {dot}");
             }
@@ -372,10 +374,9 @@ fn tilted_faces_are_coplanar_only_up_to_rounding() {
             let back: Vec<f64> = (0..d)
                 .map(|j| (0..d).map(|i| rotation[i * d + j] * x[i]).sum())
                 .collect();
-            let (face, largest) = back
-                .iter()
-                .enumerate()
-                .fold((0, 0.0f64), |m, (j, v)| if v.abs() > m.1 { (j, v.abs()) } else { m });
+            let (face, largest) = back.iter().enumerate().fold((0, 0.0f64), |m, (j, v)| {
+                if v.abs() > m.1 { (j, v.abs()) } else { m }
+            });
             // On a face, to the rounding of the rotation (there and back).
             assert!((largest - 0.5).abs() <= 1e-15, "d = {d}: {back:?}");
             let side = usize::from(back[face] > 0.0);
