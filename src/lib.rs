@@ -24,15 +24,16 @@
 //! assert!((result.signed_distance - 1.0).abs() < 1e-12);
 //! # Ok::<(), pqhull::HullError>(())
 //! ```
-// `deny`, not `forbid`: two calls are allowed, each a run-time dispatch to a version of an
+// `deny`, not `forbid`: three calls are allowed, each a run-time dispatch to a version of an
 // expansion compiled with target features the processor was just found to have (their
 // intrinsics take no pointer and need no `unsafe`; the results are the same to the last bit):
 // the double-double plane's, with fused multiply-adds and AVX (predicates/double_double.rs,
-// `dd_minors`; in 6-D its four-lane form, `double_double/lanes.rs`), and the `f64` filter's,
-// with AVX (predicates/minors.rs, `tracked_minors`). Measured: the raw wrench hull at 4 × 16 took
-// 11 % less time with the fused products and 6.4 % fewer instructions again with the lanes; the
-// 6-D sphere 17.7 % fewer instructions with the filter's minors in AVX (docs/benchmarks.md).
-// Nothing else may be unsafe.
+// `dd_minors`; in 6-D its four-lane form, `double_double/lanes.rs`), the same plane's side
+// test with fused products (`DdPlane::evaluate`), and the `f64` filter's, with AVX
+// (predicates/minors.rs, `tracked_minors`). Measured: the raw wrench hull at 4 × 16 took 11 %
+// less time with the fused products and 6.4 % fewer instructions again with the lanes; the 6-D
+// sphere 17.7 % fewer instructions with the filter's minors in AVX; the side test's fused
+// products: docs/benchmarks.md, "Nearly coplanar faces". Nothing else may be unsafe.
 #![deny(unsafe_code)]
 
 pub mod geometry;

@@ -578,9 +578,19 @@ impl<const D: usize> FacetPlane<D> {
             permanent * pow2(half) * pow2(-units - half) < TWO_52 / 2.0
         };
         // The grid of all the entries is no coarser than `p`'s alone, so a permanent too large
-        // in `p`'s units is too large in theirs: a rejection in D bit scans, which is every
-        // slow test on raw floating-point data (their lowest bits lie near 2^-53 of the largest).
-        let own = grid_exponent(p.iter());
+        // in `p`'s units is too large in theirs. Nor is it coarser than any one coordinate's,
+        // and `fits` only fails more on a finer grid (more units; below the range too) once
+        // `g·D ≤ 1000`: so the first such coordinate whose own grid does not fit answers, and
+        // every slow test on raw floating-point data (lowest bits near 2^-53 of the largest)
+        // is turned away after one bit scan rather than D.
+        let mut own = i32::MAX;
+        for &x in p.iter().filter(|&&x| x != 0.0) {
+            let g = exact::lowest_bit_exponent(x);
+            if g.saturating_mul(D as i32) <= 1000 && !fits(g) {
+                return false;
+            }
+            own = own.min(g);
+        }
         if !fits(own) {
             return false;
         }

@@ -121,7 +121,7 @@ pub(in crate::predicates) fn tracked_minors<const D: usize>(
 ) -> [Tracked; D] {
     #[cfg(target_arch = "x86_64")]
     if D >= 4 && std::arch::is_x86_feature_detected!("avx") {
-        // One of the library's two `unsafe` calls (lib.rs says why they are allowed).
+        // One of the library's three `unsafe` calls (lib.rs says why they are allowed).
         #[allow(unsafe_code)]
         // SAFETY: `tracked_minors_avx` only requires the `avx` target feature, which the
         // processor was just found to have.
