@@ -440,7 +440,10 @@ impl<const D: usize> Hull<D> {
             Some(&flat) if flat != NO_FLAT => Some(flat),
             _ => None,
         };
-        for &id in candidates {
+        // The candidates left undecided, by position (the first 64; past them the exact pass
+        // asks the filter again): the exact pass tests only those.
+        let mut open = 0u64;
+        for (k, &id) in candidates.iter().enumerate() {
             let facet = &self.facets[id.index()];
             if flat.is_some_and(|flat| facet.flats.contains(&flat)) {
                 continue; // exactly on the plane
@@ -466,16 +469,28 @@ impl<const D: usize> Hull<D> {
                 // Undecided unless certainly behind: also when the value is NaN (coordinates so
                 // large, unscalable, that the floating-point products overflow).
                 undecided = true;
+                if k < 64 {
+                    open |= 1 << k;
+                }
             }
         }
         if best.is_none() && undecided {
             // Only the exact path can tell; the first facet it puts the point beyond will do.
-            for &id in candidates {
+            for (k, &id) in candidates.iter().enumerate() {
                 let facet = &self.facets[id.index()];
-                let (value, bound) = facet.filter.evaluate(&point);
-                if (value.abs() <= bound || value.is_nan())
-                    && self.side_undecided(id, &point) == Sign::Positive
-                {
+                let value = if k < 64 {
+                    if open & (1 << k) == 0 {
+                        continue;
+                    }
+                    facet.filter.value(&point)
+                } else {
+                    let (value, bound) = facet.filter.evaluate(&point);
+                    if !(value.abs() <= bound || value.is_nan()) {
+                        continue;
+                    }
+                    value
+                };
+                if self.side_undecided(id, &point) == Sign::Positive {
                     best = Some((id, value * facet.inv_norm, value.max(0.0)));
                     break;
                 }

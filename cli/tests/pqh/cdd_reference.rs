@@ -2,7 +2,7 @@
 //! on the caller's data where Qhull is no reference: the raw grasp sets of `pqh bench hull`,
 //! whose contacts' wrenches are coplanar only up to rounding (docs/benchmarks.md, "An exact
 //! reference: cddlib"), and on degenerate families (a grid, clusters, a lattice, cube corners, a
-//! thin shell). The comparison is `pqhull_cli::bench::cdd::compare`: every input point
+//! thin shell, the faces of a rotated cube). The comparison is `pqhull_cli::bench::cdd::compare`: every input point
 //! evaluated exactly against every one of cddlib's inequalities, every simplex of pqhull's hull
 //! on one of cddlib's facets, every such facet holding a simplex.
 //!
@@ -82,4 +82,24 @@ fn cddlib_and_pqhull_agree_on_degenerate_families() {
     assert_eq!(same_as_cddlib(&corners, "corners-6d").cdd_facets, 12);
     let shell = Family::ThinShell { width: 1e-13 };
     same_as_cddlib(&generate::<4>(&shell, 200, 1), "shell-4d");
+    // The faces of a rotated cube, coplanar only up to rounding: the exact hull has a vertex
+    // for every face point that rounding put outside, and Qhull (with the `qhull` feature)
+    // merges each face into far fewer simplices than the exact hull has facets.
+    fn tilted<const D: usize>(n: usize, name: &str) {
+        let points = generate::<D>(&Family::TiltedFaces, n, 1);
+        let agreement = same_as_cddlib(&points, name);
+        // Far more facets than the cube's 2D: the faces are not flat.
+        assert!(agreement.cdd_facets > 10 * D, "{name}: {agreement:?}");
+        #[cfg(feature = "qhull")]
+        {
+            let qhull = pqhull::qhull_baseline::qhull_facet_count(&points).unwrap();
+            assert!(
+                qhull < agreement.cdd_facets,
+                "{name}: Qhull {qhull} simplices, the exact hull {} facets",
+                agreement.cdd_facets
+            );
+        }
+    }
+    tilted::<3>(400, "tilted-3d");
+    tilted::<4>(200, "tilted-4d");
 }
