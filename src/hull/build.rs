@@ -440,10 +440,13 @@ impl<const D: usize> Hull<D> {
             Some(&flat) if flat != NO_FLAT => Some(flat),
             _ => None,
         };
-        // The candidates left undecided, by position (the first 64; past them the exact pass
-        // asks the filter again): the exact pass tests only those.
-        let mut open = 0u64;
-        for (k, &id) in candidates.iter().enumerate() {
+        // The candidates left undecided, in order (the first `OPEN`; past them the exact pass
+        // asks the filter again): the exact pass tests only those. Kept off the common path
+        // (a position counter in the loop cost the 3-D cube 6 % more instructions).
+        const OPEN: usize = 8;
+        let mut open = [FacetId::NONE; OPEN];
+        let mut opened = 0;
+        for &id in candidates {
             let facet = &self.facets[id.index()];
             if flat.is_some_and(|flat| facet.flats.contains(&flat)) {
                 continue; // exactly on the plane
@@ -469,28 +472,30 @@ impl<const D: usize> Hull<D> {
                 // Undecided unless certainly behind: also when the value is NaN (coordinates so
                 // large, unscalable, that the floating-point products overflow).
                 undecided = true;
-                if k < 64 {
-                    open |= 1 << k;
+                if opened < OPEN {
+                    open[opened] = id;
                 }
+                opened += 1;
             }
         }
         if best.is_none() && undecided {
             // Only the exact path can tell; the first facet it puts the point beyond will do.
-            for (k, &id) in candidates.iter().enumerate() {
+            let undecided_only = opened <= OPEN;
+            let tested = if undecided_only {
+                &open[..opened]
+            } else {
+                candidates
+            };
+            for &id in tested {
                 let facet = &self.facets[id.index()];
-                let value = if k < 64 {
-                    if open & (1 << k) == 0 {
-                        continue;
-                    }
-                    facet.filter.value(&point)
+                let (value, bound) = if undecided_only {
+                    (facet.filter.value(&point), f64::INFINITY)
                 } else {
-                    let (value, bound) = facet.filter.evaluate(&point);
-                    if !(value.abs() <= bound || value.is_nan()) {
-                        continue;
-                    }
-                    value
+                    facet.filter.evaluate(&point)
                 };
-                if self.side_undecided(id, &point) == Sign::Positive {
+                if (value.abs() <= bound || value.is_nan())
+                    && self.side_undecided(id, &point) == Sign::Positive
+                {
                     best = Some((id, value * facet.inv_norm, value.max(0.0)));
                     break;
                 }
