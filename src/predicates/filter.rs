@@ -103,10 +103,9 @@ pub struct FacetPlane<const D: usize> {
 /// The stages behind the filter, each built on first use.
 #[derive(Debug, Default)]
 struct Refined<const D: usize> {
-    /// The double-double plane (D ≥ 3); `None` inside when a vertex coordinate is outside
-    /// `[−1, 1]`.
+    /// The double-double plane; `None` inside when a vertex coordinate is outside `[−1, 1]`.
     dd: OnceLock<Option<DdPlane<D>>>,
-    /// Exact integer cofactors (D ≥ 3); `None` inside when the vertices do not fit (then every
+    /// Exact integer cofactors; `None` inside when the vertices do not fit (then every
     /// exact test computes a full determinant). Inline (about 1 KB in 6-D), so that a plane
     /// allocates once whatever the stages it needs.
     exact: OnceLock<Option<ExactPlane<D>>>,
@@ -514,16 +513,14 @@ impl<const D: usize> FacetPlane<D> {
             if -value > bound {
                 return orient(Sign::Negative);
             }
-            if D >= 3 {
-                let dd = rebased
-                    .dd
-                    .get_or_init(|| DdPlane::new(&rebased.vertices, &rebased.plane, true));
-                if let Some(sign) = dd
-                    .as_ref()
-                    .and_then(|plane| plane.sign(&rebased.plane.base, p, rebased.plane.slack))
-                {
-                    return orient(sign);
-                }
+            let dd = rebased
+                .dd
+                .get_or_init(|| DdPlane::new(&rebased.vertices, &rebased.plane, true));
+            if let Some(sign) = dd
+                .as_ref()
+                .and_then(|plane| plane.sign(&rebased.plane.base, p, rebased.plane.slack))
+            {
+                return orient(sign);
             }
         } else if finite {
             let dd = self
