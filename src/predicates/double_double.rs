@@ -453,6 +453,19 @@ impl<const D: usize> DdPlane<D> {
 mod tests {
     use super::*;
 
+    /// Fails on an x86-64 processor without AVX and FMA, where the dispatch under test would be
+    /// Dekker's `what` itself and a comparison with Dekker's would be vacuous.
+    #[cfg_attr(not(target_arch = "x86_64"), allow(unused_variables))]
+    fn assert_the_processor_fuses(what: &str) {
+        #[cfg(target_arch = "x86_64")]
+        assert!(
+            std::arch::is_x86_feature_detected!("fma")
+                && std::arch::is_x86_feature_detected!("avx"),
+            "this processor lacks AVX or FMA: the dispatch would compare Dekker's {what} with \
+             itself"
+        );
+    }
+
     /// `first` is `accumulate` onto zero, to the last bit of both parts (the minors' claim that
     /// skipping the addition changes no number), on terms of every magnitude and sign.
     #[test]
@@ -484,13 +497,7 @@ mod tests {
     /// rather than pass with half its comparisons vacuous.
     #[test]
     fn fused_products_give_the_same_minors_bit_for_bit() {
-        #[cfg(target_arch = "x86_64")]
-        assert!(
-            std::arch::is_x86_feature_detected!("fma")
-                && std::arch::is_x86_feature_detected!("avx"),
-            "this processor lacks AVX or FMA: the dispatch would compare Dekker's minors with \
-             themselves"
-        );
+        assert_the_processor_fuses("minors");
         fn check<const D: usize>(rng: &mut crate::geometry::Rng) {
             for case in 0..300 {
                 let rows: [[Dd; D]; D] = std::array::from_fn(|_| {
@@ -546,13 +553,7 @@ mod tests {
     /// Dekker's evaluation with itself.
     #[test]
     fn fused_evaluation_is_dekker_s_bit_for_bit() {
-        #[cfg(target_arch = "x86_64")]
-        assert!(
-            std::arch::is_x86_feature_detected!("fma")
-                && std::arch::is_x86_feature_detected!("avx"),
-            "this processor lacks AVX or FMA: the dispatch would compare Dekker's evaluation \
-             with itself"
-        );
+        assert_the_processor_fuses("evaluation");
         fn check<const D: usize>(rng: &mut crate::geometry::Rng) {
             for case in 0..400 {
                 let mut vertices: [[f64; D]; D] =
