@@ -535,7 +535,7 @@ impl<const D: usize> Hull<D> {
     /// filter is the facet's, so it would be undecided there too).
     fn side_undecided(&self, id: FacetId, x: &[f64; D]) -> Sign {
         let (plane, vertices) = self.exact_plane_of(id);
-        plane.side_undecided(x, &self.coords(vertices))
+        plane.side_undecided(x, || self.coords(vertices))
     }
 
     /// Exact side of input point `p` relative to facet `id`: [`side`](Self::side), or `Zero` at

@@ -899,6 +899,91 @@ fn double_double_stage_is_certified_and_decides_near_coplanar_points() {
     dims::<8>();
 }
 
+/// One plane asked about many points, as a hull asks the planes of a face: once the first test
+/// has built the double-double stage, later ones may take the built stages' shortcut
+/// (`side_on_built_stages`), which must answer as the exact determinant does, and must leave to
+/// the full route every point whose `f64` value is exact (grid points) or that the
+/// double-double value cannot decide (points on the plane). In 2-D to 6-D, on raw vertices
+/// (points within 2^-40 … 2^-110 of the plane, and the vertices themselves) and on vertices on
+/// a coarse grid (grid points on and off the plane).
+#[test]
+fn the_built_stages_shortcut_answers_as_the_exact_determinant() {
+    fn case<const D: usize>() {
+        let mut rng = crate::geometry::Rng::new(0x5eed ^ D as u64);
+        // Raw: the plane's vertices and points near it, all rounded.
+        let mut v = [[0.0; D]; D];
+        for row in v.iter_mut() {
+            for x in row.iter_mut() {
+                *x = rng.uniform_in(-0.5, 0.5);
+            }
+        }
+        let plane = FacetPlane::new(&v);
+        let near = |rng: &mut crate::geometry::Rng, k: usize| {
+            let mut p = v[0];
+            for r in 1..D {
+                let l = rng.uniform_in(-0.5, 1.0);
+                for i in 0..D {
+                    p[i] += l * (v[r][i] - v[0][i]);
+                }
+            }
+            let offset = 2f64.powi(-40 - (k % 71) as i32);
+            p.map(|x| (x + rng.uniform_in(-1.0, 1.0) * offset).clamp(-1.0, 1.0))
+        };
+        let (mut shortcut, mut asked) = (0, 0);
+        for k in 0..400 {
+            let p = if k % 10 == 9 {
+                v[k % D]
+            } else {
+                near(&mut rng, k)
+            };
+            let want = sign_of(&reference_det(&v, &p));
+            if plane.filter_sign(&p).is_some() {
+                continue;
+            }
+            asked += 1;
+            if let Some(sign) = plane.side_on_built_stages(&p) {
+                assert_eq!(sign, want, "shortcut, D = {D}: {v:?}, {p:?}");
+                assert!(k % 10 != 9, "D = {D}: a vertex decided off the plane");
+                shortcut += 1;
+            }
+            assert_eq!(plane.side(&p, || v), want, "side, D = {D}: {v:?}, {p:?}");
+        }
+        assert!(
+            shortcut * 10 >= asked * 7,
+            "D = {D}: the shortcut answered {shortcut} of {asked} undecided points"
+        );
+        // A grid: vertices and points on multiples of 2^-4, where the `f64` value is exact and
+        // the shortcut must stand aside, even with its stage built (by a raw point first).
+        let grid =
+            |rng: &mut crate::geometry::Rng| [0.0; D].map(|_| (rng.below(17) as f64 - 8.0) / 16.0);
+        let g = [0.0; D].map(|_| [0.0; D]).map(|_| grid(&mut rng));
+        let plane = FacetPlane::new(&g);
+        let raw = near(&mut rng, 3).map(|x| x * 0.999);
+        assert_eq!(plane.side(&raw, || g), sign_of(&reference_det(&g, &raw)));
+        for k in 0..200 {
+            let p = if k % 2 == 0 { g[k % D] } else { grid(&mut rng) };
+            let want = sign_of(&reference_det(&g, &p));
+            if plane.filter_sign(&p).is_none() {
+                assert_eq!(
+                    plane.side_on_built_stages(&p),
+                    None,
+                    "D = {D}: {g:?}, {p:?}"
+                );
+            }
+            assert_eq!(
+                plane.side(&p, || g),
+                want,
+                "grid side, D = {D}: {g:?}, {p:?}"
+            );
+        }
+    }
+    case::<2>();
+    case::<3>();
+    case::<4>();
+    case::<5>();
+    case::<6>();
+}
+
 /// `refined_normal_direction` on slivers (the last vertex within 2^-8 … 2^-60 of the others'
 /// affine hull, so the `f64` cofactors cancel): every component within the documented `2^-51`
 /// of the largest (plus the normalisation's roundings) of the exact rational cofactors. The
