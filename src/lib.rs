@@ -29,7 +29,7 @@
 // intrinsics take no pointer and need no `unsafe`; the results are the same to the last bit):
 // the double-double plane's, with fused multiply-adds and AVX (predicates/double_double.rs,
 // `dd_minors`; in 6-D its four-lane form, `double_double/lanes.rs`), the same plane's side
-// test with fused products (`DdPlane::evaluate`), and the `f64` filter's, with AVX
+// test with fused products (`DdPlane::evaluate_then`), and the `f64` filter's, with AVX
 // (predicates/minors.rs, `tracked_minors`). Measured: the raw wrench hull at 4 × 16 took 11 %
 // less time with the fused products and 6.4 % fewer instructions again with the lanes; the 6-D
 // sphere 17.7 % fewer instructions with the filter's minors in AVX; the side test's fused
