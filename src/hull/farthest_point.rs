@@ -1,6 +1,8 @@
 //! `FarthestPoint`: plain QuickHull, run to completion.
 
 use super::{FacetId, Hull, Step, Strategy, TraceContext, TraceReason};
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
 
 /// Plain QuickHull to completion: every facet with a non-empty outside set is expanded with its
 /// farthest point until no outside set remains. The result is the full hull, and the baseline every
@@ -22,18 +24,49 @@ use super::{FacetId, Hull, Step, Strategy, TraceContext, TraceReason};
 /// ```
 #[derive(Clone, Debug, Default)]
 pub struct FarthestPoint {
-    /// Facets that may still have outside points (stale ids are skipped), expanded oldest first:
-    /// breadth-first order (as Qhull's facet list) creates 5–30 % fewer facets than depth-first
-    /// in 3-D to 6-D (measured with `examples/compare_qhull.rs`).
-    pending: std::collections::VecDeque<FacetId>,
+    /// Facets with outside points, the one whose farthest point is farthest expanded first
+    /// (ties: the oldest). Against the oldest first (breadth first, as Qhull's facet list,
+    /// itself 5–30 % fewer facets than depth first), this cut the instructions of
+    /// `pqh bench hull`'s rows by up to half (the 6-D cube corners), most by 4–25 %, and raised
+    /// none by more than 0.4 % (docs/benchmarks.md, "The farthest pending facet first"): the
+    /// far points, expanded first, put the near ones inside before they are moved again.
+    pending: BinaryHeap<Pending>,
     /// Whether the first step (which starts the build's first phase) has run.
     begun: bool,
 }
+
+/// A pending facet: the distance of its farthest outside point (the bits of a non-negative
+/// `f64`, which order as the numbers do), its serial reversed (so that of equal distances the
+/// oldest comes first, and so that an entry whose slot was since reused is known), its id.
+type Pending = (u64, Reverse<u64>, FacetId);
 
 impl FarthestPoint {
     /// A new full-hull strategy.
     pub fn new() -> Self {
         Self::default()
+    }
+
+    /// Queues facet `id` if it has outside points, keyed by the farthest one's distance (the
+    /// orientation value the partition kept, times the facet's inverse norm: no point is read).
+    fn queue<const D: usize>(&mut self, hull: &Hull<D>, id: FacetId) {
+        let facet = hull.facet(id);
+        if let Some((_, value)) = facet.farthest {
+            let distance = value * facet.inv_norm;
+            // A NaN (an infinite inverse norm times zero) orders as the nearest.
+            let key = if distance > 0.0 {
+                distance.to_bits()
+            } else {
+                0
+            };
+            self.pending.push((key, Reverse(facet.serial), id));
+        }
+    }
+
+    /// Queues every live facet with outside points.
+    fn queue_all<const D: usize>(&mut self, hull: &Hull<D>) {
+        for (id, _) in hull.facets() {
+            self.queue(hull, id);
+        }
     }
 }
 
@@ -43,41 +76,32 @@ impl<const D: usize> Strategy<D> for FarthestPoint {
     fn start(&mut self, hull: &Hull<D>) {
         self.pending.clear();
         self.begun = false;
-        self.pending.extend(
-            hull.facets()
-                .filter(|(_, f)| f.outside_len() > 0)
-                .map(|(id, _)| id),
-        );
+        self.queue_all(hull);
     }
 
     fn step(&mut self, hull: &mut Hull<D>) -> Step {
-        // A stale id (its slot since reused) is harmless here: any live facet with outside points
-        // is a valid facet to expand.
         if !self.begun {
             self.begun = true;
             hull.begin_full_build();
         }
-        while let Some(id) = self.pending.pop_front() {
+        while let Some((_, Reverse(serial), id)) = self.pending.pop() {
+            // A removed facet, or its slot reused by another (queued under its own key).
+            if !hull.is_current(id, serial) {
+                continue;
+            }
             if hull.is_tracing() {
                 trace_choice(hull, id);
             }
             if hull.expand(id) {
-                self.pending.extend(
-                    hull.last_created()
-                        .iter()
-                        .copied()
-                        .filter(|&c| hull.facet(c).outside_len() > 0),
-                );
+                for &created in hull.last_created() {
+                    self.queue(hull, created);
+                }
                 return Step::Continue;
             }
         }
         // The first phase kept coplanar facets: the second builds on its vertices (`coplanar.rs`).
         if hull.end_first_phase() {
-            self.pending.extend(
-                hull.facets()
-                    .filter(|(_, f)| f.outside_len() > 0)
-                    .map(|(id, _)| id),
-            );
+            self.queue_all(hull);
             return Step::Continue;
         }
         hull.trace_stop(None, FarthestReason::Complete);
@@ -100,16 +124,16 @@ fn trace_choice<const D: usize>(hull: &mut Hull<D>, id: FacetId) {
     let facet = hull.facet(id);
     if let Some(p) = facet.farthest_point().filter(|_| facet.is_alive()) {
         let distance = hull.signed_distance(id, &hull.point(p));
-        hull.trace_choice(id, FarthestReason::Oldest { distance });
+        hull.trace_choice(id, FarthestReason::Farthest { distance });
     }
 }
 
 /// The steps of [`FarthestPoint`] a trace records ([`TraceReason`]).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum FarthestReason {
-    /// The oldest pending facet with outside points (breadth first): its farthest outside
-    /// point is added.
-    Oldest {
+    /// The pending facet whose farthest outside point is the farthest of all (of equal
+    /// distances, the oldest facet): that point is added.
+    Farthest {
         /// That point's floating-point distance beyond the facet's plane.
         distance: f64,
     },
@@ -120,15 +144,15 @@ pub enum FarthestReason {
 impl TraceReason for FarthestReason {
     fn code(&self) -> &'static str {
         match self {
-            FarthestReason::Oldest { .. } => "oldest-pending",
+            FarthestReason::Farthest { .. } => "farthest-pending",
             FarthestReason::Complete => "complete",
         }
     }
 
     fn describe(&self) -> String {
         match self {
-            FarthestReason::Oldest { .. } => "oldest pending facet with outside points \
-                                              (breadth-first); its farthest outside point is added"
+            FarthestReason::Farthest { .. } => "pending facet whose farthest outside point is \
+                                                the farthest of all; that point is added"
                 .to_string(),
             FarthestReason::Complete => {
                 "no outside set remains: every point is inside, the hull is complete".to_string()
@@ -138,7 +162,7 @@ impl TraceReason for FarthestReason {
 
     fn key(&self) -> Option<(&'static str, f64)> {
         match self {
-            FarthestReason::Oldest { distance } => {
+            FarthestReason::Farthest { distance } => {
                 Some(("distance of its farthest outside point", *distance))
             }
             FarthestReason::Complete => None,

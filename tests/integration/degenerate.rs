@@ -244,7 +244,9 @@ fn two_phases<const D: usize>(hull: &Hull<D>) -> bool {
 
 /// A full build keeps coplanar facets in a first phase; when that leaves points on faces as
 /// vertices, a second phase builds on the extreme vertices alone. Cube corners with face centres
-/// and the 5-D grid {0, …, 3}^5 take the second phase; the answer is still the corners.
+/// and the 6-D grid {0, 1, 2}^6 take the second phase; the answer is still the corners. (The 5-D
+/// grid {0, …, 3}^5 took it too while pending facets were expanded oldest first; farthest
+/// first, its corners come first and one phase suffices: its answer is checked all the same.)
 #[test]
 fn the_second_phase_leaves_the_corners() {
     fn corners<const D: usize>(n: usize) {
@@ -258,9 +260,15 @@ fn the_second_phase_leaves_the_corners() {
     corners::<4>(100);
     corners::<5>(400);
     corners::<6>(400);
+    let points = grid::<6>(3);
+    let hull = Hull::try_new(&points).unwrap();
+    assert!(two_phases(&hull), "6-D grid: one phase");
+    hull.check().unwrap();
+    let vertices = hull.vertex_indices();
+    assert_eq!(vertices.len(), 64);
+    assert!(vertices.iter().all(|&v| is_corner(&points[v], 0.0, 2.0)));
     let points = grid::<5>(4);
     let hull = Hull::try_new(&points).unwrap();
-    assert!(two_phases(&hull), "5-D grid: one phase");
     let vertices = hull.vertex_indices();
     assert_eq!(vertices.len(), 32);
     assert!(vertices.iter().all(|&v| is_corner(&points[v], 0.0, 3.0)));
@@ -393,3 +401,4 @@ fn vertices_equal_the_exact_extreme_points() {
     eprintln!("{second_phases} of 24 builds ran a second phase");
     assert!(second_phases >= 3, "{second_phases} second phases");
 }
+
