@@ -135,10 +135,12 @@ struct Refined<const D: usize> {
     /// rows) or [`REBUILT`] (`rebased` holds them). A plain flag rather than a `OnceLock`, whose
     /// initialisation cost 1 % of a raw wrench hull for the common answer, none.
     rebase: AtomicU8,
-    /// The exponent of the coarsest power-of-two grid holding every vertex coordinate (see
-    /// [`FacetPlane::value_is_exact`]), kept with the double-double stage so that a later side
-    /// test on this plane needs no vertex (see [`FacetPlane::side_on_built_stages`]).
-    vertex_grid: OnceLock<i32>,
+    /// The exponent of the coarsest power-of-two grid holding the base vertex's coordinates:
+    /// no finer than the grid of all the vertices (see [`FacetPlane::value_is_exact`]), so a
+    /// permanent that does not fit it fits no grid of theirs. Kept with the double-double
+    /// stage, for [`FacetPlane::side_on_built_stages`]; D bit scans, where the grid of every
+    /// vertex costs D² (on the tilted family in 5-D that was 7 % of the hull's instructions).
+    base_grid: OnceLock<i32>,
 }
 
 const NO_ORDER: u8 = 1;
@@ -151,7 +153,7 @@ impl<const D: usize> Clone for Refined<D> {
             exact: self.exact.clone(),
             rebased: self.rebased.clone(),
             rebase: AtomicU8::new(self.rebase.load(Ordering::Relaxed)),
-            vertex_grid: self.vertex_grid.clone(),
+            base_grid: self.base_grid.clone(),
         }
     }
 }
@@ -538,9 +540,9 @@ impl<const D: usize> FacetPlane<D> {
     /// What [`side_beyond_filter`](Self::side_beyond_filter) would answer, when its answer is
     /// sure to come from the double-double plane and this plane has built it: its route is the
     /// plain one (no rebuilt rows), and the `f64` value is not exact, because `p`'s permanent
-    /// does not fit even the vertices' grid (every grid holding `p` too is as fine or finer,
-    /// and fits less). `None` otherwise, and when the double-double value does not decide:
-    /// the full route then goes on from the start.
+    /// does not fit even the base vertex's grid (every grid holding all the vertices and `p`
+    /// is as fine or finer, and fits less). `None` otherwise, and when the double-double value
+    /// does not decide: the full route then goes on from the start.
     ///
     /// Why: on nearly coplanar input (a face sampled densely in a general pose) most points
     /// meet the filter's limit at every expansion near their face, and the same few planes
@@ -554,10 +556,10 @@ impl<const D: usize> FacetPlane<D> {
             return None;
         }
         let dd = refined.dd.get()?.as_ref()?;
-        let &vertex_grid = refined.vertex_grid.get()?;
+        let &base_grid = refined.base_grid.get()?;
         // A NaN permanent (a coordinate not finite) fits nothing: the double-double plane
         // then refuses `p` (it takes only coordinates in [−1, 1]).
-        if vertex_grid == i32::MAX || permanent_fits::<D>(self.permanent(p), vertex_grid) {
+        if base_grid == i32::MAX || permanent_fits::<D>(self.permanent(p), base_grid) {
             return None;
         }
         dd.sign(&self.base, p, self.slack)
@@ -597,8 +599,8 @@ impl<const D: usize> FacetPlane<D> {
         } else if finite {
             let refined = self.refined();
             refined
-                .vertex_grid
-                .get_or_init(|| grid_exponent(vertices.iter().flatten()));
+                .base_grid
+                .get_or_init(|| grid_exponent(self.base.iter()));
             let dd = refined
                 .dd
                 .get_or_init(|| DdPlane::new(vertices, self, false));
@@ -647,12 +649,8 @@ impl<const D: usize> FacetPlane<D> {
         if !fits(own) {
             return false;
         }
-        // Computed here, on the slow path, unless the plane kept it: it costs D² bit scans.
-        let vertex_grid = match self.refined.get().and_then(|r| r.vertex_grid.get()) {
-            Some(&g) => g,
-            None => grid_exponent(vertices.iter().flatten()),
-        };
-        fits(own.min(vertex_grid))
+        // Computed here, on the slow path, rather than cached per facet: it costs D² bit scans.
+        fits(own.min(grid_exponent(vertices.iter().flatten())))
     }
 
     /// The permanent of `det[v1 − v0; …; p − v0]` (the determinant with every product's
