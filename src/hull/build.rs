@@ -458,15 +458,15 @@ impl<const D: usize> Hull<D> {
             };
             if value > bound {
                 let distance = value * facet.inv_norm;
-                if best.is_none_or(|(_, d, _)| distance > d) {
-                    best = Some((id, distance, value));
-                }
                 // Unless the strategy asks for the farthest, the first facet the point is
                 // certainly beyond takes it (Qhull's default too): testing every candidate
                 // doubled the partition's cost on input whose points mostly end up inside, as
                 // cube corners with interior points.
                 if self.partition != Partition::Farthest {
-                    break;
+                    return self.push_outside(p, Some((id, distance, value)));
+                }
+                if best.is_none_or(|(_, d, _)| distance > d) {
+                    best = Some((id, distance, value));
                 }
             } else if value >= -bound || value.is_nan() {
                 // Undecided unless certainly behind: also when the value is NaN (coordinates so

@@ -2,7 +2,7 @@
 
 use super::{FacetId, Hull, Step, Strategy, TraceContext, TraceReason};
 use std::cmp::Reverse;
-use std::collections::BinaryHeap;
+use std::collections::{BinaryHeap, VecDeque};
 
 /// Plain QuickHull to completion: every facet with a non-empty outside set is expanded with its
 /// farthest point until no outside set remains. The result is the full hull, and the baseline every
@@ -24,13 +24,18 @@ use std::collections::BinaryHeap;
 /// ```
 #[derive(Clone, Debug, Default)]
 pub struct FarthestPoint {
-    /// Facets with outside points, the one whose farthest point is farthest expanded first
-    /// (ties: the oldest). Against the oldest first (breadth first, as Qhull's facet list,
-    /// itself 5–30 % fewer facets than depth first), this cut the instructions of
-    /// `pqh bench hull`'s rows by up to half (the 6-D cube corners), most by 4–25 %, and raised
-    /// none by more than 0.4 % (docs/benchmarks.md, "The farthest pending facet first"): the
-    /// far points, expanded first, put the near ones inside before they are moved again.
+    /// Facets with outside points, in 3-D and up: the one whose farthest point is farthest
+    /// expanded first (ties: the oldest). Against the oldest first (breadth first, as Qhull's
+    /// facet list, itself 5–30 % fewer facets than depth first), this cut the instructions of
+    /// `pqh bench hull`'s 3-D to 8-D rows by up to two thirds (the 6-D lattice), most by 5–25 %
+    /// (docs/benchmarks.md, "The farthest pending facet first"): the far points, expanded first,
+    /// put the near ones inside before they are moved again.
     pending: BinaryHeap<Pending>,
+    /// Facets with outside points, in 2-D: the oldest first (breadth first). There the order
+    /// changed no row's work by more than 0.2 % but the heap's cost, which is not small beside
+    /// an expansion of two new edges (the 2-D sphere, every point a vertex: 6.5 % more
+    /// instructions). Each with its serial, as in `pending`.
+    oldest_first: VecDeque<(u64, FacetId)>,
     /// Whether the first step (which starts the build's first phase) has run.
     begun: bool,
 }
@@ -50,7 +55,11 @@ impl FarthestPoint {
     /// orientation value the partition kept, times the facet's inverse norm: no point is read).
     fn queue<const D: usize>(&mut self, hull: &Hull<D>, id: FacetId) {
         let facet = hull.facet(id);
-        if let Some((_, value)) = facet.farthest {
+        if D == 2 {
+            if facet.outside_len() > 0 {
+                self.oldest_first.push_back((facet.serial, id));
+            }
+        } else if let Some((_, value)) = facet.farthest {
             let distance = value * facet.inv_norm;
             // A NaN (an infinite inverse norm times zero) orders as the nearest.
             let key = if distance > 0.0 {
@@ -59,6 +68,17 @@ impl FarthestPoint {
                 0
             };
             self.pending.push((key, Reverse(facet.serial), id));
+        }
+    }
+
+    /// The next pending facet and its serial when queued.
+    fn next<const D: usize>(&mut self) -> Option<(u64, FacetId)> {
+        if D == 2 {
+            self.oldest_first.pop_front()
+        } else {
+            self.pending
+                .pop()
+                .map(|(_, Reverse(serial), id)| (serial, id))
         }
     }
 
@@ -75,6 +95,7 @@ impl<const D: usize> Strategy<D> for FarthestPoint {
 
     fn start(&mut self, hull: &Hull<D>) {
         self.pending.clear();
+        self.oldest_first.clear();
         self.begun = false;
         self.queue_all(hull);
     }
@@ -84,7 +105,7 @@ impl<const D: usize> Strategy<D> for FarthestPoint {
             self.begun = true;
             hull.begin_full_build();
         }
-        while let Some((_, Reverse(serial), id)) = self.pending.pop() {
+        while let Some((serial, id)) = self.next::<D>() {
             // A removed facet, or its slot reused by another (queued under its own key).
             if !hull.is_current(id, serial) {
                 continue;
