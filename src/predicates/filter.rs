@@ -138,7 +138,7 @@ struct Refined<const D: usize> {
     /// The exponent of the coarsest power-of-two grid holding the base vertex's coordinates:
     /// no finer than the grid of all the vertices (see [`FacetPlane::value_is_exact`]), so a
     /// permanent that does not fit it fits no grid of theirs. Kept with the double-double
-    /// stage, for [`FacetPlane::side_on_built_stages`]; D bit scans, where the grid of every
+    /// stage, for [`FacetPlane::built_double_double`]; D bit scans, where the grid of every
     /// vertex costs D² (on the tilted family in 5-D that was 7 % of the hull's instructions).
     base_grid: OnceLock<i32>,
 }
@@ -521,9 +521,10 @@ impl<const D: usize> FacetPlane<D> {
         self.side_after_filter(self.value(p), p, vertices)
     }
 
-    /// The stages after the filter: the double-double plane alone when this plane has built
-    /// it and it needs no vertex ([`side_on_built_stages`](Self::side_on_built_stages)), else
-    /// every stage, the vertices asked for only then.
+    /// The stages after the filter: the double-double plane first when this plane has built it
+    /// and it needs no vertex ([`built_double_double`](Self::built_double_double)), the later
+    /// stages only if it cannot decide; else every stage. The vertices are asked for only
+    /// when a stage past the double-double one runs.
     #[inline(never)]
     fn side_after_filter(
         &self,
@@ -531,18 +532,29 @@ impl<const D: usize> FacetPlane<D> {
         p: &[f64; D],
         vertices: impl FnOnce() -> [[f64; D]; D],
     ) -> Sign {
-        if let Some(sign) = self.side_on_built_stages(p) {
-            return sign;
+        let Some(dd) = self.built_double_double(p) else {
+            return self.side_beyond_filter(value, p, &vertices(), false);
+        };
+        match dd.sign(&self.base, p, self.slack) {
+            Some(sign) => sign,
+            // Not again on the full route (on the raw Minkowski sums, whose points lie on
+            // many planes exactly, the repeat was 6 % of Q∞'s instructions).
+            None => self.side_beyond_filter(value, p, &vertices(), true),
         }
-        self.side_beyond_filter(value, p, &vertices())
     }
 
-    /// What [`side_beyond_filter`](Self::side_beyond_filter) would answer, when its answer is
-    /// sure to come from the double-double plane and this plane has built it: its route is the
-    /// plain one (no rebuilt rows), and the `f64` value is not exact, because `p`'s permanent
-    /// does not fit even the base vertex's grid (every grid holding all the vertices and `p`
-    /// is as fine or finer, and fits less). `None` otherwise, and when the double-double value
-    /// does not decide: the full route then goes on from the start.
+    /// The shortcut's answer alone (see [`built_double_double`](Self::built_double_double)):
+    /// for the tests, which check it against the exact determinant.
+    #[cfg(test)]
+    pub(in crate::predicates) fn side_on_built_stages(&self, p: &[f64; D]) -> Option<Sign> {
+        self.built_double_double(p)?.sign(&self.base, p, self.slack)
+    }
+
+    /// The double-double plane, when [`side_beyond_filter`](Self::side_beyond_filter)'s answer
+    /// is sure to come from it or from a later stage and this plane has built it: its route is
+    /// the plain one (no rebuilt rows), and the `f64` value is not exact, because `p`'s
+    /// permanent does not fit even the base vertex's grid (every grid holding all the vertices
+    /// and `p` is as fine or finer, and fits less). `None` otherwise: the full route decides.
     ///
     /// Why: on nearly coplanar input (a face sampled densely in a general pose) most points
     /// meet the filter's limit at every expansion near their face, and the same few planes
@@ -550,7 +562,7 @@ impl<const D: usize> FacetPlane<D> {
     /// (424 instructions per test against 136, callgrind, the `tilted` family in 3-D): gathering
     /// the vertices from the point array, scanning `p`'s bits, asking which stages exist.
     #[inline(always)]
-    pub(in crate::predicates) fn side_on_built_stages(&self, p: &[f64; D]) -> Option<Sign> {
+    fn built_double_double(&self, p: &[f64; D]) -> Option<&DdPlane<D>> {
         let refined = self.refined.get()?;
         if D >= 3 && refined.rebase.load(Ordering::Relaxed) != NO_ORDER {
             return None;
@@ -562,15 +574,22 @@ impl<const D: usize> FacetPlane<D> {
         if base_grid == i32::MAX || permanent_fits::<D>(self.permanent(p), base_grid) {
             return None;
         }
-        dd.sign(&self.base, p, self.slack)
+        Some(dd)
     }
 
     /// The stages after the filter (see [`side`](Self::side)), out of line: compiled once per
     /// dimension rather than into every caller's loop, so that the callers' hot paths stay
     /// small and their inlining does not change with the stages (a build whose inlining of
     /// the wide-integer expansion changed ran the raw wrench hulls a quarter slower).
+    /// `dd_tried`: the plain double-double stage has just failed to decide (it is skipped).
     #[inline(never)]
-    fn side_beyond_filter(&self, value: f64, p: &[f64; D], vertices: &[[f64; D]; D]) -> Sign {
+    fn side_beyond_filter(
+        &self,
+        value: f64,
+        p: &[f64; D],
+        vertices: &[[f64; D]; D],
+        dd_tried: bool,
+    ) -> Sign {
         if self.value_is_exact(vertices, p) {
             return exact::sign_of(value);
         }
@@ -596,7 +615,7 @@ impl<const D: usize> FacetPlane<D> {
             {
                 return orient(sign);
             }
-        } else if finite {
+        } else if finite && !dd_tried {
             let refined = self.refined();
             refined
                 .base_grid
