@@ -401,4 +401,3 @@ fn vertices_equal_the_exact_extreme_points() {
     eprintln!("{second_phases} of 24 builds ran a second phase");
     assert!(second_phases >= 3, "{second_phases} second phases");
 }
-
