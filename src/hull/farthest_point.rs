@@ -55,20 +55,25 @@ impl FarthestPoint {
     /// orientation value the partition kept, times the facet's inverse norm: no point is read).
     fn queue<const D: usize>(&mut self, hull: &Hull<D>, id: FacetId) {
         let facet = hull.facet(id);
-        if D == 2 {
-            if facet.outside_len() > 0 {
-                self.oldest_first.push_back((facet.serial, id));
-            }
-        } else if let Some((_, value)) = facet.farthest {
-            let distance = value * facet.inv_norm;
-            // A NaN (an infinite inverse norm times zero) orders as the nearest.
-            let key = if distance > 0.0 {
-                distance.to_bits()
-            } else {
-                0
-            };
-            self.pending.push((key, Reverse(facet.serial), id));
+        if facet.outside_len() == 0 {
+            return;
         }
+        if D == 2 {
+            self.oldest_first.push_back((facet.serial, id));
+            return;
+        }
+        // Every facet with outside points is queued (the build is complete only when none is
+        // left), whether or not its farthest point is known: unknown, it orders as the
+        // nearest, and so does a NaN (an infinite inverse norm times zero).
+        let distance = facet
+            .farthest
+            .map_or(0.0, |(_, value)| value * facet.inv_norm);
+        let key = if distance > 0.0 {
+            distance.to_bits()
+        } else {
+            0
+        };
+        self.pending.push((key, Reverse(facet.serial), id));
     }
 
     /// The next pending facet and its serial when queued.
