@@ -27,9 +27,10 @@ pub struct FarthestPoint {
     /// Facets with outside points, in 3-D and up: the one whose farthest point is farthest
     /// expanded first (ties: the oldest). Against the oldest first (breadth first, as Qhull's
     /// facet list, itself 5–30 % fewer facets than depth first), this cut the instructions of
-    /// `pqh bench hull`'s 3-D to 8-D rows by up to two thirds (the 6-D lattice), most by 5–25 %
-    /// (docs/benchmarks.md, "The farthest pending facet first"): the far points, expanded first,
-    /// put the near ones inside before they are moved again.
+    /// `pqh bench hull`'s 3-D to 6-D rows by up to two thirds (the 6-D lattice), most by 7–24 %,
+    /// a few (the 3-D tilted faces and corners, the 6-D simplex) by under 1 %
+    /// (docs/benchmarks.md, "the farthest pending facet first"): the far points, expanded
+    /// first, put the near ones inside before they are moved again.
     pending: BinaryHeap<Pending>,
     /// Facets with outside points, in 2-D: the oldest first (breadth first). There the order
     /// changed no row's work by more than 0.2 % but the heap's cost, which is not small beside
