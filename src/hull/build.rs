@@ -121,7 +121,7 @@ impl<const D: usize> Hull<D> {
         // magnitude is the largest magnitude scaled, so no pass over the points is needed.
         self.in_box = extent.max_abs * scale <= 1.0;
         debug_assert_eq!(self.in_box, self.points.iter().all(in_box));
-        self.mark_repeats();
+        super::repeats::mark_repeats(&self.points, &mut self.scratch.repeats);
         let chosen = start;
         let mut simplex = match chosen.filter(|s| independent(&self.points, &s[..=D])) {
             Some(simplex) => simplex,
@@ -129,14 +129,14 @@ impl<const D: usize> Hull<D> {
         };
         // Its vertices are distinct points: name each by its first copy, as every vertex is.
         for s in &mut simplex[..=D] {
-            *s = self.scratch.first_copy[*s] as usize;
+            *s = self.scratch.repeats.first_copy(*s).unwrap_or(*s);
         }
         let simplex = &simplex[..=D];
         let all = self.found(simplex);
         let all = &all[..=D];
         self.stats.points_processed = D + 1;
         for p in 0..self.points.len() as u32 {
-            if !simplex.contains(&(p as usize)) && self.scratch.first_copy[p as usize] == p {
+            if !simplex.contains(&(p as usize)) && self.scratch.repeats.is_first_copy(p as usize) {
                 self.assign(p, all);
             }
         }
@@ -193,53 +193,9 @@ impl<const D: usize> Hull<D> {
     /// Whether input `p` equals an input with a smaller index (so never enters an outside set).
     pub(in crate::hull) fn is_repeat(&self, p: usize) -> bool {
         self.scratch
-            .first_copy
-            .get(p)
-            .is_some_and(|&first| first as usize != p)
-    }
-
-    /// Writes, in `scratch.first_copy`, the smallest index of a point equal to each point (itself
-    /// if none is smaller). Only the first copy is ever assigned to an outside set: a copy is
-    /// never beyond a hull holding the first (equal points are on the same side of every plane),
-    /// so the hull is the same, and the time does not grow with repetition (copies would
-    /// otherwise follow the first through every outside-set redistribution).
-    ///
-    /// Equal points are found with an open-addressing table of first copies keyed by a hash of
-    /// the coordinates' bits, filled in index order (so the copy found is the first): one probe
-    /// per point, against the sort of (hash, index) pairs it replaces, which was a fifth of the
-    /// hull of 100,000 uniform 3-D points (and sorting the points themselves had been a quarter).
-    fn mark_repeats(&mut self) {
-        let Scratch {
-            copies, first_copy, ..
-        } = &mut self.scratch;
-        let points = &self.points;
-        // At most half full: short probe runs. Input sizes are bounded by `u32` indices.
-        let size = (2 * points.len()).next_power_of_two().max(2);
-        let mask = size - 1;
-        copies.clear();
-        copies.resize(size, EMPTY_SLOT);
-        first_copy.clear();
-        first_copy.extend(0..points.len() as u32);
-        for (i, p) in points.iter().enumerate() {
-            // SplitMix64's finaliser over FxHash's bits, so that structured input (grids, whose
-            // coordinates differ in few bits) does not cluster in the table.
-            let mut z = point_hash(p);
-            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-            let mut slot = (z ^ (z >> 31)) as usize & mask;
-            loop {
-                let a = copies[slot];
-                if a == EMPTY_SLOT {
-                    copies[slot] = i as u32;
-                    break;
-                }
-                if points[a as usize] == *p {
-                    first_copy[i] = a;
-                    break;
-                }
-                slot = (slot + 1) & mask;
-            }
-        }
+            .repeats
+            .first_copy(p)
+            .is_some_and(|first| first != p)
     }
 
     /// `x / scale`: back in the caller's units.
@@ -587,21 +543,9 @@ impl<const D: usize> Hull<D> {
     }
 }
 
-/// An empty slot of the first-copy table (`Hull::mark_repeats`): no input index, since inputs
-/// are indexed by `u32` below it.
-const EMPTY_SLOT: u32 = u32::MAX;
-
 /// The smallest largest-cofactor trusted without refinement: about 2^−897, far above the
 /// subnormals (below 2^−1022) where the products and their error bounds lose bits.
 const MIN_PRECISE_COFACTOR: f64 = 1e-270;
-
-/// A hash of a point's coordinates (−0 read as 0, so that equal points hash alike): FxHash's
-/// multiply-rotate, enough to make runs of equal hashes nearly always true repeats.
-fn point_hash<const D: usize>(p: &[f64; D]) -> u64 {
-    p.iter().fold(0u64, |h, &x| {
-        (h.rotate_left(5) ^ (x + 0.0).to_bits()).wrapping_mul(0x517c_c1b7_2722_0a95)
-    })
-}
 
 pub(in crate::hull) fn first_non_finite<const D: usize>(
     points: &[[f64; D]],
@@ -623,24 +567,43 @@ struct Extent {
 }
 
 impl Extent {
+    /// One pass over the coordinates' bits, in independent lanes: with the sign bit cleared, a
+    /// finite `f64`'s bits order as its magnitude does, infinities and NaNs above them all, so
+    /// integer maxima and minima find both ends and the non-finite values at once. The branches
+    /// of a comparison per coordinate took three times as long (6 ms on 1,000,000 2-D points,
+    /// 8 % of their clusters' hull).
     fn of<const D: usize>(points: &[[f64; D]]) -> Self {
-        let mut finite = true;
-        let (mut high, mut low) = (0.0f64, f64::INFINITY);
-        for x in points.iter().flatten() {
-            let a = x.abs();
-            // False for infinities and NaN.
-            finite &= a <= f64::MAX;
-            if a > high {
-                high = a;
-            }
-            if a < low && a != 0.0 {
-                low = a;
+        const LANES: usize = 8;
+        const MAGNITUDE: u64 = !(1 << 63);
+        let flat = points.as_flattened();
+        let mut high = [0u64; LANES];
+        // The bits less one, so that zero (wrapping to the largest) never is the minimum.
+        let mut low = [u64::MAX; LANES];
+        let chunks = flat.chunks_exact(LANES);
+        let rest = chunks.remainder();
+        for chunk in chunks {
+            for k in 0..LANES {
+                let a = chunk[k].to_bits() & MAGNITUDE;
+                high[k] = high[k].max(a);
+                low[k] = low[k].min(a.wrapping_sub(1));
             }
         }
+        for (k, &x) in rest.iter().enumerate() {
+            let a = x.to_bits() & MAGNITUDE;
+            high[k] = high[k].max(a);
+            low[k] = low[k].min(a.wrapping_sub(1));
+        }
+        let high = high.into_iter().max().unwrap_or(0);
+        let low = low.into_iter().min().unwrap_or(u64::MAX);
         Extent {
-            finite,
-            max_abs: high,
-            min_abs: low,
+            finite: high < f64::INFINITY.to_bits(),
+            max_abs: f64::from_bits(high),
+            // Every coordinate zero: no smallest non-zero magnitude.
+            min_abs: if low == u64::MAX {
+                f64::INFINITY
+            } else {
+                f64::from_bits(low + 1)
+            },
         }
     }
 

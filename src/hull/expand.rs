@@ -37,10 +37,8 @@ pub(in crate::hull) struct Scratch<const D: usize> {
     stack: Vec<FacetId>,
     /// The facets around one facet, breadth first, for [`StrategyHooks::claim_beyond`](crate::hull::StrategyHooks::claim_beyond).
     ring: Vec<FacetId>,
-    /// Open-addressing table of first copies by coordinate hash, and each input's first copy:
-    /// see [`Hull::initialise`](super::Hull).
-    pub(in crate::hull) copies: Vec<u32>,
-    pub(in crate::hull) first_copy: Vec<u32>,
+    /// Each input's first copy, and the buffers that find it (`repeats.rs`).
+    pub(in crate::hull) repeats: super::repeats::Repeats,
     /// The points' residuals while the initial simplex is chosen (`build::initial_simplex`).
     pub(in crate::hull) residuals: Vec<[f64; D]>,
     /// Tests only: ridge keys that collide all the time, so that the confirming pairing pass

@@ -29,6 +29,7 @@ mod incremental;
 mod locate;
 mod planes;
 mod record;
+mod repeats;
 mod strategy;
 mod trace;
 mod volume;
