@@ -46,8 +46,8 @@ pub(in crate::hull) struct Repeats {
     earlier: Vec<u32>,
     /// The table of recent points (hash tag and index, by the hash's low bits).
     recent: Vec<u64>,
-    /// The entries (hash tag and index), in index order, then bucket by bucket.
-    entries: Vec<u64>,
+    /// The entries (hash tag and index) of the points not found in the table of recent points,
+    /// bucket by bucket.
     bucketed: Vec<u64>,
     /// Where each bucket starts in `bucketed` (one more than the buckets), and where its next
     /// entry goes while they are scattered.
@@ -65,7 +65,6 @@ pub(in crate::hull) fn mark_repeats<const D: usize>(points: &[[f64; D]], repeats
     let Repeats {
         earlier,
         recent,
-        entries,
         bucketed,
         starts,
         cursors,
@@ -83,36 +82,35 @@ pub(in crate::hull) fn mark_repeats<const D: usize>(points: &[[f64; D]], repeats
     let bucket = |entry: u64| ((entry >> 32) >> (32 - bits)) as usize;
     starts.clear();
     starts.resize((1 << bits) + 1, 0);
-    entries.clear();
+    // First pass: the repeats of recent points, and the buckets' sizes.
     for (i, p) in points.iter().enumerate() {
         let hash = mixed_point_hash(p);
-        let entry = (hash & TAG) | i as u64;
         let last = &mut recent[hash as usize % RECENT];
-        if *last != EMPTY && *last & TAG == entry & TAG && points[*last as u32 as usize] == *p {
+        if *last != EMPTY && *last & TAG == hash & TAG && points[*last as u32 as usize] == *p {
             earlier[i] = *last as u32;
             continue;
         }
-        *last = entry;
-        starts[bucket(entry) + 1] += 1;
-        entries.push(entry);
+        *last = (hash & TAG) | i as u64;
+        starts[bucket(hash) + 1] += 1;
     }
-    let runs: &[u64] = if bits == 0 {
-        entries
-    } else {
-        for b in 1..starts.len() {
-            starts[b] += starts[b - 1];
-        }
-        // A counting sort: stable, so each bucket keeps index order (the first copy first).
-        bucketed.clear();
-        bucketed.resize(entries.len(), 0);
-        cursors.clone_from(starts);
-        for &entry in entries.iter() {
+    for b in 1..starts.len() {
+        starts[b] += starts[b - 1];
+    }
+    // Second pass: the others' entries, bucket by bucket, in index order in each (the first
+    // copy first). The hashes are computed again rather than kept: a buffer of them would be
+    // one more fresh allocation per build, whose page faults cost more than the hashing.
+    bucketed.clear();
+    bucketed.resize(starts[starts.len() - 1], 0);
+    cursors.clone_from(starts);
+    for (i, p) in points.iter().enumerate() {
+        if earlier[i] as usize == i {
+            let entry = (mixed_point_hash(p) & TAG) | i as u64;
             let b = bucket(entry);
             bucketed[cursors[b]] = entry;
             cursors[b] += 1;
         }
-        bucketed
-    };
+    }
+    let runs: &[u64] = bucketed;
     for b in 0..starts.len() - 1 {
         let run = &runs[starts[b]..starts[b + 1]];
         // At most half full: short probe runs.
