@@ -6,8 +6,9 @@
 //! (copies would otherwise follow the first through every outside-set redistribution; a 6-D
 //! cloud listed 10 times took 7× as long as once).
 //!
-//! Equal points are found by hashing, in steps that read memory at random over the whole input
-//! only for points that are not repeats of recent ones:
+//! Equal points are found by hashing. A small input is searched with one open-addressing table,
+//! in cache. A large one, in steps that read memory at random over the whole input only for
+//! points that are not repeats of recent ones:
 //! - in index order, each point is compared with the last point of its hash in a small table of
 //!   recent points (so that input made of a few points repeated many times, as lattices, is done
 //!   at once, with every point it reads in cache);
@@ -18,6 +19,10 @@
 //! One table over every point, as before, missed the cache on nearly every probe once the input
 //! outgrew it (docs/benchmarks.md, "Issue 24: the input read in fewer, cheaper passes").
 //! Written by hand: a `HashMap` of coordinates would be that one table, with more per entry.
+
+/// The most points searched with one table, in one pass: its table (twice as many 8-byte
+/// entries, 2 MiB) fits in a core's second-level cache, so buckets would only add passes.
+const ONE_TABLE_POINTS: usize = 1 << 17;
 
 /// The number of points a bucket holds on average: its table (twice as many 8-byte entries) is
 /// 64 KiB, within a core's second-level cache.
@@ -72,9 +77,17 @@ pub(in crate::hull) fn mark_repeats<const D: usize>(points: &[[f64; D]], repeats
     } = repeats;
     earlier.clear();
     earlier.extend(0..n as u32);
+    if n <= ONE_TABLE_POINTS {
+        let entries = points
+            .iter()
+            .enumerate()
+            .map(|(i, p)| (mixed_point_hash(p) & TAG) | i as u64);
+        search(entries, n, points, earlier, table);
+        return;
+    }
     recent.clear();
     recent.resize(RECENT, EMPTY);
-    // Buckets of about `BUCKET_POINTS`: none below that many points.
+    // Buckets of about `BUCKET_POINTS`.
     let bits = (n / BUCKET_POINTS)
         .next_power_of_two()
         .trailing_zeros()
@@ -110,30 +123,41 @@ pub(in crate::hull) fn mark_repeats<const D: usize>(points: &[[f64; D]], repeats
             cursors[b] += 1;
         }
     }
-    let runs: &[u64] = bucketed;
     for b in 0..starts.len() - 1 {
-        let run = &runs[starts[b]..starts[b + 1]];
-        // At most half full: short probe runs.
-        let size = (2 * run.len()).next_power_of_two().max(2);
-        let mask = size - 1;
-        table.clear();
-        table.resize(size, EMPTY);
-        for &entry in run {
-            let i = entry as u32;
-            let mut slot = (entry >> 32) as usize & mask;
-            loop {
-                let stored = table[slot];
-                if stored == EMPTY {
-                    table[slot] = entry;
-                    break;
-                }
-                let first = stored as u32;
-                if stored & TAG == entry & TAG && points[first as usize] == points[i as usize] {
-                    earlier[i as usize] = first;
-                    break;
-                }
-                slot = (slot + 1) & mask;
+        let run = &bucketed[starts[b]..starts[b + 1]];
+        search(run.iter().copied(), run.len(), points, earlier, table);
+    }
+}
+
+/// Finds, among the points of `entries` (in index order; `len` of them), each one's first copy,
+/// with an open-addressing table: one bucket, or the whole input when it is small.
+fn search<const D: usize>(
+    entries: impl Iterator<Item = u64>,
+    len: usize,
+    points: &[[f64; D]],
+    earlier: &mut [u32],
+    table: &mut Vec<u64>,
+) {
+    // At most half full: short probe runs.
+    let size = (2 * len).next_power_of_two().max(2);
+    let mask = size - 1;
+    table.clear();
+    table.resize(size, EMPTY);
+    for entry in entries {
+        let i = entry as u32;
+        let mut slot = (entry >> 32) as usize & mask;
+        loop {
+            let stored = table[slot];
+            if stored == EMPTY {
+                table[slot] = entry;
+                break;
             }
+            let first = stored as u32;
+            if stored & TAG == entry & TAG && points[first as usize] == points[i as usize] {
+                earlier[i as usize] = first;
+                break;
+            }
+            slot = (slot + 1) & mask;
         }
     }
 }
@@ -176,17 +200,30 @@ fn mixed_point_hash<const D: usize>(p: &[f64; D]) -> u64 {
 mod tests {
     use super::*;
 
-    /// The first copies against a brute force, with buckets (more than `BUCKET_POINTS` points)
-    /// and without, with −0 and 0, and with every point equal.
+    /// The first copies against a brute force, with one table and with buckets (more than
+    /// `ONE_TABLE_POINTS` points), with −0 and 0, and with every point equal.
     #[test]
     fn first_copies_are_the_smallest_equal_indices() {
         let mut rng = crate::geometry::Rng::new(3);
         let mut repeats = Repeats::default();
-        for n in [1, 7, 300, 3 * BUCKET_POINTS + 17, 9 * BUCKET_POINTS] {
-            // Few distinct values per coordinate: many repeats, scattered through the input.
+        for n in [
+            1,
+            7,
+            300,
+            ONE_TABLE_POINTS,
+            ONE_TABLE_POINTS + 3 * BUCKET_POINTS + 17,
+        ] {
+            // About three copies of each point, scattered through the input; on small inputs,
+            // few distinct values per coordinate too.
             let distinct = (n / 3).max(1);
+            let values = if n < 1000 { 40 } else { 4000 };
             let pool: Vec<[f64; 2]> = (0..distinct)
-                .map(|_| [rng.index(40) as f64 - 20.0, rng.index(40) as f64 - 20.0])
+                .map(|_| {
+                    [
+                        rng.index(values) as f64 - 20.0,
+                        rng.index(values) as f64 - 20.0,
+                    ]
+                })
                 .collect();
             let mut points: Vec<[f64; 2]> = (0..n).map(|_| pool[rng.index(distinct)]).collect();
             points[0] = [0.0, -0.0];
@@ -218,7 +255,7 @@ mod tests {
             }
             assert_eq!(repeats.first_copy(n), None);
         }
-        let same = vec![[1.5, 2.5]; 2 * BUCKET_POINTS];
+        let same = vec![[1.5, 2.5]; ONE_TABLE_POINTS + 1];
         mark_repeats(&same, &mut repeats);
         assert!((0..same.len()).all(|i| repeats.first_copy(i) == Some(0)));
     }
