@@ -162,3 +162,59 @@ fn the_axis_extremes_are_those_of_min_by_and_max_by() {
         assert_eq!(super::axis_extremes(&points)[..6], reference(&points)[..]);
     }
 }
+
+/// The extent on the coordinates' bits against the comparisons it replaced (written here):
+/// finiteness, the largest magnitude and the smallest non-zero one, on inputs whose length is
+/// not a multiple of the lanes, with signed zeros, subnormals, infinities and NaNs.
+#[test]
+fn the_extent_on_bits_is_that_of_the_comparisons() {
+    fn brute<const D: usize>(points: &[[f64; D]]) -> (bool, f64, f64) {
+        let mut finite = true;
+        let (mut high, mut low) = (0.0f64, f64::INFINITY);
+        for &x in points.iter().flatten() {
+            finite &= x.is_finite();
+            high = high.max(x.abs());
+            if x != 0.0 {
+                low = low.min(x.abs());
+            }
+        }
+        (finite, high, low)
+    }
+    let special = [
+        0.0,
+        -0.0,
+        5e-324,
+        -2.5e-310,
+        f64::MIN_POSITIVE,
+        -1.5,
+        3.0,
+        f64::MAX,
+        -f64::MAX,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+    ];
+    let mut rng = Rng::new(5);
+    for n in [1, 2, 3, 4, 5, 9, 17, 40] {
+        for _ in 0..200 {
+            let points: Vec<[f64; 3]> = (0..n)
+                .map(|_| {
+                    std::array::from_fn(|_| match rng.index(3) {
+                        0 => special[rng.index(special.len())],
+                        1 => 0.0,
+                        _ => (rng.index(2001) as f64 - 1000.0) * 1e-3,
+                    })
+                })
+                .collect();
+            let extent = super::Extent::of(&points);
+            let (finite, high, low) = brute(&points);
+            assert_eq!(extent.finite, finite, "{points:?}");
+            if finite {
+                assert_eq!(extent.max_abs.to_bits(), high.to_bits(), "{points:?}");
+                assert_eq!(extent.min_abs.to_bits(), low.to_bits(), "{points:?}");
+            }
+        }
+    }
+    let zeros = super::Extent::of(&[[0.0, -0.0]; 3]);
+    assert!(zeros.finite && zeros.max_abs == 0.0 && zeros.min_abs == f64::INFINITY);
+}
