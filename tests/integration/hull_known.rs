@@ -624,3 +624,48 @@ fn repeated_points_are_merged() {
     assert_eq!(a.vertex_indices(), b.vertex_indices());
     assert_eq!(a.stats().facets_created, b.stats().facets_created);
 }
+
+/// Repeated points on an input large enough (over 2^17 points) that the engine finds them
+/// bucket by bucket, behind a table of recent points: the copies of a point scattered at
+/// random through the input (most far apart, some adjacent), the vertices must be first copies
+/// and the work that of the distinct points. The reference for "first copy" is a sort written
+/// here; the hull's vertex set is compared with the hull of the distinct points.
+#[test]
+fn repeated_points_are_merged_on_large_inputs() {
+    let distinct = pqhull::rbox::generate::<2>(&pqhull::rbox::Family::UniformCube, 30_000, 3);
+    let mut rng = Rng::new(11);
+    // Five copies of each point in a random order, and one more right after some of them.
+    let mut order: Vec<usize> = (0..5 * distinct.len())
+        .map(|k| k % distinct.len())
+        .collect();
+    for k in (1..order.len()).rev() {
+        order.swap(k, rng.index(k + 1));
+    }
+    let mut listed = Vec::with_capacity(order.len() + order.len() / 7);
+    for (k, &i) in order.iter().enumerate() {
+        listed.push(i);
+        if k % 7 == 0 {
+            listed.push(i);
+        }
+    }
+    assert!(listed.len() > 1 << 17);
+    let points: Vec<[f64; 2]> = listed.iter().map(|&i| distinct[i]).collect();
+    // Each distinct point's first position in `points`.
+    let mut first = vec![usize::MAX; distinct.len()];
+    for (position, &i) in listed.iter().enumerate() {
+        first[i] = first[i].min(position);
+    }
+    let once = Hull::try_new(&distinct).unwrap();
+    let hull = Hull::try_new(&points).unwrap();
+    hull.check().unwrap();
+    let mut expected: Vec<usize> = once.vertex_indices().iter().map(|&v| first[v]).collect();
+    expected.sort_unstable();
+    let mut found = hull.vertex_indices().to_vec();
+    found.sort_unstable();
+    assert_eq!(found, expected);
+    let (a, b) = (once.stats(), hull.stats());
+    assert_eq!(
+        (a.points_processed, a.facets_created, a.expansions),
+        (b.points_processed, b.facets_created, b.expansions)
+    );
+}
