@@ -569,9 +569,10 @@ struct Extent {
 impl Extent {
     /// One pass over the coordinates' bits, in independent lanes: with the sign bit cleared, a
     /// finite `f64`'s bits order as its magnitude does, infinities and NaNs above them all, so
-    /// integer maxima and minima find both ends and the non-finite values at once. The branches
-    /// of a comparison per coordinate took three times as long (6 ms on 1,000,000 2-D points,
-    /// 8 % of their clusters' hull).
+    /// integer maxima and minima find both ends and the non-finite values at once, without the
+    /// chain of dependent comparisons per coordinate of the pass before, on which `perf
+    /// annotate` put 18 % of `Hull::try_new`'s own samples on the 2-D clusters of 1,000,000
+    /// points (docs/benchmarks.md, "Issue 24: the input read in fewer, cheaper passes").
     fn of<const D: usize>(points: &[[f64; D]]) -> Self {
         const LANES: usize = 8;
         const MAGNITUDE: u64 = !(1 << 63);
