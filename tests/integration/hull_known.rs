@@ -628,8 +628,9 @@ fn repeated_points_are_merged() {
 /// Repeated points on an input large enough (over 2^17 points) that the engine finds them
 /// bucket by bucket, behind a table of recent points: the copies of a point scattered at
 /// random through the input (most far apart, some adjacent), the vertices must be first copies
-/// and the work that of the distinct points. The reference for "first copy" is a sort written
-/// here; the hull's vertex set is compared with the hull of the distinct points.
+/// and the work that of the distinct points. The references are written here: each point's
+/// first position by a scan, and the distinct points' hull vertices by Andrew's monotone chain
+/// on `robust::orient2d` (Shewchuk's exact orientation, not the engine's).
 #[test]
 fn repeated_points_are_merged_on_large_inputs() {
     let distinct = pqhull::rbox::generate::<2>(&pqhull::rbox::Family::UniformCube, 30_000, 3);
@@ -655,10 +656,40 @@ fn repeated_points_are_merged_on_large_inputs() {
     for (position, &i) in listed.iter().enumerate() {
         first[i] = first[i].min(position);
     }
+    // Andrew's monotone chain, strictly convex turns only (no three of these random points
+    // are collinear, and a collinear one would be no vertex).
+    let mut sorted: Vec<usize> = (0..distinct.len()).collect();
+    sorted.sort_by(|&a, &b| distinct[a].partial_cmp(&distinct[b]).unwrap());
+    let coord = |i: usize| robust::Coord {
+        x: distinct[i][0],
+        y: distinct[i][1],
+    };
+    let mut chain: Vec<usize> = Vec::new();
+    for pass in 0..2 {
+        let start = chain.len();
+        let mut walk = |i: usize, chain: &mut Vec<usize>| {
+            while chain.len() >= start + 2
+                && robust::orient2d(
+                    coord(chain[chain.len() - 2]),
+                    coord(chain[chain.len() - 1]),
+                    coord(i),
+                ) <= 0.0
+            {
+                chain.pop();
+            }
+            chain.push(i);
+        };
+        if pass == 0 {
+            sorted.iter().for_each(|&i| walk(i, &mut chain));
+        } else {
+            sorted.iter().rev().for_each(|&i| walk(i, &mut chain));
+        }
+        chain.pop(); // the other pass's first point
+    }
     let once = Hull::try_new(&distinct).unwrap();
     let hull = Hull::try_new(&points).unwrap();
     hull.check().unwrap();
-    let mut expected: Vec<usize> = once.vertex_indices().iter().map(|&v| first[v]).collect();
+    let mut expected: Vec<usize> = chain.iter().map(|&v| first[v]).collect();
     expected.sort_unstable();
     let mut found = hull.vertex_indices().to_vec();
     found.sort_unstable();
