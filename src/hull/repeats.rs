@@ -10,8 +10,8 @@
 //! in cache. A large one, in steps that read memory at random over the whole input only for
 //! points that are not repeats of recent ones:
 //! - in index order, each point is compared with the last point of its hash in a small table of
-//!   recent points (so that input made of a few points repeated many times, as lattices, is
-//!   nearly all done at once, with every point it reads in cache);
+//!   recent points (so that input made of a few points repeated many times, as lattices, is done
+//!   at once, with every point it reads in cache);
 //! - the others' hashes are scattered into buckets by their top bits (a counting sort, in index
 //!   order within each bucket), and each bucket is searched with its own open-addressing table,
 //!   small enough to stay in cache.
@@ -20,8 +20,8 @@
 //! outgrew it (docs/benchmarks.md, "Issue 24: the input read in fewer, cheaper passes").
 //! Written by hand: a `HashMap` of coordinates would be that one table, with more per entry.
 
-/// The most points searched with one table, in one pass: its table (twice as many 8-byte
-/// entries, 2 MiB) fits in a core's second-level cache, so buckets would only add passes.
+/// The most points searched with one table, in one pass: its table (twice as many 4-byte
+/// entries, 1 MiB) fits in a core's second-level cache, so buckets would only add passes.
 const ONE_TABLE_POINTS: usize = 1 << 17;
 
 /// The number of points a bucket holds on average: its table (twice as many 8-byte entries) is
@@ -58,8 +58,10 @@ pub(in crate::hull) struct Repeats {
     /// entry goes while they are scattered.
     starts: Vec<usize>,
     cursors: Vec<usize>,
-    /// One bucket's open-addressing table, or a small input's.
+    /// One bucket's open-addressing table.
     table: Vec<u64>,
+    /// The table of a small input (indices alone).
+    small: Vec<u32>,
 }
 
 /// Finds, for each of `points`, the smallest index of a point equal to it (itself if none is
@@ -74,15 +76,12 @@ pub(in crate::hull) fn mark_repeats<const D: usize>(points: &[[f64; D]], repeats
         starts,
         cursors,
         table,
+        small,
     } = repeats;
     earlier.clear();
     earlier.extend(0..n as u32);
     if n <= ONE_TABLE_POINTS {
-        let entries = points
-            .iter()
-            .enumerate()
-            .map(|(i, p)| (mixed_point_hash(p) & TAG) | i as u64);
-        search(entries, n, points, earlier, table);
+        search_small(points, earlier, small);
         return;
     }
     recent.clear();
@@ -129,8 +128,36 @@ pub(in crate::hull) fn mark_repeats<const D: usize>(points: &[[f64; D]], repeats
     }
 }
 
+/// Finds each point's first copy with one open-addressing table of indices alone, filled in
+/// index order: a small input's (the table as before the buckets). Its entries are half the
+/// size of [`search`]'s, which keep the hash's tag: each probe of an occupied slot reads a
+/// point, but at this size the points are in cache too, and a fresh build pays a page fault for
+/// each page of a table it allocates.
+fn search_small<const D: usize>(points: &[[f64; D]], earlier: &mut [u32], table: &mut Vec<u32>) {
+    // At most half full: short probe runs.
+    let size = (2 * points.len()).next_power_of_two().max(2);
+    let mask = size - 1;
+    table.clear();
+    table.resize(size, u32::MAX);
+    for (i, p) in points.iter().enumerate() {
+        let mut slot = mixed_point_hash(p) as usize & mask;
+        loop {
+            let first = table[slot];
+            if first == u32::MAX {
+                table[slot] = i as u32;
+                break;
+            }
+            if points[first as usize] == *p {
+                earlier[i] = first;
+                break;
+            }
+            slot = (slot + 1) & mask;
+        }
+    }
+}
+
 /// Finds, among the points of `entries` (in index order; `len` of them), each one's first copy,
-/// with an open-addressing table: one bucket, or the whole input when it is small.
+/// with an open-addressing table: one bucket.
 fn search<const D: usize>(
     entries: impl Iterator<Item = u64>,
     len: usize,
