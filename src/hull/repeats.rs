@@ -10,8 +10,8 @@
 //! in cache. A large one, in steps that read memory at random over the whole input only for
 //! points that are not repeats of recent ones:
 //! - in index order, each point is compared with the last point of its hash in a small table of
-//!   recent points (so that input made of a few points repeated many times, as lattices, is done
-//!   at once, with every point it reads in cache);
+//!   recent points (so that input made of a few points repeated many times, as lattices, is
+//!   nearly all done at once, with every point it reads in cache);
 //! - the others' hashes are scattered into buckets by their top bits (a counting sort, in index
 //!   order within each bucket), and each bucket is searched with its own open-addressing table,
 //!   small enough to stay in cache.
@@ -132,7 +132,10 @@ pub(in crate::hull) fn mark_repeats<const D: usize>(points: &[[f64; D]], repeats
 /// index order: a small input's (the table as before the buckets). Its entries are half the
 /// size of [`search`]'s, which keep the hash's tag: each probe of an occupied slot reads a
 /// point, but at this size the points are in cache too, and a fresh build pays a page fault for
-/// each page of a table it allocates.
+/// each page of a table it allocates. Measured, not argued: with the tagged table in its place,
+/// `pqh bench hull --dimensions 3 --families cube` read the 3-D cube at 1.56, 1.57 and 1.66
+/// against 1.78, 1.91 and 1.80 with this one, the runs alternated (pqhull 10.8–11.4 ms
+/// against 9.1–9.4 ms); the suite's random rows need 1.5.
 fn search_small<const D: usize>(points: &[[f64; D]], earlier: &mut [u32], table: &mut Vec<u32>) {
     // At most half full: short probe runs.
     let size = (2 * points.len()).next_power_of_two().max(2);
