@@ -667,7 +667,7 @@ fn repeated_points_are_merged_on_large_inputs() {
     let mut chain: Vec<usize> = Vec::new();
     for pass in 0..2 {
         let start = chain.len();
-        let mut walk = |i: usize, chain: &mut Vec<usize>| {
+        let walk = |i: usize, chain: &mut Vec<usize>| {
             while chain.len() >= start + 2
                 && robust::orient2d(
                     coord(chain[chain.len() - 2]),
