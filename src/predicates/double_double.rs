@@ -440,9 +440,13 @@ impl<const D: usize> DdPlane<D> {
         slack: f64,
         two_prod: impl Fn(f64, f64) -> Dd + Copy,
     ) -> ((f64, f64), f64) {
-        let mut value = Dd::ZERO;
-        let mut bound = 0.0;
-        for j in 0..D {
+        // The first term alone, not added to zero: `add` of zero and a normalised double-double
+        // (which `mul_with` returns) is that double-double up to the sign of a zero, so no
+        // rounding is skipped and the bound is unchanged (as `MinorScalar::first`).
+        let d = Dd::difference(p[0], base[0]);
+        let mut value = mul_with(self.cofactors[0], d, two_prod);
+        let mut bound = self.error[0] * d.hi.abs();
+        for j in 1..D {
             let d = Dd::difference(p[j], base[j]);
             value = add(value, mul_with(self.cofactors[j], d, two_prod));
             bound += self.error[j] * d.hi.abs();
