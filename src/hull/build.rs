@@ -123,8 +123,8 @@ impl<const D: usize> Hull<D> {
         debug_assert_eq!(self.in_box, self.points.iter().all(in_box));
         super::repeats::mark_repeats(&self.points, &mut self.scratch.repeats);
         let chosen = start;
-        let mut simplex = match chosen.filter(|s| independent(&self.points, &s[..=D])) {
-            Some(simplex) => simplex,
+        let (mut simplex, extremes) = match chosen.filter(|s| independent(&self.points, &s[..=D])) {
+            Some(simplex) => (simplex, None),
             None => initial_simplex(&self.points, &mut self.scratch.residuals)?,
         };
         // Its vertices are distinct points: name each by its first copy, as every vertex is.
@@ -132,15 +132,75 @@ impl<const D: usize> Hull<D> {
             *s = self.scratch.repeats.first_copy(*s).unwrap_or(*s);
         }
         let simplex = &simplex[..=D];
-        let all = self.found(simplex);
-        let all = &all[..=D];
+        let mut all = self.found(simplex);
         self.stats.points_processed = D + 1;
+        // The initial hull's vertices (the simplex's, then the extreme points added) and facets.
+        let mut vertices = [u32::MAX; MAX_SIMPLEX];
+        for (v, &s) in vertices.iter_mut().zip(simplex) {
+            *v = s as u32;
+        }
+        let mut count = D + 1;
+        if let Some(extremes) = extremes.filter(|_| D == 2) {
+            count = self.widen_to_extremes(&extremes[..2 * D], &mut vertices, &mut all);
+        }
+        let all = &all[..count];
         for p in 0..self.points.len() as u32 {
-            if !simplex.contains(&(p as usize)) && self.scratch.repeats.is_first_copy(p as usize) {
+            if !vertices.contains(&p) && self.scratch.repeats.is_first_copy(p as usize) {
                 self.assign(p, all);
             }
         }
         Ok(())
+    }
+
+    /// In the plane, the initial triangle widened to the polygon of the axis-extreme points
+    /// (Akl and Toussaint's quadrilateral), before any other point is assigned, so that the
+    /// first partition is against the polygon's edges: each extreme point that lies strictly
+    /// beyond an edge (exactly decided) is added as an expansion would add it, with nothing to
+    /// repartition. Returns how many facets `all` then holds (the live ones, at most
+    /// [`MAX_SIMPLEX`]); the polygon is the initial hull, so its points count as processed and
+    /// not as expansions (a trace starts from it).
+    ///
+    /// Why: on points near the sides of a turned square (the suite's `tilted` family), the
+    /// triangle's third edge crosses the square, and the expansion at the fourth corner
+    /// repartitioned half of the input; on random input in a square, the same half.
+    fn widen_to_extremes(
+        &mut self,
+        extremes: &[usize],
+        vertices: &mut [u32; MAX_SIMPLEX],
+        all: &mut [FacetId; MAX_SIMPLEX],
+    ) -> usize {
+        let mut count = D + 1;
+        let mut added = D + 1;
+        for &e in extremes {
+            let e = self.scratch.repeats.first_copy(e).unwrap_or(e) as u32;
+            if vertices.contains(&e) || added == MAX_SIMPLEX {
+                continue;
+            }
+            let Some(&beyond) = all[..count]
+                .iter()
+                .find(|&&id| self.side_of_index(id, e) == Sign::Positive)
+            else {
+                continue;
+            };
+            self.facets[beyond.index()].outside.push(e);
+            let created = self.stats.facets_created;
+            self.expand_with(beyond, e as usize);
+            // As if the polygon had been made at once: its facets created, no expansion.
+            self.stats.expansions -= 1;
+            self.stats.facets_created =
+                created + self.scratch.created.len() - self.scratch.removed.len();
+            vertices[added] = e;
+            added += 1;
+            // The live facets, in slot order (at most one more than before, in the plane).
+            count = 0;
+            for (i, f) in self.facets.iter().enumerate() {
+                if f.alive && count < MAX_SIMPLEX {
+                    all[count] = FacetId(i as u32);
+                    count += 1;
+                }
+            }
+        }
+        count
     }
 
     /// Frees every facet slot and plane, keeping each slot's outside-set buffer (emptied) for
@@ -400,7 +460,12 @@ impl<const D: usize> Hull<D> {
         // asks the filter again): the exact pass tests only those. Kept off the common path
         // (a position counter in the loop cost the 3-D cube 6 % more instructions).
         const OPEN: usize = 8;
+        // With the filter's value, which the exact stages take rather than compute again.
         let mut open = [FacetId::NONE; OPEN];
+        // The first one's filter value, which its exact test takes rather than compute again
+        // (a second undecided candidate is rare; an array of values cost the 3-D cube 0.7 %
+        // more instructions, to initialise).
+        let mut first_value = 0.0;
         let mut opened = 0;
         for &id in candidates {
             let facet = &self.facets[id.index()];
@@ -428,6 +493,9 @@ impl<const D: usize> Hull<D> {
                 // Undecided unless certainly behind: also when the value is NaN (coordinates so
                 // large, unscalable, that the floating-point products overflow).
                 undecided = true;
+                if opened == 0 {
+                    first_value = value;
+                }
                 if opened < OPEN {
                     open[opened] = id;
                 }
@@ -436,28 +504,49 @@ impl<const D: usize> Hull<D> {
         }
         if best.is_none() && undecided {
             // Only the exact path can tell; the first facet it puts the point beyond will do.
-            let undecided_only = opened <= OPEN;
-            let tested = if undecided_only {
-                &open[..opened]
-            } else {
-                candidates
-            };
-            for &id in tested {
-                let facet = &self.facets[id.index()];
-                let (value, bound) = if undecided_only {
-                    (facet.filter.value(&point), f64::INFINITY)
-                } else {
-                    facet.filter.evaluate(&point)
-                };
-                if (value.abs() <= bound || value.is_nan())
-                    && self.side_undecided(id, &point) == Sign::Positive
-                {
-                    best = Some((id, value * facet.inv_norm, value.max(0.0)));
-                    break;
-                }
-            }
+            let open = (opened <= OPEN).then_some(&open[..opened.min(OPEN)]);
+            best = self.first_beyond_exactly(&point, open, first_value, candidates);
         }
         self.push_outside(p, best)
+    }
+
+    /// [`assign`](Self::assign)'s exact pass, out of its loop (inlined, it cost the loop over
+    /// the candidates, which the filter decides on most input, instructions): the first of the
+    /// undecided candidates `open` (all of `candidates` that the filter leaves undecided when
+    /// `None`) that `point` is exactly beyond. `first_value` is the filter's value at the first
+    /// undecided candidate.
+    #[inline(never)]
+    fn first_beyond_exactly(
+        &self,
+        point: &[f64; D],
+        open: Option<&[FacetId]>,
+        first_value: f64,
+        candidates: &[FacetId],
+    ) -> Option<(FacetId, f64, f64)> {
+        let beyond = |id: FacetId, value: f64| {
+            (self.side_undecided_at(id, value, point) == Sign::Positive).then(|| {
+                let facet = &self.facets[id.index()];
+                (id, value * facet.inv_norm, value.max(0.0))
+            })
+        };
+        match open {
+            Some(open) => open.iter().enumerate().find_map(|(k, &id)| {
+                let value = if k == 0 {
+                    first_value
+                } else {
+                    self.facets[id.index()].filter.value(point)
+                };
+                beyond(id, value)
+            }),
+            None => candidates.iter().find_map(|&id| {
+                let (value, bound) = self.facets[id.index()].filter.evaluate(point);
+                if value.abs() <= bound || value.is_nan() {
+                    beyond(id, value)
+                } else {
+                    None
+                }
+            }),
+        }
     }
 
     /// Puts `p` in the outside set of `best`'s facet (with its orientation value), if any.
@@ -492,6 +581,20 @@ impl<const D: usize> Hull<D> {
     fn side_undecided(&self, id: FacetId, x: &[f64; D]) -> Sign {
         let (plane, vertices) = self.exact_plane_of(id);
         plane.side_undecided(x, || self.coords(vertices))
+    }
+
+    /// [`side_undecided`](Self::side_undecided) given `value`, the facet's own filter value at
+    /// `x`: passed on when the facet's plane is its own, computed on the shared plane otherwise.
+    #[inline]
+    fn side_undecided_at(&self, id: FacetId, value: f64, x: &[f64; D]) -> Sign {
+        let facet = &self.facets[id.index()];
+        if facet.plane == NO_SLOT {
+            facet
+                .filter
+                .side_undecided_at(value, x, || self.coords(&facet.vertices))
+        } else {
+            self.side_undecided(id, x)
+        }
     }
 
     /// Exact side of input point `p` relative to facet `id`: [`side`](Self::side), or `Zero` at
@@ -652,14 +755,14 @@ impl Extent {
 pub(in crate::hull) fn initial_simplex<const D: usize>(
     points: &[[f64; D]],
     residuals: &mut Vec<[f64; D]>,
-) -> Result<[usize; MAX_SIMPLEX], HullError> {
-    if let Some(simplex) = greedy_simplex(points, residuals) {
+) -> Result<([usize; MAX_SIMPLEX], Option<Extremes>), HullError> {
+    if let Some((simplex, extremes)) = greedy_simplex(points, residuals) {
         let mut vertices = [[0.0; D]; D];
         for (v, &s) in vertices.iter_mut().zip(&simplex) {
             *v = points[s];
         }
         if orientation(&vertices, &points[simplex[D]]) != Sign::Zero {
-            return Ok(simplex);
+            return Ok((simplex, Some(extremes)));
         }
     }
     let independent = affinely_independent_subset(points);
@@ -671,8 +774,11 @@ pub(in crate::hull) fn initial_simplex<const D: usize>(
     }
     let mut simplex = [0; MAX_SIMPLEX];
     simplex[..=D].copy_from_slice(&independent[..=D]);
-    Ok(simplex)
+    Ok((simplex, None))
 }
+
+/// The lowest and the highest point along each axis ([`axis_extremes`]).
+pub(in crate::hull) type Extremes = [usize; 2 * MAX_DIMENSION];
 
 /// Whether the points `simplex` (D + 1 indices into `points`) are in range and affinely
 /// independent, exactly.
@@ -690,12 +796,12 @@ fn independent<const D: usize>(points: &[[f64; D]], simplex: &[usize]) -> bool {
 fn greedy_simplex<const D: usize>(
     points: &[[f64; D]],
     residuals: &mut Vec<[f64; D]>,
-) -> Option<[usize; MAX_SIMPLEX]> {
+) -> Option<([usize; MAX_SIMPLEX], Extremes)> {
     if points.is_empty() {
         return None;
     }
-    let extremes = axis_extremes(points);
-    let extremes = &extremes[..2 * D];
+    let all_extremes = axis_extremes(points);
+    let extremes = &all_extremes[..2 * D];
     let mut best = (0.0, 0, 0);
     for (i, &a) in extremes.iter().enumerate() {
         for &b in &extremes[i + 1..] {
@@ -759,7 +865,7 @@ fn greedy_simplex<const D: usize>(
         *slot = far.1;
         basis.push_direction(sub(points[far.1], origin));
     }
-    Some(chosen)
+    Some((chosen, all_extremes))
 }
 
 /// `v` minus its projection on the unit vector `b` (one step of modified Gram–Schmidt).
@@ -811,7 +917,7 @@ impl<const D: usize> Basis<D> {
 /// the highest), in one pass over the points: one pass per axis and bound read them 2D times, a
 /// sixth of a 3-D build of 100,000 points in a cube. Ties go as `min_by` and `max_by` break them
 /// under [`f64::total_cmp`]: the first lowest, the last highest.
-fn axis_extremes<const D: usize>(points: &[[f64; D]]) -> [usize; 2 * MAX_DIMENSION] {
+fn axis_extremes<const D: usize>(points: &[[f64; D]]) -> Extremes {
     let mut low = [(i64::MAX, 0usize); MAX_DIMENSION];
     let mut high = [(i64::MIN, 0usize); MAX_DIMENSION];
     for (i, p) in points.iter().enumerate() {

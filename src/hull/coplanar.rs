@@ -74,7 +74,9 @@ impl<const D: usize> Hull<D> {
             buffers
                 .coordinates
                 .extend(candidates.iter().map(|&p| self.points[p as usize]));
-            super::build::initial_simplex(&buffers.coordinates, &mut self.scratch.residuals).ok()
+            super::build::initial_simplex(&buffers.coordinates, &mut self.scratch.residuals)
+                .ok()
+                .map(|(simplex, _)| simplex)
         });
         self.scratch.examination = buffers;
         let Some(Some(local)) = simplex else {
