@@ -656,13 +656,32 @@ fn repeated_points_are_merged_on_large_inputs() {
     for (position, &i) in listed.iter().enumerate() {
         first[i] = first[i].min(position);
     }
-    // Andrew's monotone chain, strictly convex turns only (no three of these random points
-    // are collinear, and a collinear one would be no vertex).
-    let mut sorted: Vec<usize> = (0..distinct.len()).collect();
-    sorted.sort_by(|&a, &b| distinct[a].partial_cmp(&distinct[b]).unwrap());
+    let chain = monotone_chain(&distinct);
+    let once = Hull::try_new(&distinct).unwrap();
+    let hull = Hull::try_new(&points).unwrap();
+    hull.check().unwrap();
+    let mut expected: Vec<usize> = chain.iter().map(|&v| first[v]).collect();
+    expected.sort_unstable();
+    let mut found = hull.vertex_indices().to_vec();
+    found.sort_unstable();
+    assert_eq!(found, expected);
+    let (a, b) = (once.stats(), hull.stats());
+    assert_eq!(
+        (a.points_processed, a.facets_created, a.expansions),
+        (b.points_processed, b.facets_created, b.expansions)
+    );
+}
+
+/// The hull's vertices by Andrew's monotone chain on `robust::orient2d` (Shewchuk's exact
+/// orientation, not the engine's), strictly convex turns only (a point on an edge is no
+/// vertex), as indices of `points` (one per distinct vertex: the first in sorted order).
+fn monotone_chain(points: &[[f64; 2]]) -> Vec<usize> {
+    let mut sorted: Vec<usize> = (0..points.len()).collect();
+    sorted.sort_by(|&a, &b| points[a].partial_cmp(&points[b]).unwrap());
+    sorted.dedup_by(|a, b| points[*a] == points[*b]);
     let coord = |i: usize| robust::Coord {
-        x: distinct[i][0],
-        y: distinct[i][1],
+        x: points[i][0],
+        y: points[i][1],
     };
     let mut chain: Vec<usize> = Vec::new();
     for pass in 0..2 {
@@ -686,17 +705,77 @@ fn repeated_points_are_merged_on_large_inputs() {
         }
         chain.pop(); // the other pass's first point
     }
-    let once = Hull::try_new(&distinct).unwrap();
-    let hull = Hull::try_new(&points).unwrap();
-    hull.check().unwrap();
-    let mut expected: Vec<usize> = chain.iter().map(|&v| first[v]).collect();
-    expected.sort_unstable();
-    let mut found = hull.vertex_indices().to_vec();
-    found.sort_unstable();
-    assert_eq!(found, expected);
-    let (a, b) = (once.stats(), hull.stats());
-    assert_eq!(
-        (a.points_processed, a.facets_created, a.expansions),
-        (b.points_processed, b.facets_created, b.expansions)
-    );
+    chain
+}
+
+/// In the plane the initial triangle is widened to the polygon of the axis-extreme points
+/// before the first partition (`Hull::widen_to_extremes`). Inputs where that step meets its
+/// edge cases: extreme points repeated and tied along an axis, an extreme point exactly on an
+/// edge of the triangle (not beyond it), extremes that are all the triangle's, a polygon
+/// of four extremes, and the turned square whose sides are collinear only up to rounding. Each
+/// hull's vertices must be the monotone chain's (exact orientation, written in the test), each
+/// a first copy, and `Hull::check` must hold.
+#[test]
+fn the_initial_polygon_of_extreme_points_gives_the_exact_hull() {
+    let mut rng = Rng::new(5);
+    let mut cases: Vec<(&str, Vec<[f64; 2]>)> = Vec::new();
+    // A square's corners, each listed three times, points on its edges (ties at every extreme
+    // coordinate) and inside.
+    let mut square = Vec::new();
+    for _ in 0..3 {
+        square.extend([[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]]);
+    }
+    for k in 0..40 {
+        let t = -1.0 + k as f64 / 20.0;
+        square.extend([[t, -1.0], [t, 1.0], [-1.0, t], [1.0, t]]);
+        square.push([rng.uniform_in(-1.0, 1.0), rng.uniform_in(-1.0, 1.0)]);
+    }
+    cases.push(("square", square));
+    // A diamond: four extremes, the polygon is the hull's quadrilateral itself.
+    let mut diamond = vec![[0.0, -2.0], [2.0, 0.0], [0.0, 2.0], [-2.0, 0.0]];
+    diamond.extend((0..200).map(|_| {
+        let (a, b) = (rng.uniform_in(-1.0, 1.0), rng.uniform_in(-1.0, 1.0));
+        [a + b, a - b]
+    }));
+    cases.push(("diamond", diamond));
+    // A triangle whose lowest point (the first listed of the lowest, so the extreme taken) is
+    // the middle of its bottom edge: on the line of the initial triangle's edge, not beyond it.
+    let mut triangle = vec![[0.0, 0.0], [-4.0, 0.0], [4.0, 0.0], [0.0, 4.0], [0.5, 0.0]];
+    triangle.extend((0..100).map(|_| {
+        let y = rng.uniform_in(0.0, 2.0);
+        [rng.uniform_in(-(4.0 - y) / 2.0, (4.0 - y) / 2.0), y]
+    }));
+    cases.push(("triangle", triangle));
+    // Points on a parabola (every point a vertex), and a turned square's sides.
+    cases.push((
+        "parabola",
+        (0..300)
+            .map(|k| {
+                let x = k as f64 / 299.0 * 2.0 - 1.0;
+                [x, x * x]
+            })
+            .collect(),
+    ));
+    for seed in [1, 2, 3] {
+        cases.push((
+            "tilted",
+            pqhull::rbox::generate::<2>(&pqhull::rbox::Family::TiltedFaces, 2_000, seed),
+        ));
+    }
+    for (name, points) in &cases {
+        let hull = Hull::try_new(points).unwrap();
+        hull.check().unwrap();
+        let mut expected: Vec<[f64; 2]> =
+            monotone_chain(points).iter().map(|&v| points[v]).collect();
+        expected.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        let mut found: Vec<[f64; 2]> = hull.vertex_indices().iter().map(|&v| points[v]).collect();
+        found.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        assert_eq!(found, expected, "{name}");
+        for v in hull.vertex_indices() {
+            assert!(
+                points[..v].iter().all(|p| *p != points[v]),
+                "{name}: vertex {v} is not a first copy"
+            );
+        }
+    }
 }
