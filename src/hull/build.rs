@@ -833,6 +833,24 @@ fn greedy_simplex<const D: usize>(
     let mut basis = Basis::<D>::default();
     basis.push_direction(sub(points[best.2], points[best.1]));
     let origin = points[best.1];
+    if D == 2 {
+        // In the plane the initial triangle is widened to every extreme point before the first
+        // partition (`Hull::widen_to_extremes`), so its third vertex is taken among them too,
+        // the farthest from the line of the first two, without a pass over the input (unless
+        // the extreme points are on one line).
+        let mut far = (0.0, usize::MAX);
+        for &e in extremes {
+            let r = basis.residual(sub(points[e], origin));
+            let d = dot(r, r);
+            if d > far.0 {
+                far = (d, e);
+            }
+        }
+        if far.1 != usize::MAX {
+            chosen[2] = far.1;
+            return Some((chosen, all_extremes));
+        }
+    }
     // Each point's residual is kept from pass to pass, and a pass projects out only the
     // directions added since the last: the operations of `Basis::residual` from scratch, in the
     // same order (`project_out`), so the same numbers, at O(D) per point and pass instead of
