@@ -139,11 +139,13 @@ impl<const D: usize> Hull<D> {
         for (v, &s) in vertices.iter_mut().zip(simplex) {
             *v = s as u32;
         }
-        let mut count = D + 1;
+        let (mut count, mut added) = (D + 1, D + 1);
         if let Some(extremes) = extremes.filter(|_| D == 2) {
-            count = self.widen_to_extremes(&extremes[..2 * D], &mut vertices, &mut all);
+            (count, added) = self.widen_to_extremes(&extremes[..2 * D], &mut vertices, &mut all);
         }
         let all = &all[..count];
+        // The vertices alone (the slots past them would be tested for every point).
+        let vertices = &vertices[..added];
         for p in 0..self.points.len() as u32 {
             if !vertices.contains(&p) && self.scratch.repeats.is_first_copy(p as usize) {
                 self.assign(p, all);
@@ -157,7 +159,8 @@ impl<const D: usize> Hull<D> {
     /// first partition is against the polygon's edges: each extreme point that lies strictly
     /// beyond an edge (exactly decided) is added as an expansion would add it, with nothing to
     /// repartition. Returns how many facets `all` then holds (the live ones, at most
-    /// [`MAX_SIMPLEX`]); the polygon is the initial hull, so its points count as processed and
+    /// [`MAX_SIMPLEX`]) and how many vertices `vertices` holds (the triangle's first, then the
+    /// points added); the polygon is the initial hull, so its points count as processed and
     /// not as expansions (a trace starts from it).
     ///
     /// Why: on points near the sides of a turned square (the suite's `tilted` family), the
@@ -168,7 +171,7 @@ impl<const D: usize> Hull<D> {
         extremes: &[usize],
         vertices: &mut [u32; MAX_SIMPLEX],
         all: &mut [FacetId; MAX_SIMPLEX],
-    ) -> usize {
+    ) -> (usize, usize) {
         let mut count = D + 1;
         let mut added = D + 1;
         for &e in extremes {
@@ -200,7 +203,7 @@ impl<const D: usize> Hull<D> {
                 }
             }
         }
-        count
+        (count, added)
     }
 
     /// Frees every facet slot and plane, keeping each slot's outside-set buffer (emptied) for
@@ -838,11 +841,15 @@ fn greedy_simplex<const D: usize>(
         // partition (`Hull::widen_to_extremes`), so its third vertex is taken among them too,
         // the farthest from the line of the first two, without a pass over the input (unless
         // the extreme points are on one line).
+        // Only those off that line, exactly: a rounded residual is not zero on the line of a
+        // grid's diagonal, and a third vertex on it would send the build to the slow fallback.
+        let mut line = [[0.0; D]; D];
+        (line[0], line[1]) = (points[best.1], points[best.2]);
         let mut far = (0.0, usize::MAX);
         for &e in extremes {
             let r = basis.residual(sub(points[e], origin));
             let d = dot(r, r);
-            if d > far.0 {
+            if d > far.0 && orientation(&line, &points[e]) != Sign::Zero {
                 far = (d, e);
             }
         }
