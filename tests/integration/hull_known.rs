@@ -711,7 +711,7 @@ fn monotone_chain(points: &[[f64; 2]]) -> Vec<usize> {
 /// In the plane the initial triangle is widened to the polygon of the axis-extreme points
 /// before the first partition (`Hull::widen_to_extremes`). Inputs where that step meets its
 /// edge cases: extreme points repeated and tied along an axis, an extreme point exactly on an
-/// edge of the triangle (not beyond it), extremes that are all the triangle's, a polygon
+/// edge of the triangle (not beyond it), extremes that are all on one line (a grid), a polygon
 /// of four extremes, and the turned square whose sides are collinear only up to rounding. Each
 /// hull's vertices must be the monotone chain's (exact orientation, written in the test), each
 /// a first copy, and `Hull::check` must hold.
@@ -754,6 +754,14 @@ fn the_initial_polygon_of_extreme_points_gives_the_exact_hull() {
                 let x = k as f64 / 299.0 * 2.0 - 1.0;
                 [x, x * x]
             })
+            .collect(),
+    ));
+    // A full grid listed row by row: every axis extreme (the first lowest, the last highest)
+    // is on the diagonal between the first two vertices, so the third is found by the pass.
+    cases.push((
+        "grid",
+        (0..900)
+            .map(|i| [(i / 30) as f64, (i % 30) as f64])
             .collect(),
     ));
     for seed in [1, 2, 3] {
