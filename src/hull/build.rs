@@ -188,7 +188,9 @@ impl<const D: usize> Hull<D> {
             self.facets[beyond.index()].outside.push(e);
             let created = self.stats.facets_created;
             if !self.expand_with(beyond, e as usize) {
-                continue; // not reached: `beyond` is live and holds `e`
+                // Not reached (`beyond` is live and holds `e`); `e` is then left to the partition.
+                self.facets[beyond.index()].outside.clear();
+                continue;
             }
             // As if the polygon had been made at once: its facets created, no expansion.
             self.stats.expansions -= 1;
