@@ -8,14 +8,15 @@ use std::time::Duration;
 /// Work counters every strategy reports (the seed paper's evaluation measures).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Stats {
-    /// Points added to the hull (initial simplex included). A full build that ran a second
-    /// phase (on the extreme points, after a first that kept coplanar facets: see
-    /// [`FarthestPoint`](crate::FarthestPoint)) counts both phases' points, as every other
+    /// Points added to the hull (initial simplex included; in 2-D, the initial polygon of the
+    /// axis extremes, which is the initial hull there: see docs/ARCHITECTURE.md). A full build
+    /// that ran a second phase (on the extreme points, after a first that kept coplanar facets:
+    /// see [`FarthestPoint`](crate::FarthestPoint)) counts both phases' points, as every other
     /// counter does.
     pub points_processed: usize,
-    /// Facets (hyperplanes) created, initial simplex included.
+    /// Facets (hyperplanes) created, initial simplex (in 2-D, initial polygon) included.
     pub facets_created: usize,
-    /// Expansions (one point added each).
+    /// Expansions (one point added each), after the initial simplex or polygon.
     pub expansions: usize,
     /// Wall time from the start of the build to the end of the strategy.
     pub elapsed: Duration,
