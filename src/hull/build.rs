@@ -510,16 +510,10 @@ impl<const D: usize> Hull<D> {
         }
         if best.is_none() && undecided {
             // Only the exact path can tell; the first facet it puts the point beyond will do.
-            let facet = &self.facets[open[0].index()];
-            if opened == 1 && facet.plane == NO_SLOT {
-                // The common case (one undecided candidate, with its own plane) calls the exact
-                // stages from here: one call fewer per test on nearly coplanar input.
-                let sign = facet
-                    .filter
-                    .side_undecided_at(first_value, &point, || self.coords(&facet.vertices));
-                if sign == Sign::Positive {
-                    best = Some((open[0], first_value * facet.inv_norm, first_value.max(0.0)));
-                }
+            if opened == 1 {
+                // The common case (one undecided candidate) calls the exact stages from here:
+                // one call fewer per test on nearly coplanar input.
+                best = self.beyond_exactly(open[0], first_value, &point);
             } else {
                 let open = (opened <= OPEN).then_some(&open[..opened.min(OPEN)]);
                 best = self.first_beyond_exactly(&point, open, first_value, candidates);
@@ -543,12 +537,7 @@ impl<const D: usize> Hull<D> {
         first_value: f64,
         candidates: &[FacetId],
     ) -> Option<(FacetId, f64, f64)> {
-        let beyond = |id: FacetId, value: f64| {
-            (self.side_undecided_at(id, value, point) == Sign::Positive).then(|| {
-                let facet = &self.facets[id.index()];
-                (id, value * facet.inv_norm, value.max(0.0))
-            })
-        };
+        let beyond = |id: FacetId, value: f64| self.beyond_exactly(id, value, point);
         match open {
             Some(open) => open.iter().enumerate().find_map(|(k, &id)| {
                 let value = if k == 0 {
@@ -567,6 +556,21 @@ impl<const D: usize> Hull<D> {
                 }
             }),
         }
+    }
+
+    /// `assign`'s choice of facet `id` (with `point`'s distance and value) if `point` is exactly
+    /// beyond it, the filter having left it undecided with `value`.
+    #[inline]
+    fn beyond_exactly(
+        &self,
+        id: FacetId,
+        value: f64,
+        point: &[f64; D],
+    ) -> Option<(FacetId, f64, f64)> {
+        (self.side_undecided_at(id, value, point) == Sign::Positive).then(|| {
+            let facet = &self.facets[id.index()];
+            (id, value * facet.inv_norm, value.max(0.0))
+        })
     }
 
     /// Puts `p` in the outside set of `best`'s facet (with its orientation value), if any.
