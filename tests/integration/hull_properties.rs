@@ -77,40 +77,13 @@ fn divergence_volume<const D: usize>(hull: &Hull<D>) -> f64 {
     total
 }
 
-/// Andrew's monotone chain + shoelace: an independent 2-D hull area.
+/// Andrew's monotone chain (`monotone_chain.rs`) + shoelace: an independent 2-D hull area.
 fn monotone_chain_area(points: &[[f64; 2]]) -> f64 {
-    let mut p: Vec<[f64; 2]> = points.to_vec();
-    p.sort_by(|a, b| a[0].total_cmp(&b[0]).then(a[1].total_cmp(&b[1])));
-    p.dedup();
-    let cross = |o: [f64; 2], a: [f64; 2], b: [f64; 2]| {
-        robust::orient2d(
-            robust::Coord { x: o[0], y: o[1] },
-            robust::Coord { x: a[0], y: a[1] },
-            robust::Coord { x: b[0], y: b[1] },
-        )
-    };
-    let mut hull: Vec<[f64; 2]> = Vec::new();
-    for pass in 0..2 {
-        let start = hull.len();
-        let iter: Box<dyn Iterator<Item = &[f64; 2]>> = if pass == 0 {
-            Box::new(p.iter())
-        } else {
-            Box::new(p.iter().rev())
-        };
-        for &q in iter {
-            while hull.len() >= start + 2
-                && cross(hull[hull.len() - 2], hull[hull.len() - 1], q) <= 0.0
-            {
-                hull.pop();
-            }
-            hull.push(q);
-        }
-        hull.pop();
-    }
+    let hull = super::monotone_chain::monotone_chain(points);
     let n = hull.len();
     (0..n)
         .map(|i| {
-            let (a, b) = (hull[i], hull[(i + 1) % n]);
+            let (a, b) = (points[hull[i]], points[hull[(i + 1) % n]]);
             a[0] * b[1] - a[1] * b[0]
         })
         .sum::<f64>()

@@ -22,6 +22,7 @@ mod layers;
 mod mesh;
 mod metrics;
 mod min_norm_reference;
+mod monotone_chain;
 mod near_boundary;
 mod ows;
 mod ows_eq6;
