@@ -261,7 +261,8 @@ fn limbs_for(bits: u32) -> Option<usize> {
 
 thread_local! {
     /// Scratch for [`subset_minors`]: 35 KB that would otherwise be zeroed on every call.
-    static MINORS: std::cell::RefCell<Vec<Wide>> = std::cell::RefCell::new(vec![Wide::ZERO; 256]);
+    static MINORS: std::cell::RefCell<Box<[Wide; 256]>> =
+        std::cell::RefCell::new(Box::new([Wide::ZERO; 256]));
 }
 
 /// Minors of the first `rows` rows over every column subset of size `rows`, by Laplace expansion
@@ -275,36 +276,106 @@ fn subset_minors<const D: usize, T>(
     len: usize,
     read: impl FnOnce(&[Wide]) -> T,
 ) -> T {
+    // Each entry's magnitude (as two 64-bit halves) and sign, split once here: the products
+    // below then run at a width fixed at compile time, with no dispatch per product.
+    let mut low = [[0u64; 8]; 8];
+    let mut high = [[0u64; 8]; 8];
+    let mut negative = [[false; 8]; 8];
+    for (r, row) in matrix[..rows].iter().enumerate() {
+        for (c, &x) in row.iter().enumerate() {
+            let magnitude = x.unsigned_abs();
+            low[r][c] = magnitude as u64;
+            high[r][c] = (magnitude >> 64) as u64;
+            negative[r][c] = x < 0;
+        }
+    }
     MINORS.with_borrow_mut(|minors| {
+        let minors: &mut [Wide; 256] = minors;
         minors[0] = Wide::ONE;
         // One pass in increasing mask order: every sub-mask S \ {c} is smaller than S, so its
-        // minor is ready, and the table splits into what is read and the entry written
-        // (accumulated in place: no 1 KB temporary per entry). A pass per order that skipped the
-        // masks of other sizes cost D times the iterations, and its size test mispredicted: 40 %
-        // of this function's time on raw wrench hulls.
+        // minor is ready. A pass per order that skipped the masks of other sizes cost D times
+        // the iterations, and its size test mispredicted: 40 % of this function's time on raw
+        // wrench hulls.
         for mask in 1usize..1 << D {
             // A table, not `count_ones`: no single instruction on baseline x86-64.
             let order = super::minors::SUBSET_SIZE[mask] as usize;
             if order > rows {
                 continue;
             }
-            let row = &matrix[order - 1];
             let width = limbs[order].min(len);
-            let (lower, upper) = minors.split_at_mut(mask);
-            let sum = &mut upper[0];
-            sum.0[..width].fill(0);
-            let mut subtract = order.is_multiple_of(2);
-            let mut bits = mask;
-            while bits != 0 {
-                let c = bits.trailing_zeros() as usize;
-                bits &= bits - 1;
-                sum.add_product(row[c], subtract, &lower[mask & !(1 << c)], width);
-                subtract = !subtract;
+            let subtract = order.is_multiple_of(2);
+            let r = (order - 1) & 7;
+            let entries = (&low[r], &high[r], &negative[r]);
+            macro_rules! fixed {
+                ($($n:literal)*) => {
+                    match width {
+                        $($n => {
+                            let sum = fixed_minor::<$n>(entries, mask, minors, subtract);
+                            minors[mask].0[..$n].copy_from_slice(&sum);
+                        })*
+                        _ => wide_minor(&matrix[order - 1], mask, minors, subtract, width),
+                    }
+                };
             }
-            sum.sign_extend_to(width, len);
+            // Widths up to 12 limbs: 6-D cofactors of entries up to 127 bits (raw wrenches:
+            // a column holding 1 and 6e−17) need 10.
+            fixed!(1 2 3 4 5 6 7 8 9 10 11 12);
+            minors[mask].sign_extend_to(width, len);
         }
-        read(minors)
+        read(&minors[..])
     })
+}
+
+/// `Σ ± row[c]·minors[mask ∖ {c}]` over the set bits `c` of `mask`, signs alternating from
+/// `subtract`, in `W` limbs, for one row's entries given as magnitudes (low and high 64-bit
+/// halves) and signs: one product pass per half that is not zero.
+#[inline(always)]
+fn fixed_minor<const W: usize>(
+    (low, high, negative): (&[u64; 8], &[u64; 8], &[bool; 8]),
+    mask: usize,
+    minors: &[Wide; 256],
+    mut subtract: bool,
+) -> [u64; W] {
+    let mut sum = [0u64; W];
+    let mut bits = mask;
+    while bits != 0 {
+        let c = bits.trailing_zeros() as usize & 7;
+        bits &= bits - 1;
+        let m = minors[(mask & !(1 << c)) & 255]
+            .0
+            .first_chunk::<W>()
+            .expect("W ≤ 12 < LIMBS");
+        let minus = negative[c] != subtract;
+        if low[c] != 0 {
+            scaled_into(&mut sum, low[c], minus, m);
+        }
+        if high[c] != 0 {
+            scaled_into(&mut sum[1..], high[c], minus, m);
+        }
+        subtract = !subtract;
+    }
+    sum
+}
+
+/// The minor of [`fixed_minor`] at a width known only at run time,
+/// written in place into `minors[mask]`.
+fn wide_minor(
+    row: &[i128],
+    mask: usize,
+    minors: &mut [Wide; 256],
+    mut subtract: bool,
+    width: usize,
+) {
+    let (lower, upper) = minors.split_at_mut(mask);
+    let sum = &mut upper[0];
+    sum.0[..width].fill(0);
+    let mut bits = mask;
+    while bits != 0 {
+        let c = bits.trailing_zeros() as usize;
+        bits &= bits - 1;
+        sum.add_product(row[c], subtract, &lower[mask & !(1 << c)], width);
+        subtract = !subtract;
+    }
 }
 
 /// A facet's hyperplane with exact integer cofactors, for repeated exact side tests against the
