@@ -752,3 +752,70 @@ fn the_initial_polygon_of_extreme_points_gives_the_exact_hull() {
         }
     }
 }
+
+/// The hull's vertices as sorted coordinates, each checked to be a first copy.
+fn sorted_vertices(hull: &Hull<2>, points: &[[f64; 2]]) -> Vec<[f64; 2]> {
+    let mut found: Vec<[f64; 2]> = hull
+        .vertex_indices()
+        .iter()
+        .map(|&v| {
+            assert!(
+                points[..v].iter().all(|p| *p != points[v]),
+                "vertex {v} is not a first copy"
+            );
+            points[v]
+        })
+        .collect();
+    found.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    found
+}
+
+/// Random 2-D sets built to be degenerate: coordinates from a few small integers (ties among the
+/// axis extremes, collinear runs on every edge, repeats), the same scaled by 0.1 (rounded: nearly
+/// collinear instead of exactly) and turned by a small angle. The initial polygon of extremes,
+/// its widening and the partition must give Andrew's monotone chain on `robust::orient2d`,
+/// written in the test; a set on one line must be refused as flat.
+#[test]
+fn degenerate_plane_sets_give_the_monotone_chain() {
+    let mut rng = Rng::new(24);
+    let mut checked = 0;
+    for case in 0..600 {
+        let n = 3 + rng.below(60) as usize;
+        let range = 2 + rng.below(6);
+        let mut points: Vec<[f64; 2]> = (0..n)
+            .map(|_| [rng.below(range) as f64, rng.below(range) as f64])
+            .collect();
+        match case % 3 {
+            1 => points
+                .iter_mut()
+                .for_each(|p| *p = [p[0] * 0.1, p[1] * 0.1]),
+            2 => {
+                let (s, c) = (1e-3f64).sin_cos();
+                points
+                    .iter_mut()
+                    .for_each(|p| *p = [c * p[0] - s * p[1], s * p[0] + c * p[1]]);
+            }
+            _ => {}
+        }
+        let mut expected: Vec<[f64; 2]> =
+            monotone_chain(&points).iter().map(|&v| points[v]).collect();
+        expected.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        match Hull::try_new(&points) {
+            Ok(hull) => {
+                hull.check()
+                    .unwrap_or_else(|e| panic!("case {case}: {e}: {points:?}"));
+                assert_eq!(
+                    sorted_vertices(&hull, &points),
+                    expected,
+                    "case {case}: {points:?}"
+                );
+                checked += 1;
+            }
+            Err(HullError::AffinelyDependent { .. }) => {
+                assert!(expected.len() <= 2, "case {case}: refused {points:?}")
+            }
+            Err(e) => panic!("case {case}: {e}"),
+        }
+    }
+    assert!(checked > 500, "only {checked} sets were full-dimensional");
+}
