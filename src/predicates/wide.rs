@@ -317,8 +317,10 @@ fn subset_minors<const D: usize, T>(
                     }
                 };
             }
-            // Widths up to 12 limbs: 6-D cofactors of entries up to 127 bits (raw wrenches:
-            // a column holding 1 and 6e−17) need 10.
+            // Widths up to 12 limbs: every minor of a plane up to 6-D (at most 11 limbs, five
+            // columns of 127 bits and ⌈log2 5!⌉); raw wrenches' columns of 107 bits (1 and
+            // 6e−17 in one column) take 8. Wider minors (7-D and 8-D with entries beyond 64
+            // bits) keep the width known at run time.
             fixed!(1 2 3 4 5 6 7 8 9 10 11 12);
             minors[mask].sign_extend_to(width, len);
         }
