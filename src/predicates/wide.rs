@@ -318,9 +318,9 @@ fn subset_minors<const D: usize, T>(
                 };
             }
             // Widths up to 12 limbs: every minor of a plane up to 6-D (at most 11 limbs, five
-            // columns of 127 bits and ⌈log2 5!⌉); raw wrenches' columns of 107 bits (1 and
-            // 6e−17 in one column) take 8. Wider minors (7-D and 8-D with entries beyond 64
-            // bits) keep the width known at run time.
+            // columns of 127 bits and ⌈log2 5!⌉). The raw 4 × 16 wrenches' planes, some with a
+            // column of up to 108 bits (1 and 6e−17 in one column), take 5 to 7. Wider minors
+            // (7-D and 8-D with entries beyond 64 bits) keep the width known at run time.
             fixed!(1 2 3 4 5 6 7 8 9 10 11 12);
             minors[mask].sign_extend_to(width, len);
         }
