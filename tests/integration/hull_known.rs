@@ -738,36 +738,37 @@ fn the_initial_polygon_of_extreme_points_gives_the_exact_hull() {
     for (name, points) in &cases {
         let hull = Hull::try_new(points).unwrap();
         hull.check().unwrap();
-        let mut expected: Vec<[f64; 2]> =
-            monotone_chain(points).iter().map(|&v| points[v]).collect();
-        expected.sort_by(|a, b| a.partial_cmp(b).unwrap());
-        let mut found: Vec<[f64; 2]> = hull.vertex_indices().iter().map(|&v| points[v]).collect();
-        found.sort_by(|a, b| a.partial_cmp(b).unwrap());
-        assert_eq!(found, expected, "{name}");
-        for v in hull.vertex_indices() {
-            assert!(
-                points[..v].iter().all(|p| *p != points[v]),
-                "{name}: vertex {v} is not a first copy"
-            );
-        }
+        assert_eq!(
+            sorted_vertices(&hull, points, name),
+            chain_vertices(points),
+            "{name}"
+        );
     }
 }
 
-/// The hull's vertices as sorted coordinates, each checked to be a first copy.
-fn sorted_vertices(hull: &Hull<2>, points: &[[f64; 2]]) -> Vec<[f64; 2]> {
+/// The hull's vertices as sorted coordinates, each checked to be a first copy (`label` names
+/// the case in the failure).
+fn sorted_vertices(hull: &Hull<2>, points: &[[f64; 2]], label: &str) -> Vec<[f64; 2]> {
     let mut found: Vec<[f64; 2]> = hull
         .vertex_indices()
         .iter()
         .map(|&v| {
             assert!(
                 points[..v].iter().all(|p| *p != points[v]),
-                "vertex {v} is not a first copy"
+                "{label}: vertex {v} is not a first copy"
             );
             points[v]
         })
         .collect();
     found.sort_by(|a, b| a.partial_cmp(b).unwrap());
     found
+}
+
+/// The monotone chain's vertices (the test's reference) as sorted coordinates.
+fn chain_vertices(points: &[[f64; 2]]) -> Vec<[f64; 2]> {
+    let mut expected: Vec<[f64; 2]> = monotone_chain(points).iter().map(|&v| points[v]).collect();
+    expected.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    expected
 }
 
 /// Random 2-D sets built to be degenerate: coordinates from a few small integers (ties among the
@@ -797,15 +798,13 @@ fn degenerate_plane_sets_give_the_monotone_chain() {
             }
             _ => {}
         }
-        let mut expected: Vec<[f64; 2]> =
-            monotone_chain(&points).iter().map(|&v| points[v]).collect();
-        expected.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        let expected = chain_vertices(&points);
         match Hull::try_new(&points) {
             Ok(hull) => {
                 hull.check()
                     .unwrap_or_else(|e| panic!("case {case}: {e}: {points:?}"));
                 assert_eq!(
-                    sorted_vertices(&hull, &points),
+                    sorted_vertices(&hull, &points, &format!("case {case}")),
                     expected,
                     "case {case}: {points:?}"
                 );
